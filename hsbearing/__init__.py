@@ -1,0 +1,84 @@
+"""hsbearing: dynamics and friction of rolling ball bearings.
+
+Public API (DESIGN.md "Contracts"):
+
+- :func:`load_case` -- TOML case (bundled name or path) -> frozen SI dataclasses
+- :func:`simulate` -- dynamic simulation -> ``xarray.Dataset`` over ``time`` (and ``ball``)
+- :func:`quasi_static` -- high-speed quasi-static equilibrium -> Dataset over ``ball``
+- :func:`sweep` -- many runs over varied case keys -> one Dataset with a dim per key
+- :func:`open_run` -- read an archive back
+- :func:`dynamic_model` -- the model object (``y0``, ``rhs``, ``state_names``)
+"""
+
+from __future__ import annotations
+
+from importlib.metadata import PackageNotFoundError, version as _version
+
+try:
+    __version__ = _version("hsbearing")
+except PackageNotFoundError:  # pragma: no cover - running from a source tree
+    __version__ = "0.0.0+unknown"
+
+from hsbearing.case import Case, CaseError, load_case, list_cases
+from hsbearing.errors import SolverError
+from hsbearing.results import open_run
+
+__all__ = [
+    "__version__",
+    "Case",
+    "CaseError",
+    "SolverError",
+    "load_case",
+    "list_cases",
+    "simulate",
+    "quasi_static",
+    "sweep",
+    "open_run",
+    "dynamic_model",
+]
+
+
+def _as_case(case, overrides=None):
+    if isinstance(case, Case):
+        return case.with_overrides(**overrides) if overrides else case
+    return load_case(case, **(overrides or {}))
+
+
+def simulate(case, duration=None, *, progress: bool = False, **kwargs):
+    """Run the dynamic model the case's system selects and return its Dataset.
+
+    ``duration`` is seconds (float) or a unit string (``"0.2 s"``); None uses
+    ``[simulation] duration``.  Raises :class:`SolverError` (with
+    ``.partial``) on numerical failure.
+    """
+    case = _as_case(case)
+    if case.system == "gyro_ribbon_cage":
+        from hsbearing.models.friction import gyro
+
+        return gyro.simulate(case, duration=duration, progress=progress, **kwargs)
+    if case.system in ("angular_contact", "deep_groove"):
+        from hsbearing import dynamics
+
+        return dynamics.simulate(case, duration=duration, progress=progress, **kwargs)
+    raise CaseError(case.source, "case.system", f"system {case.system!r} has no dynamic model (use 'hsbearing preload')")
+
+
+def quasi_static(case, **kwargs):
+    """High-speed quasi-static equilibrium of the case (Jones-Harris) as a Dataset over ``ball``."""
+    from hsbearing.solvers import quasistatic
+
+    return quasistatic.solve_case(_as_case(case), **kwargs)
+
+
+def sweep(case, vary, **kwargs):
+    """Cartesian (or zipped) sweep over case keys; see :func:`hsbearing.sweeps.run_sweep`."""
+    from hsbearing import sweeps
+
+    return sweeps.run_sweep(case, vary, **kwargs)
+
+
+def dynamic_model(case):
+    """The dynamic model object of a case: ``y0``, ``rhs(t, y, ydot)``, ``state_names``."""
+    from hsbearing import dynamics
+
+    return dynamics.build_model(_as_case(case))

@@ -1,0 +1,626 @@
+"""Case files: TOML with unit strings -> frozen dataclasses in SI.
+
+A case is a TOML file with the tables ``[case]``, ``[bearing]``, ``[cage]``,
+``[materials.ball]``, ``[materials.races]``, ``[materials.cage]``,
+``[lubricant]``, ``[operating]``, ``[simulation]`` and ``[friction]``.
+Quantities are strings with units (``"9.525 mm"``, ``"14000 rpm"``,
+``"130 degC"``, ``"1 kN"``); dimensionless numbers are plain numbers.  Every
+value is converted once, here, to SI (m, kg, s, N, rad, rad/s, K, Pa).
+
+The whole schema is the table :data:`SCHEMA` below: one :class:`Field` per
+key, with its dimension, whether it is required, its default and its checks.
+The frozen dataclasses (:class:`Case`, ``case.bearing`` ...) are generated
+from it, so a key is declared exactly once.
+
+Errors in a case raise :class:`CaseError`, whose one-line message names the
+file and the key (the CLI prints it and exits with code 2).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import difflib
+import functools
+import math
+import tomllib
+from dataclasses import dataclass
+from importlib import resources
+from pathlib import Path
+from typing import Any, Mapping
+
+__all__ = [
+    "Case",
+    "CaseError",
+    "Field",
+    "SCHEMA",
+    "SYSTEMS",
+    "load_case",
+    "list_cases",
+    "case_path",
+    "resolve_key",
+    "parse_quantity",
+]
+
+#: Closed vocabulary of the bearing systems a case can describe.
+SYSTEMS = ("angular_contact", "deep_groove", "gyro_ribbon_cage", "wire_race")
+
+#: Dimension name -> (pint dimensionality check unit, SI unit string).
+DIMENSIONS: dict[str, str] = {
+    "length": "m",
+    "angle": "rad",
+    "angular_speed": "rad/s",
+    "force": "N",
+    "moment": "N*m",
+    "temperature": "K",
+    "time": "s",
+    "pressure": "Pa",
+    "density": "kg/m**3",
+    "mass": "kg",
+    "inertia": "kg*m**2",
+    "dynamic_viscosity": "Pa*s",
+    "kinematic_viscosity": "m**2/s",
+    "stiffness": "N/m",
+    "damping": "N*s/m",
+    "pressure_coefficient": "1/Pa",
+    "thermal_conductivity": "W/(m*K)",
+    "temperature_coefficient": "1/K",
+    "velocity": "m/s",
+    "frequency": "Hz",
+}
+
+
+class CaseError(ValueError):
+    """Bad input in a case file: carries the file and the key for a one-line message."""
+
+    def __init__(self, source: str, key: str | None, message: str):
+        self.source = str(source)
+        self.key = key
+        self.message = message
+        where = f"{self.source}: {key}: " if key else f"{self.source}: "
+        super().__init__(where + message)
+
+
+@dataclass(frozen=True)
+class Field:
+    """Declaration of one case-file key.
+
+    kind : a key of :data:`DIMENSIONS`, or ``"number"`` (plain float),
+        ``"int"``, ``"str"``, ``"bool"``, ``"choice"``.
+    required : the systems for which the key must be present (``"all"``),
+        or an empty tuple when optional.
+    default : value used when absent (in the case-file form, e.g. ``"0 N"``).
+    positive : value must be > 0.  nonneg : value must be >= 0.
+    choices : closed vocabulary for ``"choice"`` fields.
+    doc : one line for ``docs/nomenclature.md`` and the error messages.
+    """
+
+    kind: str
+    doc: str
+    required: tuple[str, ...] | str = ()
+    default: Any = None
+    positive: bool = False
+    nonneg: bool = False
+    choices: tuple[str, ...] = ()
+    minimum: float | None = None
+    maximum: float | None = None
+
+
+def _f(kind, doc, **kw) -> Field:
+    return Field(kind=kind, doc=doc, **kw)
+
+
+ALL = "all"
+AC_DG = ("angular_contact", "deep_groove")
+ROLLING = ("angular_contact", "deep_groove", "gyro_ribbon_cage")
+
+_MATERIAL = {
+    "elastic_modulus": _f("pressure", "Young's modulus E", required=ALL, positive=True),
+    "poisson_ratio": _f("number", "Poisson's ratio nu", required=ALL, minimum=0.0, maximum=0.5),
+    "density": _f("density", "mass density rho", required=ALL, positive=True),
+}
+
+#: The schema: table -> key -> Field.  ``materials`` has three sub-tables.
+SCHEMA: dict[str, dict[str, Field]] = {
+    "case": {
+        "name": _f("str", "short name of the case", required=ALL),
+        "system": _f("choice", "which bearing system the case describes", required=ALL, choices=SYSTEMS),
+        "description": _f("str", "free text", default=""),
+        "source": _f("str", "where the data come from", default=""),
+    },
+    "bearing": {
+        "designation": _f("str", "catalogue designation, e.g. 7206", default=""),
+        "ball_count": _f("int", "number of balls Z", required=ALL, positive=True),
+        "ball_diameter": _f("length", "ball diameter D", required=ALL, positive=True),
+        "pitch_diameter": _f("length", "pitch diameter d_m", required=ALL, positive=True),
+        "inner_conformity": _f("number", "inner groove conformity f_i = r_i/D", required=ROLLING),
+        "outer_conformity": _f("number", "outer groove conformity f_o = r_o/D", required=ROLLING),
+        "contact_angle": _f("angle", "free (nominal) contact angle alpha_0", default="0 deg", nonneg=True),
+        "diametral_clearance": _f(
+            "length", "diametral clearance P_d (if given, overrides contact_angle)", nonneg=True
+        ),
+        "bore_diameter": _f("length", "bore diameter d", positive=True),
+        "outside_diameter": _f("length", "outside diameter D_o", positive=True),
+        "width": _f("length", "bearing width B", positive=True),
+        "inner_land_diameter": _f("length", "inner-ring land (shoulder) diameter", positive=True),
+        "outer_land_diameter": _f("length", "outer-ring land diameter (cage guide surface)", positive=True),
+        "inner_ring_mass": _f("mass", "inner ring (+ shaft) mass m_i", positive=True),
+        "inner_ring_axial_inertia": _f("inertia", "inner ring polar moment of inertia", positive=True),
+        "inner_ring_diametral_inertia": _f("inertia", "inner ring diametral moment of inertia", positive=True),
+        # --- wire race bearing (seed 001) ---
+        "wire_diameter": _f("length", "wire race diameter d_w (seed 001)", positive=True),
+        "wire_groove_conformity": _f("number", "wire groove conformity r_groove/D (seed 001)"),
+    },
+    "cage": {
+        "guidance": _f("choice", "cage guidance", default="outer_ring", choices=("outer_ring", "inner_ring", "ball")),
+        "outside_diameter": _f("length", "cage outside diameter", positive=True),
+        "bore_diameter": _f("length", "cage bore diameter", positive=True),
+        "width": _f("length", "cage width", positive=True),
+        "pocket_diameter": _f("length", "cage pocket diameter d_p", positive=True),
+        "pocket_clearance": _f("length", "pocket clearance (d_p - D)/2 if pocket_diameter absent", nonneg=True),
+        "mass": _f("mass", "cage mass m_c (computed from geometry and density if absent)", positive=True),
+        "axial_inertia": _f("inertia", "cage polar moment of inertia", positive=True),
+        "diametral_inertia": _f("inertia", "cage diametral moment of inertia", positive=True),
+        # --- ribbon cage (seed 000) ---
+        "thickness": _f("length", "ribbon cage thickness s (seed 000)", positive=True),
+        "pocket_depth": _f("length", "ribbon cage pocket depth k (seed 000)", positive=True),
+    },
+    "materials.ball": dict(_MATERIAL),
+    "materials.races": dict(_MATERIAL),
+    "materials.cage": dict(_MATERIAL),
+    "lubricant": {
+        "oil": _f("str", "oil name (closed vocabulary, see hsbearing.models.traction)", default="4109"),
+        "temperature": _f("temperature", "oil inlet / bearing temperature", default="20 degC"),
+        "traction_law": _f("str", "reading of the traction law (see docs/traction.md)", default="default"),
+        "kinematic_viscosity": _f("kinematic_viscosity", "operating kinematic viscosity nu (friction models)", positive=True),
+        "dynamic_viscosity": _f("dynamic_viscosity", "ambient-pressure dynamic viscosity eta_0 (overrides the oil's)", positive=True),
+        "pressure_viscosity_coefficient": _f("pressure_coefficient", "alpha (overrides the oil's)", positive=True),
+        "density": _f("density", "oil density", default="850 kg/m^3", positive=True),
+        "lubrication": _f("choice", "lubrication method", default="oil_jet", choices=("oil_jet", "oil_bath", "oil_air", "grease", "dry")),
+        "oil_volume_fraction": _f("number", "oil fraction of the air-oil mixture in the cavity (drag)", default=0.05, minimum=0.0, maximum=1.0),
+    },
+    "operating": {
+        "inner_speed": _f("angular_speed", "inner-ring speed n_i", default="0 rpm"),
+        "outer_speed": _f("angular_speed", "outer-ring speed n_o", default="0 rpm"),
+        "axial_load": _f("force", "axial load F_x (along the bearing axis X)", default="0 N"),
+        "radial_load": _f("force", "radial load F_y", default="0 N"),
+        "radial_load_z": _f("force", "radial load F_z", default="0 N"),
+        "moment_y": _f("moment", "tilting moment M_y", default="0 N*m"),
+        "moment_z": _f("moment", "tilting moment M_z", default="0 N*m"),
+        # --- gyro bearing (seed 000) ---
+        "mode": _f("choice", "constant rate or oscillation (seed 000)", default="constant", choices=("constant", "oscillation")),
+        "oscillation_period": _f("time", "period of the speed reversal (seed 000)", default="2 s", positive=True),
+        # --- wire race (seed 001) ---
+        "preload": _f("length", "preload magnitude delta (seed 001)", nonneg=True),
+        "framework_weight": _f("force", "gravity of the outer framework G_o (seed 001)", nonneg=True),
+    },
+    "friction": {
+        "coefficient": _f("number", "Coulomb friction coefficient (ball/race, ball/cage)", default=0.07, nonneg=True),
+        "cage_coefficient": _f("number", "ball/cage pocket friction coefficient", default=0.1, nonneg=True),
+        "hysteresis_loss": _f("number", "elastic hysteresis loss fraction alpha_r", default=0.008, nonneg=True),
+        "rolling_resistance": _f("length", "rolling-friction resistance coefficient zeta (seed 001)", nonneg=True),
+        "unconsidered_torque": _f("moment", "torque not covered by the model M_u (seed 001)", nonneg=True),
+        "law": _f("choice", "sliding friction law", default="stribeck", choices=("stribeck", "coulomb")),
+    },
+    "simulation": {
+        "duration": _f("time", "simulated time", default="0.05 s", positive=True),
+        "output_interval": _f("time", "output sampling interval", default="20 us", positive=True),
+        "rtol": _f("number", "relative tolerance", default=1e-5, positive=True),
+        "atol": _f("number", "absolute tolerance (scaled states)", default=1e-8, positive=True),
+        "model": _f("str", "model variant", default="default"),
+        "kinematics": _f("choice", "quasi-static ball kinematics", default="outer_race_control",
+                         choices=("outer_race_control", "inner_race_control", "friction")),
+    },
+}
+
+TABLES = tuple(SCHEMA)
+
+# ----------------------------------------------------------------------------
+# units
+
+
+@functools.lru_cache(maxsize=1)
+def _ureg():
+    import pint
+
+    ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+    ureg.define("rpm = revolution / minute = r_per_min")
+    return ureg
+
+
+def parse_quantity(value: Any, kind: str, *, source: str = "<value>", key: str | None = None) -> float:
+    """Convert a case-file value of dimension ``kind`` to an SI float.
+
+    Strings carry units (``"9.525 mm"``); a bare number is accepted for a
+    dimensional key only if it is zero (``0``) -- otherwise the unit is
+    ambiguous and a :class:`CaseError` asks for one.
+    """
+    if kind not in DIMENSIONS:
+        raise KeyError(kind)
+    si = DIMENSIONS[kind]
+    if isinstance(value, bool):
+        raise CaseError(source, key, f"expected a {kind.replace('_', ' ')} with units, got {value!r}")
+    if isinstance(value, (int, float)):
+        if value == 0:
+            return 0.0
+        raise CaseError(source, key, f"expected a {kind.replace('_', ' ')} with units like \"{value} {_example_unit(kind)}\", got bare number {value!r}")
+    if not isinstance(value, str):
+        raise CaseError(source, key, f"expected a quantity string with units, got {type(value).__name__}")
+    ureg = _ureg()
+    try:
+        q = ureg.Quantity(value.strip())
+    except Exception as exc:  # pint raises several kinds
+        raise CaseError(source, key, f"cannot parse quantity {value!r} ({type(exc).__name__})") from None
+    if not isinstance(q, ureg.Quantity):  # plain number in a string
+        q = ureg.Quantity(float(q), "")
+    try:
+        if kind == "temperature":
+            out = q.to("kelvin").magnitude
+        else:
+            out = q.to(si).magnitude
+    except Exception:
+        raise CaseError(
+            source, key, f"{value!r} is not a {kind.replace('_', ' ')} (expected units like {_example_unit(kind)})"
+        ) from None
+    return float(out)
+
+
+def _example_unit(kind: str) -> str:
+    return {
+        "length": "mm", "angle": "deg", "angular_speed": "rpm", "force": "N", "moment": "N*m",
+        "temperature": "degC", "time": "s", "pressure": "GPa", "density": "kg/m^3", "mass": "kg",
+        "inertia": "kg*m^2", "dynamic_viscosity": "Pa*s", "kinematic_viscosity": "mm^2/s",
+    }.get(kind, DIMENSIONS[kind])
+
+
+# ----------------------------------------------------------------------------
+# dataclasses generated from the schema
+
+
+def _make_dataclass(name: str, fields: Mapping[str, Field]):
+    spec = []
+    for key, fld in fields.items():
+        typ = {"int": int, "str": str, "choice": str, "bool": bool}.get(fld.kind, float)
+        spec.append((key, typ | None, dataclasses.field(default=None, metadata={"schema": fld})))
+    cls = dataclasses.make_dataclass(name, spec, frozen=True)
+    cls.__module__ = __name__  # picklable as hsbearing.case.<name> (process pools, dask)
+    return cls
+
+
+Bearing = _make_dataclass("Bearing", SCHEMA["bearing"])
+Cage = _make_dataclass("Cage", SCHEMA["cage"])
+Material = _make_dataclass("Material", SCHEMA["materials.ball"])
+Lubricant = _make_dataclass("Lubricant", SCHEMA["lubricant"])
+Operating = _make_dataclass("Operating", SCHEMA["operating"])
+Friction = _make_dataclass("Friction", SCHEMA["friction"])
+Simulation = _make_dataclass("Simulation", SCHEMA["simulation"])
+CaseInfo = _make_dataclass("CaseInfo", SCHEMA["case"])
+
+
+@dataclass(frozen=True)
+class Materials:
+    ball: Any
+    races: Any
+    cage: Any
+
+
+@dataclass(frozen=True)
+class Case:
+    """A validated case in SI units.  Build it with :func:`load_case`."""
+
+    info: Any
+    bearing: Any
+    cage: Any
+    materials: Materials
+    lubricant: Any
+    operating: Any
+    friction: Any
+    simulation: Any
+    text: str = ""  #: the TOML text (with overrides appended as comments)
+    source: str = "<string>"
+    raw: Any = None  #: the raw TOML dict after overrides (for re-serialisation)
+
+    @property
+    def name(self) -> str:
+        return self.info.name
+
+    @property
+    def system(self) -> str:
+        return self.info.system
+
+    def with_overrides(self, **overrides) -> "Case":
+        """A new case from the same text with ``table.key=value`` overrides."""
+        return _build(self.raw_text_base, self.source, overrides)
+
+    @property
+    def raw_text_base(self) -> str:
+        return self.text.split("\n# --- overrides ---")[0]
+
+    def to_toml(self) -> str:
+        """The case as TOML text, overrides applied (round-trips through :func:`load_case`)."""
+        return _dump_toml(self.raw)
+
+
+# ----------------------------------------------------------------------------
+# loading
+
+
+def _cases_dir() -> Path:
+    return Path(str(resources.files("hsbearing") / "cases"))
+
+
+def list_cases() -> dict[str, str]:
+    """Bundled case names -> one-line description."""
+    out = {}
+    for p in sorted(_cases_dir().glob("*.toml")):
+        try:
+            data = tomllib.loads(p.read_text())
+            out[p.stem] = data.get("case", {}).get("description", "")
+        except tomllib.TOMLDecodeError:
+            out[p.stem] = "(unreadable)"
+    return out
+
+
+def case_path(name_or_path: str | Path) -> Path:
+    """Resolve a bundled case name or a path to a file path."""
+    p = Path(name_or_path)
+    if p.suffix == ".toml" or p.exists():
+        if not p.exists():
+            raise CaseError(str(p), None, "no such case file")
+        return p
+    cand = _cases_dir() / f"{name_or_path}.toml"
+    if cand.exists():
+        return cand
+    names = sorted(list_cases())
+    close = difflib.get_close_matches(str(name_or_path), names, n=1)
+    hint = f"; did you mean {close[0]!r}?" if close else ""
+    raise CaseError(str(name_or_path), None, f"no such case file or bundled case{hint} (bundled: {', '.join(names)})")
+
+
+DEFAULT_CASE = "zhang2016"
+
+
+def load_case(name_or_path: str | Path | None = None, /, **overrides) -> Case:
+    """Load, convert and validate a case.
+
+    Parameters
+    ----------
+    name_or_path : a bundled case name (``"zhang2016"``), a path to a TOML
+        file, or None for the default case.
+    **overrides : ``{"operating.axial_load": "2 kN"}``; a bare key such as
+        ``axial_load`` is accepted when it names exactly one table's key.
+    """
+    path = case_path(name_or_path or DEFAULT_CASE)
+    return _build(path.read_text(), str(path), overrides)
+
+
+def loads_case(text: str, source: str = "<string>", **overrides) -> Case:
+    """Like :func:`load_case` from TOML text."""
+    return _build(text, source, overrides)
+
+
+def resolve_key(key: str, source: str = "<override>") -> tuple[str, str]:
+    """``"operating.axial_load"`` or ``"axial_load"`` -> (table, key)."""
+    if "." in key:
+        table, _, leaf = key.rpartition(".")
+        if table not in SCHEMA:
+            close = difflib.get_close_matches(table, TABLES, n=1)
+            hint = f"; did you mean {close[0]!r}?" if close else ""
+            raise CaseError(source, key, f"unknown table {table!r}{hint}")
+        if leaf not in SCHEMA[table]:
+            close = difflib.get_close_matches(leaf, list(SCHEMA[table]), n=1)
+            hint = f"; did you mean '{table}.{close[0]}'?" if close else ""
+            raise CaseError(source, key, f"unknown key{hint}")
+        return table, leaf
+    hits = [t for t in SCHEMA if key in SCHEMA[t]]
+    if key == "oil":
+        hits = ["lubricant"]
+    if len(hits) == 1:
+        return hits[0], key
+    if not hits:
+        allkeys = [f"{t}.{k}" for t in SCHEMA for k in SCHEMA[t]]
+        close = difflib.get_close_matches(key, [a.rpartition(".")[2] for a in allkeys], n=1)
+        hint = f"; did you mean {close[0]!r}?" if close else ""
+        raise CaseError(source, key, f"unknown key{hint}")
+    raise CaseError(source, key, f"ambiguous key, name the table: {', '.join(h + '.' + key for h in hits)}")
+
+
+def _parse_override_value(value: Any) -> Any:
+    if not isinstance(value, str):
+        return value
+    try:
+        return tomllib.loads(f"v = {value}")["v"]
+    except tomllib.TOMLDecodeError:
+        return value
+
+
+def _get_table(raw: dict, table: str) -> dict:
+    node = raw
+    for part in table.split("."):
+        node = node.setdefault(part, {})
+    return node
+
+
+def _build(text: str, source: str, overrides: Mapping[str, Any]) -> Case:
+    try:
+        raw = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise CaseError(source, None, f"malformed TOML: {exc}") from None
+    override_lines = []
+    for k, v in (overrides or {}).items():
+        table, leaf = resolve_key(k, source=f"{source} (override)")
+        _get_table(raw, table)[leaf] = _parse_override_value(v)
+        override_lines.append(f"# {table}.{leaf} = {v!r}")
+    full_text = text if not override_lines else text.rstrip("\n") + "\n# --- overrides ---\n" + "\n".join(override_lines) + "\n"
+    values = _validate_tables(raw, source)
+    info = CaseInfo(**values["case"])
+    mats = Materials(
+        ball=Material(**values["materials.ball"]),
+        races=Material(**values["materials.races"]),
+        cage=Material(**values["materials.cage"]),
+    )
+    case = Case(
+        info=info,
+        bearing=Bearing(**values["bearing"]),
+        cage=Cage(**values["cage"]),
+        materials=mats,
+        lubricant=Lubricant(**values["lubricant"]),
+        operating=Operating(**values["operating"]),
+        friction=Friction(**values["friction"]),
+        simulation=Simulation(**values["simulation"]),
+        text=full_text,
+        source=source,
+        raw=raw,
+    )
+    _check_physical(case, source)
+    return case
+
+
+def _validate_tables(raw: dict, source: str) -> dict[str, dict[str, Any]]:
+    # unknown tables
+    known_top = {t.split(".")[0] for t in SCHEMA}
+    for top, val in raw.items():
+        if top not in known_top:
+            close = difflib.get_close_matches(top, sorted(known_top), n=1)
+            hint = f"; did you mean [{close[0]}]?" if close else ""
+            raise CaseError(source, top, f"unknown table{hint} (known: {', '.join(sorted(known_top))})")
+        if not isinstance(val, dict):
+            raise CaseError(source, top, "expected a table")
+    mats = raw.get("materials", {})
+    for sub in mats:
+        if f"materials.{sub}" not in SCHEMA:
+            close = difflib.get_close_matches(sub, ["ball", "races", "cage"], n=1)
+            hint = f"; did you mean [materials.{close[0]}]?" if close else ""
+            raise CaseError(source, f"materials.{sub}", f"unknown table{hint}")
+    system = raw.get("case", {}).get("system")
+    if system is None:
+        raise CaseError(source, "case.system", f"missing required key (one of: {', '.join(SYSTEMS)})")
+    if system not in SYSTEMS:
+        raise CaseError(source, "case.system", f"unknown system {system!r} (allowed: {', '.join(SYSTEMS)})")
+    out: dict[str, dict[str, Any]] = {}
+    for table, fields in SCHEMA.items():
+        node = raw
+        for part in table.split("."):
+            node = node.get(part, {}) if isinstance(node, dict) else {}
+        for key in node:
+            if key not in fields:
+                close = difflib.get_close_matches(key, list(fields), n=1)
+                hint = f"; did you mean '{table}.{close[0]}'?" if close else ""
+                raise CaseError(source, f"{table}.{key}", f"unknown key{hint}")
+        vals = {}
+        for key, fld in fields.items():
+            full = f"{table}.{key}"
+            required = fld.required == ALL or system in fld.required
+            if key in node:
+                v = node[key]
+            elif fld.default is not None:
+                v = fld.default
+            elif required:
+                if table.startswith("materials."):
+                    raise CaseError(source, full, f"missing required key ({fld.doc})")
+                raise CaseError(source, full, f"missing required key ({fld.doc})")
+            else:
+                vals[key] = None
+                continue
+            vals[key] = _convert(v, fld, source, full)
+        out[table] = vals
+    return out
+
+
+def _convert(v: Any, fld: Field, source: str, full: str) -> Any:
+    if fld.kind == "str":
+        if not isinstance(v, str):
+            raise CaseError(source, full, f"expected a string, got {v!r}")
+        return v
+    if fld.kind == "choice":
+        if v not in fld.choices:
+            raise CaseError(source, full, f"unknown value {v!r} (allowed: {', '.join(fld.choices)})")
+        return v
+    if fld.kind == "bool":
+        if not isinstance(v, bool):
+            raise CaseError(source, full, f"expected true or false, got {v!r}")
+        return v
+    if fld.kind == "int":
+        if isinstance(v, bool) or not isinstance(v, int):
+            raise CaseError(source, full, f"expected a whole number, got {v!r}")
+        x = v
+    elif fld.kind == "number":
+        if isinstance(v, bool) or not isinstance(v, (int, float)):
+            raise CaseError(source, full, f"expected a plain number, got {v!r}")
+        x = float(v)
+    else:
+        x = parse_quantity(v, fld.kind, source=source, key=full)
+    if not math.isfinite(x):
+        raise CaseError(source, full, f"must be finite, got {v!r}")
+    if fld.positive and x <= 0:
+        raise CaseError(source, full, f"must be positive, got {v!r}")
+    if fld.nonneg and x < 0:
+        raise CaseError(source, full, f"must not be negative, got {v!r}")
+    if fld.minimum is not None and x < fld.minimum:
+        raise CaseError(source, full, f"must be >= {fld.minimum}, got {v!r}")
+    if fld.maximum is not None and x > fld.maximum:
+        raise CaseError(source, full, f"must be <= {fld.maximum}, got {v!r}")
+    return x
+
+
+def _check_physical(case: Case, source: str) -> None:
+    """Cross-key checks: conformities, balls on the pitch circle, pocket vs ball, oil."""
+    b, c = case.bearing, case.cage
+    for key in ("inner_conformity", "outer_conformity"):
+        f = getattr(b, key)
+        if f is not None and f <= 0.5:
+            raise CaseError(source, f"bearing.{key}", f"conformity must be > 0.5 (groove radius larger than the ball radius), got {f}")
+    D, dm, Z = b.ball_diameter, b.pitch_diameter, b.ball_count
+    if D >= dm:
+        raise CaseError(source, "bearing.ball_diameter", f"ball diameter {D*1e3:g} mm is not smaller than the pitch diameter {dm*1e3:g} mm")
+    chord = dm * math.sin(math.pi / Z)  # centre-to-centre distance of neighbouring balls
+    if Z > 1 and chord <= D:
+        raise CaseError(
+            source, "bearing.ball_count",
+            f"{Z} balls of {D*1e3:g} mm do not fit the pitch circle of {dm*1e3:g} mm (neighbour spacing {chord*1e3:.3f} mm)",
+        )
+    if c.pocket_diameter is not None and c.pocket_diameter <= D:
+        raise CaseError(source, "cage.pocket_diameter", f"cage pocket {c.pocket_diameter*1e3:g} mm is not larger than the ball {D*1e3:g} mm")
+    if b.bore_diameter is not None and b.outside_diameter is not None and b.bore_diameter >= b.outside_diameter:
+        raise CaseError(source, "bearing.bore_diameter", "bore diameter must be smaller than the outside diameter")
+    if case.system in ("angular_contact", "deep_groove", "gyro_ribbon_cage"):
+        from hsbearing.models import traction
+
+        oil = case.lubricant.oil
+        if oil not in traction.OILS:
+            close = difflib.get_close_matches(oil, list(traction.OILS), n=1)
+            hint = f"; did you mean {close[0]!r}?" if close else ""
+            raise CaseError(source, "lubricant.oil", f"unknown oil {oil!r}{hint} (known: {', '.join(traction.OILS)})")
+
+
+# ----------------------------------------------------------------------------
+# tiny TOML writer for the raw dict (strings, numbers, bools, nested tables)
+
+
+def _dump_toml(raw: Mapping[str, Any]) -> str:
+    lines: list[str] = []
+
+    def scalar(v):
+        if isinstance(v, bool):
+            return "true" if v else "false"
+        if isinstance(v, (int, float)):
+            return repr(v)
+        if isinstance(v, str):
+            return '"' + v.replace("\\", "\\\\").replace('"', '\\"') + '"'
+        if isinstance(v, list):
+            return "[" + ", ".join(scalar(x) for x in v) + "]"
+        raise TypeError(type(v))
+
+    def emit(prefix: str, table: Mapping[str, Any]):
+        plain = {k: v for k, v in table.items() if not isinstance(v, dict)}
+        subs = {k: v for k, v in table.items() if isinstance(v, dict)}
+        if prefix and plain:
+            lines.append(f"[{prefix}]")
+        for k, v in plain.items():
+            lines.append(f"{k} = {scalar(v)}")
+        if plain:
+            lines.append("")
+        for k, v in subs.items():
+            emit(f"{prefix}.{k}" if prefix else k, v)
+
+    emit("", raw)
+    return "\n".join(lines)

@@ -1,0 +1,158 @@
+"""Internal geometry, masses and inertias of a ball bearing, derived from a case.
+
+References
+----------
+[1] Harris T. A., Kotzalas M. N., *Rolling Bearing Analysis*, 5th ed., Vol. 1
+    (Essential Concepts), Ch. 2: Eq. 2.2 (pitch diameter), 2.5-2.6 (groove
+    curvature radii, conformity), 2.9 (distance between groove curvature
+    centres A = B D, total curvature B = f_i + f_o - 1), 2.10 (free contact
+    angle cos alpha_0 = 1 - P_d / (2 A)); Ch. 2.4 curvature sums
+    (Eqs. 2.27-2.31).
+[2] Hamrock B. J., Dowson D., *Ball Bearing Lubrication*, Wiley 1981, Ch. 2-3.
+
+All results SI.  gamma = D cos(alpha) / d_m.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+__all__ = ["Geometry", "derive", "curvature_radii", "describe"]
+
+
+@dataclass(frozen=True)
+class Geometry:
+    """Derived geometry of a ball bearing (SI)."""
+
+    Z: int  #: ball count
+    D: float  #: ball diameter [m]
+    dm: float  #: pitch diameter [m]
+    fi: float  #: inner conformity r_i / D
+    fo: float  #: outer conformity r_o / D
+    ri: float  #: inner groove radius [m]  ([1] Eq. 2.5)
+    ro: float  #: outer groove radius [m]
+    B: float  #: total curvature f_i + f_o - 1  ([1] Eq. 2.9)
+    A: float  #: distance between groove curvature centres at zero load, B D [m]
+    alpha0: float  #: free contact angle [rad]  ([1] Eq. 2.10)
+    Pd: float  #: diametral clearance [m]
+    Pe: float  #: free end play 2 A sin(alpha0) [m]  ([1] Eq. 2.13)
+    di: float  #: inner raceway (groove bottom) diameter [m]
+    do: float  #: outer raceway (groove bottom) diameter [m]
+    ball_mass: float  #: [kg]
+    ball_inertia: float  #: about a diameter, m D^2 / 10 [kg m^2]
+    cage_mass: float  #: [kg]
+    cage_axial_inertia: float  #: [kg m^2]
+    cage_diametral_inertia: float  #: [kg m^2]
+    inner_ring_mass: float  #: [kg]
+    inner_ring_axial_inertia: float  #: [kg m^2]
+    inner_ring_diametral_inertia: float  #: [kg m^2]
+    pocket_clearance: float  #: radial clearance between ball and pocket (d_p - D)/2 [m]
+    guide_clearance: float  #: radial clearance cage / guiding land [m] (nan if not given)
+
+
+def curvature_radii(D, dm, alpha, fi, fo):
+    """Effective radii (Rx_i, Ry_i, Rx_o, Ry_o) [m] of the ball/race contacts at contact angle alpha.
+
+    [1] Eqs. 2.27-2.31 with gamma = D cos(alpha)/d_m:
+    Rx_i = D (1 - gamma)/2, Ry_i = f_i D / (2 f_i - 1),
+    Rx_o = D (1 + gamma)/2, Ry_o = f_o D / (2 f_o - 1).
+    """
+    gamma = D * np.cos(alpha) / dm
+    Rx_i = 0.5 * D * (1.0 - gamma)
+    Rx_o = 0.5 * D * (1.0 + gamma)
+    Ry_i = fi * D / (2.0 * fi - 1.0)
+    Ry_o = fo * D / (2.0 * fo - 1.0)
+    return Rx_i, np.broadcast_to(Ry_i, np.shape(Rx_i)), Rx_o, np.broadcast_to(Ry_o, np.shape(Rx_o))
+
+
+def derive(case) -> Geometry:
+    """Derive the bearing geometry, masses and inertias from a :class:`~hsbearing.case.Case`."""
+    b, c = case.bearing, case.cage
+    Z, D, dm = b.ball_count, b.ball_diameter, b.pitch_diameter
+    fi = b.inner_conformity if b.inner_conformity is not None else 0.52
+    fo = b.outer_conformity if b.outer_conformity is not None else 0.52
+    Bc = fi + fo - 1.0
+    A = Bc * D
+    if b.diametral_clearance is not None:
+        Pd = b.diametral_clearance
+        alpha0 = math.acos(max(-1.0, min(1.0, 1.0 - Pd / (2.0 * A))))  # [1] Eq. 2.10
+    else:
+        alpha0 = b.contact_angle or 0.0
+        Pd = 2.0 * A * (1.0 - math.cos(alpha0))  # [1] Eq. 2.10 inverted
+    Pe = 2.0 * A * math.sin(alpha0)  # [1] Eq. 2.13
+    ri, ro = fi * D, fo * D
+    # groove-bottom diameters: ball centre on d_m, groove centres at +/- (r - D/2) offset along the contact line
+    di = dm - D - Pd / 2.0
+    do = dm + D + Pd / 2.0
+    rho_b = case.materials.ball.density
+    ball_mass = rho_b * math.pi * D**3 / 6.0
+    ball_inertia = ball_mass * D**2 / 10.0
+    # cage: annulus minus Z cylindrical pockets (radial through-holes) unless given
+    if c.outside_diameter and c.bore_diameter and c.width:
+        Do_c, Di_c, w = c.outside_diameter, c.bore_diameter, c.width
+        dp = c.pocket_diameter or (D + 2 * (c.pocket_clearance or 0.0))
+        vol = math.pi / 4 * (Do_c**2 - Di_c**2) * w - Z * math.pi / 4 * dp**2 * (Do_c - Di_c) / 2
+        m_c = case.materials.cage.density * max(vol, 0.0)
+        J_cx = m_c * (Do_c**2 + Di_c**2) / 8.0
+        J_cy = m_c * ((Do_c**2 + Di_c**2) / 16.0 + w**2 / 12.0)
+    else:
+        m_c = J_cx = J_cy = float("nan")
+    cage_mass = c.mass if c.mass is not None else m_c
+    cage_ax = c.axial_inertia if c.axial_inertia is not None else J_cx
+    cage_di = c.diametral_inertia if c.diametral_inertia is not None else J_cy
+    # inner ring: annulus from the bore to the raceway shoulder, full width (an estimate unless given)
+    if b.bore_diameter and b.width:
+        d_out = b.inner_land_diameter or (dm - 0.5 * D)
+        vol_i = math.pi / 4 * (d_out**2 - b.bore_diameter**2) * b.width
+        m_i = case.materials.races.density * vol_i
+        J_ix = m_i * (d_out**2 + b.bore_diameter**2) / 8.0
+        J_iy = m_i * ((d_out**2 + b.bore_diameter**2) / 16.0 + b.width**2 / 12.0)
+    else:
+        m_i = J_ix = J_iy = float("nan")
+    if c.pocket_diameter is not None:
+        pc = 0.5 * (c.pocket_diameter - D)
+    elif c.pocket_clearance is not None:
+        pc = c.pocket_clearance
+    else:
+        pc = float("nan")
+    if c.guidance == "outer_ring" and b.outer_land_diameter and c.outside_diameter:
+        gc = 0.5 * (b.outer_land_diameter - c.outside_diameter)
+    elif c.guidance == "inner_ring" and b.inner_land_diameter and c.bore_diameter:
+        gc = 0.5 * (c.bore_diameter - b.inner_land_diameter)
+    else:
+        gc = float("nan")
+    return Geometry(
+        Z=Z, D=D, dm=dm, fi=fi, fo=fo, ri=ri, ro=ro, B=Bc, A=A, alpha0=alpha0, Pd=Pd, Pe=Pe, di=di, do=do,
+        ball_mass=ball_mass, ball_inertia=ball_inertia,
+        cage_mass=cage_mass, cage_axial_inertia=cage_ax, cage_diametral_inertia=cage_di,
+        inner_ring_mass=b.inner_ring_mass if b.inner_ring_mass is not None else m_i,
+        inner_ring_axial_inertia=b.inner_ring_axial_inertia if b.inner_ring_axial_inertia is not None else J_ix,
+        inner_ring_diametral_inertia=b.inner_ring_diametral_inertia if b.inner_ring_diametral_inertia is not None else J_iy,
+        pocket_clearance=pc, guide_clearance=gc,
+    )
+
+
+def describe(case) -> list[str]:
+    """Human-readable lines of the derived geometry (``hsbearing check``)."""
+    g = derive(case)
+    mm, deg = 1e3, 180 / math.pi
+    lines = [
+        f"balls: Z = {g.Z}, D = {g.D*mm:.4g} mm, pitch diameter d_m = {g.dm*mm:.4g} mm, gamma0 = {g.D*math.cos(g.alpha0)/g.dm:.4f}",
+        f"conformity f_i = {g.fi:.4g}, f_o = {g.fo:.4g}; groove radii r_i = {g.ri*mm:.4g} mm, r_o = {g.ro*mm:.4g} mm",
+        f"total curvature B = {g.B:.4g}, A = B D = {g.A*mm:.4g} mm",
+        f"free contact angle alpha_0 = {g.alpha0*deg:.4g} deg, diametral clearance P_d = {g.Pd*1e6:.4g} um, free end play P_e = {g.Pe*1e6:.4g} um",
+        f"raceway diameters d_i = {g.di*mm:.5g} mm, d_o = {g.do*mm:.5g} mm",
+        f"ball mass {g.ball_mass*1e3:.4g} g, inertia {g.ball_inertia:.4g} kg m^2",
+    ]
+    if math.isfinite(g.cage_mass):
+        lines.append(f"cage mass {g.cage_mass*1e3:.4g} g, inertia axial {g.cage_axial_inertia:.4g} / diametral {g.cage_diametral_inertia:.4g} kg m^2")
+    if math.isfinite(g.inner_ring_mass):
+        lines.append(f"inner ring mass {g.inner_ring_mass*1e3:.4g} g, inertia axial {g.inner_ring_axial_inertia:.4g} kg m^2")
+    if math.isfinite(g.pocket_clearance):
+        lines.append(f"pocket clearance {g.pocket_clearance*1e6:.4g} um (radial)")
+    if math.isfinite(g.guide_clearance):
+        lines.append(f"cage guide clearance {g.guide_clearance*1e6:.4g} um (radial, {case.cage.guidance})")
+    return lines

@@ -1,0 +1,165 @@
+"""Output variables: one registry (name, dims, units, long_name) -> xarray attrs; atomic netCDF I/O.
+
+Every variable a model writes into a result Dataset is declared once with
+:func:`register` (the core names of DESIGN.md are declared below; a model
+module declares its own at import).  :func:`make_dataset` builds a Dataset
+from plain arrays and attaches the declared attrs, so units and descriptions
+are never typed twice.  :func:`write_netcdf` writes through a temporary file
+in the target directory and renames it into place, so a reader (or an
+interrupted run) never sees half a file.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import tempfile
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, Mapping
+
+import numpy as np
+import xarray as xr
+
+__all__ = ["Variable", "VARIABLES", "register", "make_dataset", "write_netcdf", "open_run", "solver_attrs"]
+
+
+@dataclass(frozen=True)
+class Variable:
+    name: str
+    dims: tuple[str, ...]
+    units: str
+    long_name: str
+
+
+VARIABLES: dict[str, Variable] = {}
+
+
+def register(name: str, dims: tuple[str, ...] | str, units: str, long_name: str) -> Variable:
+    """Declare an output variable.  Re-declaring with different metadata is an error."""
+    if isinstance(dims, str):
+        dims = (dims,) if dims else ()
+    var = Variable(name, tuple(dims), units, long_name)
+    old = VARIABLES.get(name)
+    if old is not None and old != var:
+        raise ValueError(f"output variable {name!r} declared twice with different metadata: {old} vs {var}")
+    VARIABLES[name] = var
+    return var
+
+
+# Core names (DESIGN.md "Dataset names").  Dims listed are the dynamic ones; the quasi-static
+# dataset uses the same names without ``time`` (make_dataset drops missing dims).
+for _n, _d, _u, _l in [
+    ("time", ("time",), "s", "simulated time"),
+    ("ball", ("ball",), "1", "ball index"),
+    ("inner_contact_load", ("time", "ball"), "N", "normal load at the ball-inner race contact Q_i"),
+    ("outer_contact_load", ("time", "ball"), "N", "normal load at the ball-outer race contact Q_o"),
+    ("inner_contact_angle", ("time", "ball"), "rad", "contact angle at the inner race alpha_i"),
+    ("outer_contact_angle", ("time", "ball"), "rad", "contact angle at the outer race alpha_o"),
+    ("cage_speed", ("time",), "rad/s", "cage angular speed about the bearing axis omega_c"),
+    ("cage_slip_ratio", ("time",), "1", "cage slip ratio (1 - omega_c/omega_c,theory)"),
+    ("cage_center_y", ("time",), "m", "cage mass-centre displacement along Y"),
+    ("cage_center_z", ("time",), "m", "cage mass-centre displacement along Z"),
+    ("ball_orbit_speed", ("time", "ball"), "rad/s", "ball orbital (revolution) speed about the bearing axis"),
+    ("ball_spin_speed", ("time", "ball"), "rad/s", "ball angular speed about its own centre (magnitude)"),
+    ("inner_ring_axial_displacement", ("time",), "m", "inner-ring displacement along the bearing axis X"),
+]:
+    register(_n, _d, _u, _l)
+
+
+def make_dataset(
+    data: Mapping[str, Any],
+    coords: Mapping[str, Any] | None = None,
+    attrs: Mapping[str, Any] | None = None,
+) -> xr.Dataset:
+    """Dataset from ``{name: array}`` using the registry for dims and attrs.
+
+    A registered variable whose array has fewer dimensions than declared
+    drops the leading declared dims it lacks (so ``("time", "ball")`` becomes
+    ``("ball",)`` for a quasi-static result).  Unregistered names raise.
+    """
+    vars_ = {}
+    for name, value in data.items():
+        if name not in VARIABLES:
+            raise KeyError(f"output variable {name!r} is not registered in hsbearing.results")
+        v = VARIABLES[name]
+        arr = np.asarray(value)
+        dims = v.dims[len(v.dims) - arr.ndim :] if arr.ndim <= len(v.dims) else None
+        if dims is None:
+            raise ValueError(f"{name}: array has {arr.ndim} dims, declared {v.dims}")
+        vars_[name] = xr.Variable(dims, arr, attrs={"units": v.units, "long_name": v.long_name})
+    ds = xr.Dataset(vars_)
+    for cname, cval in (coords or {}).items():
+        c_attrs = {}
+        if cname in VARIABLES:
+            c_attrs = {"units": VARIABLES[cname].units, "long_name": VARIABLES[cname].long_name}
+        ds = ds.assign_coords({cname: xr.Variable((cname,), np.asarray(cval), attrs=c_attrs)})
+    ds.attrs.update(_clean_attrs(attrs or {}))
+    return ds
+
+
+def solver_attrs(stats: Mapping[str, Any]) -> dict[str, Any]:
+    """Solver statistics as flat ``solver_*`` global attrs."""
+    return {f"solver_{k}": v for k, v in stats.items()}
+
+
+def _clean_attrs(attrs: Mapping[str, Any]) -> dict[str, Any]:
+    out = {}
+    for k, v in attrs.items():
+        if v is None:
+            continue
+        if isinstance(v, bool):
+            v = int(v)
+        elif isinstance(v, (dict, list, tuple)) and not (isinstance(v, (list, tuple)) and all(isinstance(x, (int, float)) for x in v)):
+            v = json.dumps(v)
+        elif isinstance(v, np.generic):
+            v = v.item()
+        out[k] = v
+    return out
+
+
+def standard_attrs(case=None, status: str = "ok", **extra) -> dict[str, Any]:
+    """Global attrs every archive carries: package version, case TOML text, status, creation time."""
+    from hsbearing import __version__
+
+    attrs: dict[str, Any] = {
+        "Conventions": "CF-1.8",
+        "title": "hsbearing result",
+        "hsbearing_version": __version__,
+        "status": status,
+        "created": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime()),
+    }
+    if case is not None:
+        attrs["case_name"] = case.name
+        attrs["case_system"] = case.system
+        attrs["case_toml"] = case.to_toml()
+        attrs["case_source"] = case.source
+    attrs.update(extra)
+    return _clean_attrs(attrs)
+
+
+def write_netcdf(ds: xr.Dataset, path: str | os.PathLike) -> Path:
+    """Write ``ds`` to ``path`` atomically (temporary file in the same directory, then rename)."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    os.close(fd)
+    try:
+        ds = ds.copy()
+        ds.attrs = _clean_attrs(ds.attrs)
+        ds.to_netcdf(tmp, engine="netcdf4", format="NETCDF4")
+        os.replace(tmp, path)
+    except BaseException:
+        try:
+            os.unlink(tmp)
+        except FileNotFoundError:
+            pass
+        raise
+    return path
+
+
+def open_run(path: str | os.PathLike) -> xr.Dataset:
+    """Open an archive written by hsbearing, loaded into memory (the file is closed)."""
+    with xr.open_dataset(path, engine="netcdf4") as ds:
+        return ds.load()
