@@ -200,6 +200,12 @@ SCHEMA: dict[str, dict[str, Field]] = {
         "rolling_resistance": _f("length", "rolling-friction resistance coefficient zeta (seed 001)", nonneg=True),
         "unconsidered_torque": _f("moment", "torque not covered by the model M_u (seed 001)", nonneg=True),
         "law": _f("choice", "sliding friction law", default="stribeck", choices=("stribeck", "coulomb")),
+        # --- SKF 2004 frictional-moment model / seed 003 Stribeck-type coefficient ---
+        "boundary_coefficient": _f("number", "boundary-film sliding coefficient mu_bl (SKF model; 0.15 mineral oil)", default=0.15, nonneg=True),
+        "ehl_coefficient": _f("number", "full-film sliding coefficient mu_EHL (SKF model; 0.05 mineral oil)", default=0.05, nonneg=True),
+        "static_load_rating": _f("force", "basic static load rating C_0 (SKF model contact angle alpha_F)", positive=True),
+        "skf_reading": _f("choice", "G_sl under combined load: SKF catalogue, or the seed 003 reading", default="catalogue", choices=("catalogue", "seed003")),
+        "skf_drag_variable": _f("number", "SKF drag-loss variable V_M read from the catalogue diagram (oil bath only)", nonneg=True),
     },
     "simulation": {
         "duration": _f("time", "simulated time", default="0.05 s", positive=True),
