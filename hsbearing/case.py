@@ -454,7 +454,8 @@ def _build(text: str, source: str, overrides: Mapping[str, Any]) -> Case:
     override_lines = []
     for k, v in (overrides or {}).items():
         table, leaf = resolve_key(k, source=f"{source} (override)")
-        _get_table(raw, table)[leaf] = _parse_override_value(v)
+        kind = SCHEMA[table][leaf].kind
+        _get_table(raw, table)[leaf] = str(v) if kind in ("str", "choice") else _parse_override_value(v)
         override_lines.append(f"# {table}.{leaf} = {v!r}")
     full_text = text if not override_lines else text.rstrip("\n") + "\n# --- overrides ---\n" + "\n".join(override_lines) + "\n"
     values = _validate_tables(raw, source)

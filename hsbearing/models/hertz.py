@@ -84,6 +84,7 @@ def ellipticity(F, method: str = "exact", iterations: int = 60):
         return np.maximum(1.0339 * ratio**0.636, 1.0) * (F > 0) + (F <= 0) * 1.0
     if method != "exact":
         raise ValueError(f"unknown method {method!r} (exact, hamrock_brewe)")
+    circular = F < 1e-12  # k = 1 exactly (the relation is 0/0 there)
     lo = np.zeros_like(F)
     hi = np.full_like(F, np.log(1e4))
     for _ in range(iterations):
@@ -91,7 +92,7 @@ def ellipticity(F, method: str = "exact", iterations: int = 60):
         below = _F_of_k(np.exp(mid)) < F
         lo = np.where(below, mid, lo)
         hi = np.where(below, hi, mid)
-    return np.exp(0.5 * (lo + hi))
+    return np.where(circular, 1.0, np.exp(0.5 * (lo + hi)))
 
 
 def point_contact(Rx, Ry, Q, E1, nu1, E2, nu2, method: str = "exact") -> PointContact:

@@ -1,0 +1,84 @@
+"""Bad input through the CLI: exit code 2, one line naming the file and the key, no output file.
+
+Issue 2, item 3: missing required key, unknown key (closest suggestion), wrong dimension,
+negative/zero sizes and counts, conformity <= 0.5, balls that do not fit the pitch circle, a
+cage pocket smaller than the ball, unknown oil (known ones listed), malformed TOML (line number).
+"""
+
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from hsbearing.case import case_path
+
+BASE = case_path("zhang2016").read_text()
+
+
+def _edit(text: str, old: str, new: str) -> str:
+    assert old in text, old
+    return text.replace(old, new, 1)
+
+
+CASES = {
+    "missing_required": (lambda t: _edit(t, 'ball_diameter = "9.525 mm"', ""), "bearing.ball_diameter", "missing required key"),
+    "unknown_key": (lambda t: _edit(t, 'axial_load = "1000 N"', 'axial_lod = "1000 N"'), "operating.axial_lod", "did you mean 'operating.axial_load'"),
+    "unknown_table": (lambda t: t + '\n[operatng]\nx = 1\n', "operatng", r"did you mean \[operating\]"),
+    "wrong_dimension": (lambda t: _edit(t, 'ball_diameter = "9.525 mm"', 'ball_diameter = "9.525 kg"'), "bearing.ball_diameter", "is not a length"),
+    "bare_number": (lambda t: _edit(t, 'ball_diameter = "9.525 mm"', "ball_diameter = 9.525"), "bearing.ball_diameter", "with units"),
+    "negative_size": (lambda t: _edit(t, 'ball_diameter = "9.525 mm"', 'ball_diameter = "-9.525 mm"'), "bearing.ball_diameter", "must be positive"),
+    "zero_count": (lambda t: _edit(t, "ball_count = 11", "ball_count = 0"), "bearing.ball_count", "must be positive"),
+    "conformity": (lambda t: _edit(t, "inner_conformity = 0.52", "inner_conformity = 0.5"), "bearing.inner_conformity", "must be > 0.5"),
+    "balls_do_not_fit": (lambda t: _edit(t, "ball_count = 11", "ball_count = 16"), "bearing.ball_count", "do not fit the pitch circle"),
+    "pocket_too_small": (lambda t: _edit(t, 'pocket_diameter = "9.625 mm"', 'pocket_diameter = "9.5 mm"'), "cage.pocket_diameter", "not larger than the ball"),
+    "unknown_oil": (lambda t: _edit(t, 'oil = "4109"', 'oil = "4108"'), "lubricant.oil", "known: 4109, 4106, 4050"),
+    "bad_choice": (lambda t: _edit(t, 'guidance = "outer_ring"', 'guidance = "outer"'), "cage.guidance", "allowed: outer_ring"),
+    "malformed_toml": (lambda t: _edit(t, 'ball_count = 11', 'ball_count = = 11'), None, r"malformed TOML: .*line \d+"),
+}
+
+
+def _run(args, cwd):
+    return subprocess.run([sys.executable, "-m", "hsbearing.cli", *args], capture_output=True, text=True, cwd=cwd, timeout=120)
+
+
+@pytest.mark.parametrize("name", sorted(CASES))
+def test_bad_case_file_exit_2(name, tmp_path):
+    mutate, key, msg = CASES[name]
+    bad = tmp_path / f"{name}.toml"
+    bad.write_text(mutate(BASE))
+    out = tmp_path / "out.nc"
+    for cmd in (["check", str(bad)], ["run", str(bad), "-o", str(out), "--no-plot", "-q"], ["quasistatic", str(bad), "-o", str(out)]):
+        res = _run(cmd, tmp_path)
+        assert res.returncode == 2, (cmd, res.stdout, res.stderr)
+        lines = [ln for ln in res.stderr.strip().splitlines() if ln.strip()]
+        assert len(lines) == 1, res.stderr  # one line, no traceback
+        line = lines[0]
+        assert str(bad) in line
+        if key:
+            assert key in line
+        assert re.search(msg, line), line
+        assert not out.exists()
+        assert not any(p.name.endswith(".tmp") for p in tmp_path.iterdir())
+
+
+def test_bad_override_and_bad_duration(tmp_path):
+    res = _run(["check", "zhang2016", "--set", "operating.axial_load=2 kg"], tmp_path)
+    assert res.returncode == 2 and "operating.axial_load" in res.stderr and "is not a force" in res.stderr
+    res = _run(["check", "zhang2016", "--set", "operating.axial_load"], tmp_path)
+    assert res.returncode == 2 and "expected key=value" in res.stderr
+    res = _run(["run", "zhang2016", "--duration", "3 mm", "-o", str(tmp_path / "x.nc")], tmp_path)
+    assert res.returncode == 2 and "--duration" in res.stderr
+    assert not (tmp_path / "x.nc").exists()
+
+
+def test_unknown_case_name(tmp_path):
+    res = _run(["check", "zhang2061"], tmp_path)
+    assert res.returncode == 2 and "did you mean 'zhang2016'" in res.stderr
+
+
+def test_check_prints_geometry(tmp_path):
+    res = _run(["check"], tmp_path)
+    assert res.returncode == 0
+    assert "free contact angle alpha_0 = 25 deg" in res.stdout
