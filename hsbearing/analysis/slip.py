@@ -3,10 +3,13 @@
 References
 ----------
 [1] Harris T. A., Kotzalas M. N., *Rolling Bearing Analysis*, 5th ed., Vol. 1
-    (Essential Concepts of Bearing Technology), CRC 2006, Ch. 8 "Bearing
-    kinematics", Eq. 8.21 (cage angular speed with rolling without slip at both
-    race contacts): omega_c = 1/2 [omega_i (1 - gamma) + omega_o (1 + gamma)],
-    gamma = D cos(alpha) / d_m.
+    (Essential Concepts of Bearing Technology), CRC 2006, Ch. 8 "Rolling
+    bearing kinematics", cage angular speed for rolling without slip at both
+    race contacts: omega_c = 1/2 [omega_i (1 - gamma) + omega_o (1 + gamma)],
+    gamma = D cos(alpha) / d_m (cited below as "Eq. 8.21"; the equation
+    number is from our reading of the 5th edition and could not be checked
+    against the printed page here -- the formula itself is the epicyclic
+    pure-rolling identity, re-derived in tests/test_analysis.py).
 [2] Zhang W., Deng S., Chen G., Cui Y., Chin. J. Aeronaut. 29 (2016), Sec. 5,
     Figs. 13-15 (seed 004): the cage slip ratio is used as a stability criterion;
     the seed does not print its formula, so the usual definition

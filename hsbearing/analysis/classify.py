@@ -1,0 +1,337 @@
+"""Period classification of a Poincare section: "1 period", "k periods", "quasi-periodic", "chaos".
+
+The criteria (thresholds justified in docs/analysis.md):
+
+1. **Normalisation.**  Each coordinate of the section points is divided by the
+   peak-to-peak extent of the attractor in that coordinate (``scale``; from
+   the continuous orbit ``signal`` when given, else from the points).
+2. **Periodicity (cluster test).**  The smallest k (1 <= k <= ``kmax``, at
+   least 3 points per cluster) such that every point of each residue class
+   {p_r, p_{r+k}, p_{r+2k}, ...} lies within ``tol`` of the class median ->
+   ``"1 period"`` / ``"k periods"``.  Points that repeat in order after k
+   sections are exactly a period-k orbit of the section map; a slow drift
+   (quasi-periodic motion close to a resonance) spreads the classes and fails
+   the test.  If the test fails on all points but passes on the last half, the
+   motion is still converging to the periodic orbit: the label is the same,
+   with reduced confidence.
+3. **Chaos indicators** for aperiodic sections (at least ``n_min_aperiodic``
+   points): the Gottwald-Melbourne 0-1 test K [1] on the first coordinate
+   (K ~ 0 regular, K ~ 1 chaotic; threshold 0.5) and the largest Lyapunov
+   exponent of the section map per section [2] (threshold 0.1 per section).
+   Both regular -> ``"quasi-periodic"``; both chaotic -> ``"chaos"``; if they
+   disagree the 0-1 test decides, with confidence 0.35.
+4. **Supporting details** (reported, not deciding): correlation dimension of
+   the section [3] (about 1 for a closed invariant curve) and a closed-curve
+   ratio (length of the polygon through the points sorted by angle about
+   their centroid / perimeter of their convex hull; about 1 for a curve
+   around the centroid, >> 1 for a cloud).
+5. Fewer than ``n_min`` points, or an aperiodic section with fewer than
+   ``n_min_aperiodic`` points -> ``"undetermined"`` with the reason.
+
+References
+----------
+[1] Gottwald G. A., Melbourne I., "On the implementation of the 0-1 test for
+    chaos", SIAM J. Appl. Dyn. Syst. 8 (2009) 129-145, Sec. 3 (Eqs. 3.1-3.6,
+    correlation method with the oscillatory term removed).
+[2] Rosenstein M. T., Collins J. J., De Luca C. J., "A practical method for
+    calculating largest Lyapunov exponents from small data sets", Physica D 65
+    (1993) 117-134, Eqs. 5-8 (mean log divergence of nearest neighbours).
+[3] Grassberger P., Procaccia I., "Characterization of strange attractors",
+    Phys. Rev. Lett. 50 (1983) 346-349 (correlation sum C(r) ~ r^D2).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = [
+    "LABELS",
+    "DEFAULTS",
+    "classify",
+    "period_label",
+    "periodicity",
+    "zero_one_test",
+    "lyapunov_exponent",
+    "correlation_dimension",
+    "closed_curve_ratio",
+]
+
+#: Closed vocabulary of the labels (``"k periods"`` stands for any k >= 2).
+LABELS = ("1 period", "k periods", "quasi-periodic", "chaos", "undetermined")
+
+#: Default thresholds (see docs/analysis.md for their justification).
+DEFAULTS = dict(
+    tol=0.02,  # cluster radius / attractor peak-to-peak
+    kmax=16,  # largest period searched
+    n_min=6,  # fewest section points for any label
+    n_min_aperiodic=50,  # fewest points to separate quasi-periodic from chaos
+    k01_threshold=0.5,  # 0-1 test: K > 0.5 chaotic
+    lyap_threshold=0.1,  # largest Lyapunov exponent per section > 0.1 chaotic
+)
+
+
+def period_label(k: int) -> str:
+    """``"1 period"`` or ``"k periods"`` (the wording of seed 004, Tables 3-5)."""
+    return "1 period" if k == 1 else f"{k} periods"
+
+
+def _normalise(points, signal=None, scale=None) -> np.ndarray:
+    P = np.asarray(points, dtype=float)
+    if P.ndim == 1:
+        P = P[:, None]
+    P = P[np.all(np.isfinite(P), axis=1)]
+    if scale is None:
+        ref = P
+        if signal is not None:
+            S = np.asarray(signal, dtype=float)
+            S = S[:, None] if S.ndim == 1 else S
+            if S.shape[1] == P.shape[1]:
+                S = S[np.all(np.isfinite(S), axis=1)]
+                if len(S):
+                    ref = S
+        scale = np.ptp(ref, axis=0) if len(ref) else np.ones(P.shape[1])
+        if len(P):
+            scale = np.maximum(scale, 1e-9 * np.max(np.abs(P), axis=0))
+    scale = np.broadcast_to(np.asarray(scale, dtype=float), (P.shape[1],)).copy()
+    scale[~(scale > 0)] = 1.0
+    if len(P) == 0:
+        return P
+    return (P - P.mean(axis=0)) / scale
+
+
+def periodicity(Q, tol: float = DEFAULTS["tol"], kmax: int = DEFAULTS["kmax"], min_per_cluster: int = 3):
+    """Smallest period k of normalised section points ``Q`` (cluster test), or None.
+
+    Returns ``(k, spread)`` where ``spread`` is the largest distance of a point
+    from the median of its residue class (points r, r+k, r+2k, ...), or
+    ``(None, best_spread)``.
+    """
+    Q = np.asarray(Q, dtype=float)
+    n = len(Q)
+    best = np.inf
+    for k in range(1, min(kmax, n // min_per_cluster) + 1):
+        spread = 0.0
+        for r in range(k):
+            c = Q[r::k]
+            spread = max(spread, float(np.max(np.linalg.norm(c - np.median(c, axis=0), axis=1))))
+            if spread > tol:
+                break
+        best = min(best, spread)
+        if spread <= tol:
+            return k, spread
+    return None, best
+
+
+def zero_one_test(x, n_c: int = 100, seed: int = 0, n_max: int = 2000) -> float:
+    """Gottwald-Melbourne 0-1 test for chaos, correlation method [1]: K in about [0, 1].
+
+    Parameters
+    ----------
+    x : (N,) array_like
+        Scalar observable of a map (here one coordinate of the Poincare points).
+    n_c : int
+        Number of random frequencies c in (pi/5, 4 pi/5) ([1], Sec. 3.2).
+    seed : int
+        Seed of the frequencies (the result is reproducible).
+    n_max : int
+        Only the last ``n_max`` values are used (cost O(n_c N^2 / 10)).
+
+    Returns
+    -------
+    float
+        median over c of K_c = corr(n, D_c(n)), n = 1..N/10.
+    """
+    phi = np.asarray(x, dtype=float)
+    phi = phi[np.isfinite(phi)][-n_max:]
+    N = len(phi)
+    if N < 20:
+        return float("nan")
+    phi = phi - phi.mean()  # removes the oscillatory term (E phi)^2 (1 - cos nc)/(1 - cos c), [1] Eq. 3.5
+    rng = np.random.default_rng(seed)
+    c = rng.uniform(np.pi / 5, 4 * np.pi / 5, n_c)
+    j = np.arange(1, N + 1)
+    arg = np.outer(c, j)
+    p = np.cumsum(phi * np.cos(arg), axis=1)  # [1] Eq. 3.1
+    q = np.cumsum(phi * np.sin(arg), axis=1)
+    n_cut = max(N // 10, 3)  # [1] Sec. 3.1: n <= N/10
+    M = np.empty((n_c, n_cut))
+    for n in range(1, n_cut + 1):  # mean-square displacement, [1] Eq. 3.2
+        dp = p[:, n:] - p[:, :-n]
+        dq = q[:, n:] - q[:, :-n]
+        M[:, n - 1] = np.mean(dp * dp + dq * dq, axis=1)
+    xi = np.arange(1, n_cut + 1, dtype=float)
+    xi -= xi.mean()
+    Dm = M - M.mean(axis=1, keepdims=True)
+    den = np.sqrt(np.sum(xi**2) * np.sum(Dm**2, axis=1))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        Kc = np.where(den > 0, Dm @ xi / den, 0.0)  # [1] Eq. 3.6, K_c = corr(xi, D_c)
+    return float(np.median(Kc))
+
+
+def _embed(Q, m: int) -> np.ndarray:
+    n = len(Q) - m + 1
+    return np.hstack([Q[i : i + n] for i in range(m)])
+
+
+def lyapunov_exponent(Q, m: int = 2, steps: int = 4, n_max: int = 1500) -> float:
+    """Largest Lyapunov exponent of a section map [1/section] (Rosenstein et al. [2]).
+
+    Each point (delay-embedded with ``m`` consecutive section points) is paired
+    with its nearest neighbour; the mean log distance of the pairs' images
+    after 1..``steps`` sections is fitted by a straight line ([2], Eqs. 5-8).
+    Step 0 is left out of the fit: with noisy data the nearest neighbour is
+    biased close and the first step would read the noise as divergence.
+    """
+    Q = np.asarray(Q, dtype=float)[-n_max:]
+    X = _embed(Q, m)
+    M = len(X) - steps
+    if M < 10:
+        return float("nan")
+    A = X[:M]
+    d2 = np.sum(A * A, axis=1)[:, None] + np.sum(A * A, axis=1)[None, :] - 2.0 * A @ A.T
+    np.fill_diagonal(d2, np.inf)
+    nn = np.argmin(d2, axis=1)
+    i = np.arange(M)
+    logs = []
+    for k in range(1, steps + 1):
+        d = np.linalg.norm(X[i + k] - X[nn + k], axis=1)
+        d = d[d > 0]
+        logs.append(np.mean(np.log(d)) if d.size else np.nan)
+    y = np.asarray(logs)
+    k = np.arange(1, steps + 1, dtype=float)
+    ok = np.isfinite(y)
+    if ok.sum() < 2:
+        return float("nan")
+    return float(np.polyfit(k[ok], y[ok], 1)[0])  # [2], Eq. 8: slope of <ln d_j(i)> vs i
+
+
+def correlation_dimension(Q, n_max: int = 1500) -> float:
+    """Correlation dimension D2 of a point set (Grassberger-Procaccia [3]): slope of log C(r) vs log r.
+
+    The fit uses the radii where the correlation sum C(r) lies between
+    max(20 / n_pairs, 1e-3) and 0.2 (the scaling region for small sets).
+    """
+    Q = np.asarray(Q, dtype=float)[-n_max:]
+    n = len(Q)
+    if n < 20:
+        return float("nan")
+    iu = np.triu_indices(n, 1)
+    d = np.sqrt(np.maximum(np.sum((Q[:, None, :] - Q[None, :, :]) ** 2, axis=-1)[iu], 0.0))
+    d = np.sort(d[d > 0])
+    if d.size < 20:
+        return float("nan")
+    npairs = len(iu[0])
+    lo = max(20.0 / npairs, 1e-3)
+    C = np.arange(1, d.size + 1) / npairs  # C(r = d_k) = k / n_pairs   [3]
+    sel = (C >= lo) & (C <= 0.2)
+    if sel.sum() < 5:
+        return float("nan")
+    return float(np.polyfit(np.log(d[sel]), np.log(C[sel]), 1)[0])
+
+
+def closed_curve_ratio(Q) -> float:
+    """Length of the polygon through the points sorted by angle about their centroid / convex-hull perimeter.
+
+    About 1 when the points lie on a closed curve around their centroid (the
+    "closed curve formed by Poincare points" of a quasi-periodic motion,
+    seed 004 Sec. 4); much larger than 1 for a scattered cloud.
+    """
+    Q = np.asarray(Q, dtype=float)
+    if len(Q) < 8 or Q.shape[1] != 2:
+        return float("nan")
+    from scipy.spatial import ConvexHull, QhullError
+
+    c = Q.mean(axis=0)
+    order = np.argsort(np.arctan2(Q[:, 1] - c[1], Q[:, 0] - c[0]))
+    S = Q[order]
+    L = float(np.sum(np.linalg.norm(np.diff(np.vstack([S, S[:1]]), axis=0), axis=1)))
+    try:
+        hull = ConvexHull(Q)
+    except QhullError:
+        return float("nan")
+    return L / hull.area if hull.area > 0 else float("nan")  # 2-D hull: .area is the perimeter
+
+
+def classify(points, signal=None, *, scale=None, tol=DEFAULTS["tol"], kmax=DEFAULTS["kmax"],
+             n_min=DEFAULTS["n_min"], n_min_aperiodic=DEFAULTS["n_min_aperiodic"],
+             k01_threshold=DEFAULTS["k01_threshold"], lyap_threshold=DEFAULTS["lyap_threshold"], seed=0):
+    """Classify a Poincare section (criteria in the module docstring).
+
+    Parameters
+    ----------
+    points : (n, d) array_like
+        Section points in order of the crossings (e.g. D_Y [m], V_Y [m/s]).
+    signal : (m, d) array_like, optional
+        The continuous trajectory in the same coordinates; its peak-to-peak
+        extent sets the scale of the tolerance.  Without it (and without
+        ``scale``) the points' own extent is used, which cannot tell a tight
+        noisy single cluster from a cloud: pass one of them for real runs.
+    scale : (d,) array_like, optional
+        Peak-to-peak attractor extent per coordinate (overrides ``signal``).
+    tol : float
+        Cluster radius as a fraction of the extent (default 0.02).
+
+    Returns
+    -------
+    label : str
+        ``"1 period"``, ``"k periods"`` (k an integer), ``"quasi-periodic"``,
+        ``"chaos"`` or ``"undetermined"``.
+    confidence : float
+        In [0, 1] (0 for "undetermined").
+    details : dict
+        Indicators: ``n_points``, ``period``, ``spread``, ``k01``,
+        ``lyapunov``, ``correlation_dimension``, ``closed_curve_ratio``,
+        ``reason``.
+    """
+    Q = _normalise(points, signal, scale)
+    n = len(Q)
+    det: dict = {"n_points": n, "tol": tol, "period": None, "spread": None, "k01": None, "lyapunov": None,
+                 "correlation_dimension": None, "closed_curve_ratio": None, "reason": ""}
+    if n < n_min:
+        det["reason"] = f"only {n} Poincare section points (need >= {n_min}); simulate longer"
+        return "undetermined", 0.0, det
+    k, spread = periodicity(Q, tol, kmax)
+    converging = False
+    if k is None and n >= 2 * n_min:
+        k2, spread2 = periodicity(Q[n // 2 :], tol, kmax)
+        if k2 is not None:
+            k, spread, converging = k2, spread2, True
+    if k is not None:
+        n_used = n - n // 2 if converging else n
+        det.update(period=k, spread=spread)
+        conf = (1.0 - 0.5 * spread / tol) * min(1.0, np.sqrt((n_used / k) / 10.0))
+        if converging:
+            conf *= 0.8
+            det["reason"] = "periodic on the last half of the section only (transient still decaying)"
+        else:
+            det["reason"] = f"all points within {spread:.3g} (tol {tol}) of {k} cluster(s) repeated in order"
+        return period_label(k), float(round(conf, 3)), det
+    det["spread"] = spread
+    det["closed_curve_ratio"] = closed_curve_ratio(Q) if Q.shape[1] == 2 else None
+    if n < n_min_aperiodic:
+        det["reason"] = (f"not periodic (k <= {kmax}), but only {n} section points: need >= {n_min_aperiodic} "
+                         "to tell quasi-periodic from chaos; simulate longer")
+        return "undetermined", 0.0, det
+    K = zero_one_test(Q[:, 0], seed=seed)
+    lam = lyapunov_exponent(Q)
+    D2 = correlation_dimension(Q)
+    det.update(k01=K, lyapunov=lam, correlation_dimension=D2)
+    chaos_k = K > k01_threshold
+    chaos_l = np.isfinite(lam) and lam > lyap_threshold
+    if chaos_k and chaos_l:
+        conf = 0.5 + 0.5 * min((K - k01_threshold) / (1 - k01_threshold), min(1.0, (lam - lyap_threshold) / 0.4))
+        label = "chaos"
+        det["reason"] = f"0-1 test K = {K:.2f} > {k01_threshold} and Lyapunov exponent {lam:.3g}/section > {lyap_threshold}"
+    elif not chaos_k and not chaos_l:
+        conf = 0.5 + 0.5 * min((k01_threshold - K) / k01_threshold, min(1.0, (lyap_threshold - lam) / lyap_threshold))
+        ratio = det["closed_curve_ratio"]
+        if ratio is not None and np.isfinite(ratio) and ratio > 1.5:
+            conf *= 0.8
+        label = "quasi-periodic"
+        det["reason"] = (f"aperiodic, 0-1 test K = {K:.2f} <= {k01_threshold}, Lyapunov exponent {lam:.3g}/section "
+                         f"<= {lyap_threshold}, correlation dimension {D2:.2f}")
+    else:
+        label = "chaos" if chaos_k else "quasi-periodic"
+        conf = 0.35
+        det["reason"] = f"indicators disagree (0-1 test K = {K:.2f}, Lyapunov {lam:.3g}/section); 0-1 test decides"
+    return label, float(round(min(max(conf, 0.0), 1.0), 3)), det

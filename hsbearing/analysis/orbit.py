@@ -1,0 +1,261 @@
+"""Cage whirl orbit, and the annotation of a dynamic run (slip ratio, whirl, Poincare section, period).
+
+:func:`annotate` adds to a dynamic-run Dataset the cage slip ratio over time,
+the scalar summaries (mean slip ratio, whirl amplitude and frequency), the
+Poincare section points and the period classification with its confidence.
+:func:`summary` returns the scalars a sweep tabulates.
+
+Whirl quantities are computed after the start-up transient (the first
+``transient_fraction`` of the simulated span, 30 % by default):
+
+- ``whirl_amplitude``: RMS radius sqrt(D_Y^2 + D_Z^2) of the cage mass centre
+  about the bearing axis; ``whirl_radius_max``: its peak value;
+- ``whirl_frequency``: the dominant frequency of the complex signal
+  (D_Y - mean) + i (D_Z - mean) (Hann window, parabolic peak refinement);
+  positive for a forward whirl (in the sense of a positive rotation about X,
+  Y towards Z), negative for a backward whirl;
+- ``whirl_frequency_ratio``: 2 pi whirl_frequency / mean cage speed (1 for a
+  whirl synchronous with the cage rotation).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from typing import Any
+
+import numpy as np
+import xarray as xr
+
+from hsbearing.analysis import classify as _cl
+from hsbearing.analysis import poincare as _pc
+from hsbearing.analysis.slip import cage_slip_ratio, theoretical_cage_speed
+from hsbearing.results import VARIABLES, register
+
+_trapz = getattr(np, "trapezoid", None) or np.trapz  # numpy < 2 has only trapz
+
+__all__ = ["annotate", "summary", "whirl_metrics", "whirl_frequency", "REQUIRED"]
+
+#: Variables a dynamic-run Dataset must carry for :func:`annotate`.
+REQUIRED = ("time", "cage_speed", "cage_center_y", "cage_center_z")
+
+for _n, _d, _u, _l in [
+    ("theoretical_cage_speed", (), "rad/s",
+     "epicyclic cage speed for rolling without slip omega_c,th = (omega_i (1 - gamma) + omega_o (1 + gamma))/2"),
+    ("mean_cage_speed", (), "rad/s", "time-mean cage speed after the transient"),
+    ("mean_cage_slip_ratio", (), "1", "time-mean cage slip ratio (omega_c,th - omega_c)/omega_c,th after the transient"),
+    ("whirl_amplitude", (), "m", "RMS radius of the cage mass-centre orbit about the bearing axis after the transient"),
+    ("whirl_radius_max", (), "m", "peak radius of the cage mass-centre orbit about the bearing axis after the transient"),
+    ("whirl_frequency", (), "Hz", "dominant whirl frequency of the cage mass centre (> 0 forward, < 0 backward)"),
+    ("whirl_frequency_ratio", (), "1", "2 pi whirl_frequency / mean cage speed (1 = synchronous whirl)"),
+    ("poincare_time", ("section",), "s", "time of the Poincare section crossings"),
+    ("poincare_y", ("section",), "m", "cage mass-centre displacement D_Y at the Poincare section"),
+    ("poincare_vy", ("section",), "m/s", "cage mass-centre velocity V_Y at the Poincare section"),
+]:
+    register(_n, _d, _u, _l)
+
+
+def _var(name: str, value, dims=None) -> xr.Variable:
+    v = VARIABLES[name]
+    return xr.Variable(v.dims if dims is None else dims, np.asarray(value, dtype=float),
+                       attrs={"units": v.units, "long_name": v.long_name})
+
+
+def _case_from_attrs(ds):
+    text = ds.attrs.get("case_toml")
+    if not text:
+        return None
+    from hsbearing.case import loads_case
+
+    return loads_case(text, source=str(ds.attrs.get("case_source", "<archive case_toml>")))
+
+
+def whirl_frequency(t, y, z) -> float:
+    """Dominant (signed) frequency [Hz] of the planar motion (y, z) sampled at times ``t`` [s].
+
+    Resamples to a uniform grid if needed, removes the mean, applies a Hann
+    window and refines the largest non-zero FFT peak of y + i z by a parabola
+    through the log magnitudes.  NaN if fewer than 16 samples.
+    """
+    t = np.asarray(t, float)
+    if len(t) < 16 or not np.all(np.isfinite(y)) or not np.all(np.isfinite(z)):
+        return float("nan")
+    dt = np.diff(t)
+    if np.ptp(dt) > 1e-6 * np.mean(dt):
+        tu = np.linspace(t[0], t[-1], len(t))
+        y, z, t = np.interp(tu, t, y), np.interp(tu, t, z), tu
+    h = (t[-1] - t[0]) / (len(t) - 1)
+    s = (np.asarray(y) - np.mean(y)) + 1j * (np.asarray(z) - np.mean(z))
+    n = len(s)
+    X = np.abs(np.fft.fft(s * np.hanning(n)))
+    f = np.fft.fftfreq(n, h)
+    X[0] = 0.0
+    k = int(np.argmax(X))
+    if X[k] == 0.0:
+        return 0.0
+    km, kp = (k - 1) % n, (k + 1) % n
+    a, b, c = np.log(X[km] + 1e-300), np.log(X[k] + 1e-300), np.log(X[kp] + 1e-300)
+    den = a - 2 * b + c
+    delta = 0.5 * (a - c) / den if den < 0 else 0.0
+    return float(f[k] + delta / (n * h))
+
+
+def whirl_metrics(ds, transient_fraction: float = _pc.DEFAULT_TRANSIENT_FRACTION) -> dict[str, float]:
+    """Whirl amplitude [m], peak radius [m], frequency [Hz] and frequency ratio after the transient."""
+    t = np.asarray(ds["time"].values, float)
+    mask, _ = _pc.steady_mask(t, transient_fraction)
+    y = np.asarray(ds["cage_center_y"].values, float)[mask]
+    z = np.asarray(ds["cage_center_z"].values, float)[mask]
+    w = np.asarray(ds["cage_speed"].values, float)[mask]
+    out = dict(whirl_amplitude=float("nan"), whirl_radius_max=float("nan"), whirl_frequency=float("nan"),
+               whirl_frequency_ratio=float("nan"), mean_cage_speed=float("nan"))
+    if mask.sum() == 0:
+        return out
+    r = np.hypot(y, z)
+    ts = t[mask]
+    span = ts[-1] - ts[0]
+    mean = (lambda a: float(_trapz(a, ts) / span)) if span > 0 else (lambda a: float(np.mean(a)))
+    out["whirl_amplitude"] = math.sqrt(max(mean(r**2), 0.0))
+    out["whirl_radius_max"] = float(np.max(r))
+    out["mean_cage_speed"] = mean(w)
+    fw = whirl_frequency(ts, y, z)
+    out["whirl_frequency"] = fw
+    if np.isfinite(fw) and out["mean_cage_speed"] != 0:
+        out["whirl_frequency_ratio"] = 2 * np.pi * fw / out["mean_cage_speed"]
+    return out
+
+
+def annotate(ds: xr.Dataset, case=None, *, alpha=None, section: str = "cage_revolution",
+             transient_fraction: float = _pc.DEFAULT_TRANSIENT_FRACTION, **classify_kw) -> xr.Dataset:
+    """Add slip ratio, whirl summaries, Poincare section and period classification to a dynamic run.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        A dynamic run with ``time`` [s], ``cage_speed`` [rad/s],
+        ``cage_center_y``/``cage_center_z`` [m]; optionally
+        ``cage_velocity_y``/``cage_velocity_z`` [m/s] and ``cage_angle`` [rad].
+    case : hsbearing.case.Case, optional
+        The run's case (for the theoretical cage speed and the guide
+        clearance); default: re-read from ``ds.attrs["case_toml"]``.
+    alpha : float, optional
+        Contact angle [rad] for the theoretical cage speed (default: the
+        nominal contact angle of the case).
+    section : str
+        Poincare section, one of :data:`hsbearing.analysis.poincare.SECTIONS`.
+    transient_fraction : float
+        Leading fraction of the simulated span discarded as transient (0.3).
+    **classify_kw
+        Thresholds passed to :func:`hsbearing.analysis.classify.classify`.
+
+    Returns
+    -------
+    xarray.Dataset
+        A new Dataset (the input is not modified).
+    """
+    missing = [v for v in REQUIRED if v not in ds.variables]
+    if missing:
+        raise ValueError(f"annotate: the Dataset lacks {', '.join(missing)} (needs {', '.join(REQUIRED)})")
+    ds = ds.copy()
+    if case is None:
+        case = _case_from_attrs(ds)
+    t = np.asarray(ds["time"].values, float)
+    mask, t_discard = _pc.steady_mask(t, transient_fraction)
+    span = t[mask][-1] - t[mask][0] if mask.sum() > 1 else 0.0
+
+    # --- cage slip ratio (slip.py; nominal contact angle unless alpha is given)
+    if case is not None:
+        from hsbearing.models.geometry import derive
+
+        geom = derive(case)
+        a = geom.alpha0 if alpha is None else float(alpha)
+        w_th = theoretical_cage_speed(geom, case.operating.inner_speed, case.operating.outer_speed, alpha=a)
+        slip = cage_slip_ratio(ds["cage_speed"].values, w_th)
+        ds["cage_slip_ratio"] = _var("cage_slip_ratio", slip, ("time",))
+        ds["theoretical_cage_speed"] = _var("theoretical_cage_speed", w_th)
+        ts = t[mask]
+        ms = float(_trapz(slip[mask], ts) / span) if span > 0 else float(np.mean(slip[mask])) if mask.any() else float("nan")
+        ds["mean_cage_slip_ratio"] = _var("mean_cage_slip_ratio", ms)
+        ds.attrs["cage_slip_ratio_definition"] = (
+            "(omega_c,th - omega_c)/omega_c,th, omega_c,th = (omega_i (1 - gamma) + omega_o (1 + gamma))/2, "
+            "gamma = D cos(alpha)/d_m (Harris & Kotzalas, Ch. 8)")
+        ds.attrs["cage_slip_contact_angle"] = float(a)
+        if "guide_clearance" not in ds.attrs and math.isfinite(geom.guide_clearance):
+            ds.attrs["guide_clearance"] = float(geom.guide_clearance)
+        if "pocket_clearance" not in ds.attrs and math.isfinite(geom.pocket_clearance):
+            ds.attrs["pocket_clearance"] = float(geom.pocket_clearance)
+    elif "cage_slip_ratio" in ds and mask.any():
+        s = np.asarray(ds["cage_slip_ratio"].values, float)[mask]
+        ds["mean_cage_slip_ratio"] = _var("mean_cage_slip_ratio", float(np.mean(s)))
+
+    # --- whirl orbit
+    for k, v in whirl_metrics(ds, transient_fraction).items():
+        ds[k] = _var(k, v)
+
+    # --- Poincare section and classification
+    tc, pts = _pc.poincare_section(ds, section, transient_fraction)
+    ds = ds.drop_vars([v for v in ("poincare_time", "poincare_y", "poincare_vy") if v in ds.variables])
+    ds["poincare_time"] = _var("poincare_time", tc)
+    ds["poincare_y"] = _var("poincare_y", pts[:, 0])
+    ds["poincare_vy"] = _var("poincare_vy", pts[:, 1])
+    orbit = np.column_stack([np.asarray(ds["cage_center_y"].values, float)[mask], _pc.cage_velocity(ds, "y")[mask]])
+    label, conf, det = _cl.classify(pts, signal=orbit, **classify_kw)
+    ds.attrs.update(
+        classification=label,
+        classification_confidence=conf,
+        classification_reason=det.get("reason", ""),
+        classification_details=json.dumps({k: (None if isinstance(v, float) and not math.isfinite(v) else v)
+                                           for k, v in det.items()}),
+        poincare_section=_pc.section_description(section),
+        poincare_section_kind=section,
+        transient_discarded=float(t_discard),
+        transient_fraction=float(transient_fraction),
+    )
+    return ds
+
+
+def _scalar(ds, name):
+    if name in ds and ds[name].ndim == 0:
+        return float(ds[name].values)
+    return float("nan")
+
+
+def summary(ds: xr.Dataset, case=None) -> dict[str, Any]:
+    """Scalars of one run for a sweep table.
+
+    Keys: ``status``, ``classification``, ``classification_confidence``,
+    ``mean_cage_slip_ratio``, ``mean_cage_speed`` [rad/s], ``whirl_amplitude``
+    [m], ``whirl_radius_max`` [m], ``whirl_frequency`` [Hz],
+    ``whirl_frequency_ratio``, ``mean_inner_contact_load`` and
+    ``mean_outer_contact_load`` [N] (mean over balls, and over time after the
+    transient), ``max_inner_contact_load``/``max_outer_contact_load`` [N],
+    ``n_poincare_points``.  A dynamic run that was not annotated is annotated
+    first (on a copy).  A quasi-static Dataset (no ``time``) gives the loads
+    and ``classification = "static"``.
+    """
+    out: dict[str, Any] = {"status": ds.attrs.get("status", "unknown")}
+    dynamic = "time" in ds.dims
+    if dynamic and "classification" not in ds.attrs and all(v in ds.variables for v in REQUIRED):
+        ds = annotate(ds, case)
+    if dynamic:
+        mask, _ = _pc.steady_mask(ds["time"].values, float(ds.attrs.get("transient_fraction", _pc.DEFAULT_TRANSIENT_FRACTION)))
+        sel = {"time": np.nonzero(mask)[0]}
+    else:
+        sel = {}
+    out["classification"] = ds.attrs.get("classification", "static" if not dynamic else "undetermined")
+    out["classification_confidence"] = float(ds.attrs.get("classification_confidence", float("nan")))
+    for name in ("mean_cage_slip_ratio", "mean_cage_speed", "whirl_amplitude", "whirl_radius_max",
+                 "whirl_frequency", "whirl_frequency_ratio"):
+        out[name] = _scalar(ds, name)
+    if not dynamic and "cage_speed" in ds:
+        out["mean_cage_speed"] = float(np.mean(ds["cage_speed"].values))
+    for side in ("inner", "outer"):
+        name = f"{side}_contact_load"
+        if name in ds:
+            q = ds[name].isel(sel) if sel else ds[name]
+            out[f"mean_{name}"] = float(q.mean())
+            out[f"max_{name}"] = float(q.max())
+        else:
+            out[f"mean_{name}"] = out[f"max_{name}"] = float("nan")
+    out["n_poincare_points"] = int(ds["poincare_y"].size) if "poincare_y" in ds else 0
+    return out
