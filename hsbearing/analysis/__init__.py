@@ -1,28 +1,20 @@
 """Analysis of dynamic runs: cage slip ratio, whirl orbit, Poincare section, period classification.
 
-Light at import: :mod:`hsbearing.analysis.slip` only needs numpy.  The
-functions :func:`annotate` and :func:`summary` live in
-:mod:`hsbearing.analysis.orbit` and are re-exported lazily.
+- :func:`theoretical_cage_speed`, :func:`cage_slip_ratio` (``slip.py``)
+- :func:`poincare_points` (``poincare.py``): one point (D_Y, V_Y) per cage revolution
+- :func:`classify` (``classify.py``): "1 period", "k periods", "quasi-periodic", "chaos", "undetermined"
+- :func:`annotate`, :func:`summary` (``orbit.py``): everything above added to a run Dataset / as sweep scalars
+
+Note: ``hsbearing.analysis.classify`` is the *function* (the module is
+``sys.modules["hsbearing.analysis.classify"]``; import names from it with
+``from hsbearing.analysis.classify import ...``).
 """
 
 from __future__ import annotations
 
 from hsbearing.analysis.slip import cage_slip_ratio, theoretical_cage_speed
+from hsbearing.analysis.poincare import poincare_points
+from hsbearing.analysis.classify import classify
+from hsbearing.analysis.orbit import annotate, summary
 
 __all__ = ["theoretical_cage_speed", "cage_slip_ratio", "annotate", "summary", "poincare_points", "classify"]
-
-
-def __getattr__(name):
-    if name in ("annotate", "summary"):
-        from hsbearing.analysis import orbit
-
-        return getattr(orbit, name)
-    if name == "poincare_points":
-        from hsbearing.analysis.poincare import poincare_points
-
-        return poincare_points
-    if name == "classify":
-        from hsbearing.analysis.classify import classify
-
-        return classify
-    raise AttributeError(f"module 'hsbearing.analysis' has no attribute {name!r}")

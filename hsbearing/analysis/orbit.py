@@ -27,8 +27,8 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
-from hsbearing.analysis import classify as _cl
 from hsbearing.analysis import poincare as _pc
+from hsbearing.analysis.classify import classify as _classify
 from hsbearing.analysis.slip import cage_slip_ratio, theoretical_cage_speed
 from hsbearing.results import VARIABLES, register
 
@@ -199,7 +199,7 @@ def annotate(ds: xr.Dataset, case=None, *, alpha=None, section: str = "cage_revo
     ds["poincare_y"] = _var("poincare_y", pts[:, 0])
     ds["poincare_vy"] = _var("poincare_vy", pts[:, 1])
     orbit = np.column_stack([np.asarray(ds["cage_center_y"].values, float)[mask], _pc.cage_velocity(ds, "y")[mask]])
-    label, conf, det = _cl.classify(pts, signal=orbit, **classify_kw)
+    label, conf, det = _classify(pts, signal=orbit, **classify_kw)
     ds.attrs.update(
         classification=label,
         classification_confidence=conf,
