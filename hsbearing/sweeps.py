@@ -1,0 +1,934 @@
+"""Sweeps: many independent runs over varied case keys, in parallel, resumable, archived.
+
+``run_sweep(case, {"axial_load": "100,500,1000N", "oil": ["4109", "4106"]}, out_dir="DIR")``
+builds the Cartesian product (or, with ``zip=True``, the zipped lists) of
+case overrides.  Every point is an independent run (``kind="run"``:
+:func:`hsbearing.simulate`; ``kind="quasistatic"``: :func:`hsbearing.quasi_static`)
+archived as its own netCDF file ``DIR/<case>-<hash>.nc``, where the hash is
+taken over the point's full case TOML, the kind, the duration and the
+point function.  ``DIR/sweep.nc`` is one Dataset with a dimension per varied
+key (``point`` for zipped lists) holding each point's summary plus
+``status``, ``error``, ``wall_time``, ``archive`` and ``resumed``.
+
+Execution
+---------
+* ``jobs`` local worker processes (``spawn`` context; default
+  ``os.cpu_count()``); ``jobs=1`` runs in the calling process.
+* ``scheduler="tcp://host:port"``: the same tasks are submitted to an
+  existing dask.distributed cluster.  Workers return the result Dataset to
+  the client; only the client writes files (no shared file system needed).
+
+Fault tolerance
+---------------
+* A point whose overrides make an invalid case (:class:`CaseError`) is
+  recorded with status ``invalid`` and its message; nothing is computed.
+* A :class:`SolverError` is recorded with status ``failed``; its partial
+  Dataset (or, without one, an empty Dataset carrying the status) is archived.
+* Any other exception in a point: status ``error`` (not archived: retried
+  on the next run).
+* A point that kills its worker process (segfault, OOM kill): the points
+  that were running in the broken pool are re-run one at a time in a fresh
+  single-worker pool, so the culprit is identified exactly and recorded as
+  ``crashed``; the others complete normally.  On dask, a task that kills
+  workers ends as ``KilledWorker`` -> ``crashed``.
+* Resume: a point whose archive exists and is complete (opens, has the
+  ``status`` attribute) is not recomputed; its record is read back from the
+  archive.  Archives are written atomically by
+  :func:`hsbearing.results.write_netcdf`, so an interrupted sweep leaves
+  only complete archives plus, at worst, hidden temporary files
+  ``.<name>.nc.*.tmp`` which the next run of the same sweep deletes (a lock
+  file ``DIR/.hsbearing-sweep.lock`` keeps two sweeps out of one directory,
+  so those temporaries cannot belong to a live writer).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import hashlib
+import itertools
+import json
+import math
+import multiprocessing
+import os
+import re
+import signal
+import sys
+import time
+import traceback
+from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
+from concurrent.futures.process import BrokenProcessPool
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Callable, Iterable, Mapping, Sequence
+
+import numpy as np
+import xarray as xr
+
+from hsbearing.case import DIMENSIONS, SCHEMA, Case, CaseError, load_case, loads_case, parse_quantity, resolve_key
+from hsbearing.errors import SolverError
+from hsbearing.results import VARIABLES, register, standard_attrs, write_netcdf
+
+__all__ = [
+    "run_sweep",
+    "plan_sweep",
+    "execute",
+    "assemble",
+    "parse_values",
+    "point_hash",
+    "archive_is_complete",
+    "quasistatic_summary",
+    "dynamic_summary",
+    "cli_main",
+    "SweepPlan",
+    "Point",
+    "STATUS_OK",
+]
+
+#: Status of a point that completed normally.
+STATUS_OK = "ok"
+
+#: Name of the lock file that keeps two sweeps out of one directory.
+LOCK_NAME = ".hsbearing-sweep.lock"
+
+# ----------------------------------------------------------------------------- output variables
+# Declared once here (results.py style).  In a sweep Dataset they carry the sweep dims
+# (one per varied key, or ``point`` for zipped lists); the registry lists them as scalars.
+register("status", (), "1", "point status: ok, failed (solver), invalid (case), error, crashed (worker died)")
+register("error", (), "1", "error message of a point that did not complete ('' if ok)")
+register("wall_time", (), "s", "wall-clock time spent computing the point")
+register("archive", (), "1", "path of the point's netCDF archive, relative to the sweep file's directory")
+register("resumed", (), "1", "1 if the point was read back from an existing archive instead of computed")
+# Quasi-static point summary (kind="quasistatic"); cage_speed and
+# inner_ring_axial_displacement are the core names of results.py (scalars there).
+register("mean_inner_contact_load", (), "N", "ball-inner race normal load Q_i averaged over the balls")
+register("mean_outer_contact_load", (), "N", "ball-outer race normal load Q_o averaged over the balls")
+register("max_inner_contact_load", (), "N", "largest ball-inner race normal load Q_i over the balls")
+register("max_outer_contact_load", (), "N", "largest ball-outer race normal load Q_o over the balls")
+
+_RECORD_VARS = ("status", "error", "wall_time", "archive", "resumed")
+
+
+# ----------------------------------------------------------------------------- values
+
+
+_NUM_UNIT = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
+
+
+@dataclass(frozen=True)
+class Axis:
+    """One varied key: the case key, the dim name, the values as given and as coordinates."""
+
+    key: str  #: "table.key"
+    dim: str  #: dimension name in the sweep Dataset
+    kind: str  #: Field kind of the key
+    values: tuple  #: override values in case-file form ("100 N", "4109", 0.52)
+    coords: tuple  #: SI floats for quantities, floats/ints for numbers, strings for names
+
+
+def _field(key: str, source: str):
+    table, leaf = resolve_key(key, source=source)
+    return table, leaf, SCHEMA[table][leaf]
+
+
+def parse_values(key: str, spec: str | Sequence[Any], *, source: str = "--vary") -> tuple[list, list]:
+    """Values of one varied key -> (override values in case-file form, coordinate values).
+
+    ``spec`` is a list (``["100 N", "1 kN"]``, ``["4109", "4106"]``,
+    ``[0.52, 0.53]``) or a CLI string ``"100,500,1000N"`` in which a unit
+    written after the last item applies to every item that has none
+    (``"4109,4106"`` stays strings).  Quantities become SI floats in the
+    coordinates; an unparseable item or a wrong dimension raises
+    :class:`CaseError` naming ``source`` and the key.
+    """
+    table, leaf, fld = _field(key, source)
+    full = f"{table}.{leaf}"
+    if isinstance(spec, str):
+        items = [s.strip() for s in spec.split(",")]
+        if any(not s for s in items):
+            raise CaseError(source, full, f"empty item in value list {spec!r}")
+        if fld.kind in DIMENSIONS:
+            m = _NUM_UNIT.match(items[-1])
+            unit = m.group(2) if m else ""
+            norm = []
+            for s in items:
+                m = _NUM_UNIT.match(s)
+                if m and not m.group(2) and unit:
+                    s = f"{m.group(1)} {unit}"
+                elif m and m.group(2):
+                    s = f"{m.group(1)} {m.group(2)}"
+                norm.append(s)
+            items = norm
+    else:
+        items = list(spec)
+    if not items:
+        raise CaseError(source, full, "no values given")
+    values, coords = [], []
+    for item in items:
+        if fld.kind in DIMENSIONS:
+            if isinstance(item, str) and _NUM_UNIT.match(item) and not _NUM_UNIT.match(item).group(2) and float(item) != 0:
+                raise CaseError(source, full, f"value {item!r} needs a unit, e.g. \"{item} {_unit_hint(fld.kind)}\"")
+            coord = parse_quantity(item, fld.kind, source=source, key=full)
+            values.append(item if isinstance(item, str) else f"{item} {DIMENSIONS[fld.kind]}")
+            coords.append(coord)
+        elif fld.kind == "number":
+            try:
+                x = float(item)
+            except (TypeError, ValueError):
+                raise CaseError(source, full, f"expected a plain number, got {item!r}") from None
+            values.append(x)
+            coords.append(x)
+        elif fld.kind == "int":
+            try:
+                x = int(str(item))
+            except ValueError:
+                raise CaseError(source, full, f"expected a whole number, got {item!r}") from None
+            values.append(x)
+            coords.append(x)
+        elif fld.kind == "bool":
+            s = str(item).lower()
+            if s not in ("true", "false"):
+                raise CaseError(source, full, f"expected true or false, got {item!r}")
+            values.append(s == "true")
+            coords.append(int(s == "true"))
+        else:  # str, choice
+            values.append(str(item))
+            coords.append(str(item))
+    if len(set(coords)) != len(coords):
+        raise CaseError(source, full, f"repeated value in {items!r}")
+    return values, coords
+
+
+def _unit_hint(kind: str) -> str:
+    return {"force": "N", "temperature": "degC", "angular_speed": "rpm", "length": "mm", "time": "s"}.get(kind, DIMENSIONS[kind])
+
+
+def _override_literal(kind: str, value: Any) -> Any:
+    """A value in the form ``load_case`` overrides expect (str/choice keys stay strings there)."""
+    return str(value) if kind in ("str", "choice") else value
+
+
+# ----------------------------------------------------------------------------- plan
+
+
+@dataclass(frozen=True)
+class Point:
+    """One point of a sweep: its grid index, overrides, case (None if invalid) and archive name."""
+
+    index: tuple[int, ...]
+    overrides: dict
+    case: Case | None
+    error: str = ""
+    archive: str = ""  #: file name of the archive (in the archive directory)
+    hash: str = ""
+
+
+@dataclass
+class SweepPlan:
+    """What a sweep will compute: axes, points, where the archives go."""
+
+    base: Case
+    axes: list[Axis]
+    zipped: bool
+    points: list[Point]
+    kind: str
+    duration: float | None
+    point_fn: Callable | None
+    vary_spec: dict = field(default_factory=dict)
+
+    @property
+    def shape(self) -> tuple[int, ...]:
+        if self.zipped:
+            return (len(self.points),)
+        return tuple(len(a.values) for a in self.axes)
+
+    @property
+    def dims(self) -> tuple[str, ...]:
+        return ("point",) if self.zipped else tuple(a.dim for a in self.axes)
+
+
+def _fn_name(fn: Callable | None) -> str:
+    if fn is None:
+        return ""
+    return f"{getattr(fn, '__module__', '?')}.{getattr(fn, '__qualname__', repr(fn))}"
+
+
+def point_hash(case: Case, kind: str, duration: float | None, point_fn: Callable | None = None) -> str:
+    """SHA-1 (hex) of the point's full case TOML + kind + duration (+ point function name)."""
+    text = case.to_toml() + f"\n#kind={kind}\n#duration={duration!r}\n#point_fn={_fn_name(point_fn)}\n"
+    return hashlib.sha1(text.encode()).hexdigest()
+
+
+def _base_case(case) -> Case:
+    return case if isinstance(case, Case) else load_case(case)
+
+
+def plan_sweep(
+    case,
+    vary: Mapping[str, Any],
+    *,
+    zip: bool = False,  # noqa: A002 - the documented keyword
+    kind: str = "run",
+    duration=None,
+    point_fn: Callable | None = None,
+    source: str = "--vary",
+) -> SweepPlan:
+    """Validate the varied keys and values and build every point's case (no computation)."""
+    if kind not in ("run", "quasistatic"):
+        raise CaseError("--kind", None, f"unknown kind {kind!r} (allowed: run, quasistatic)")
+    base = _base_case(case)
+    if not vary:
+        raise CaseError(source, None, "nothing to vary (give at least one --vary KEY=V1,V2,...)")
+    if isinstance(duration, str):
+        duration = parse_quantity(duration, "time", source="--duration", key="duration")
+    if duration is not None and not (duration > 0):
+        raise CaseError("--duration", "duration", f"must be positive, got {duration!r}")
+    axes: list[Axis] = []
+    seen: dict[str, str] = {}
+    for key, spec in vary.items():
+        table, leaf, fld = _field(key, source)
+        full = f"{table}.{leaf}"
+        if full in seen:
+            raise CaseError(source, full, "varied twice")
+        values, coords = parse_values(full, spec, source=source)
+        seen[full] = leaf
+        axes.append(Axis(full, leaf, fld.kind, tuple(values), tuple(coords)))
+    leaves = [a.dim for a in axes]
+    axes = [
+        Axis(a.key, a.key if leaves.count(a.dim) > 1 else a.dim, a.kind, a.values, a.coords) for a in axes
+    ]
+    if zip:
+        n = {len(a.values) for a in axes}
+        if len(n) != 1:
+            raise CaseError(source, None, "--zip needs lists of equal length: " + ", ".join(f"{a.key} has {len(a.values)}" for a in axes))
+        combos = [tuple((i,) * len(axes)) for i in range(n.pop())]
+        indices = [(c[0],) for c in combos]
+    else:
+        combos = list(itertools.product(*[range(len(a.values)) for a in axes]))
+        indices = combos
+    base_text = base.to_toml()
+    points = []
+    for idx, combo in zip_(indices, combos):
+        overrides = {a.key: a.values[i] for a, i in zip_(axes, combo)}
+        lit = {a.key: _override_literal(a.kind, a.values[i]) for a, i in zip_(axes, combo)}
+        try:
+            pc = loads_case(base_text, base.source, **lit)
+        except CaseError as exc:
+            points.append(Point(idx, overrides, None, error=str(exc)))
+            continue
+        h = point_hash(pc, kind, duration, point_fn)
+        points.append(Point(idx, overrides, pc, archive=f"{pc.name}-{h[:12]}.nc", hash=h))
+    return SweepPlan(base, axes, zip, points, kind, duration, point_fn, dict(vary))
+
+
+zip_ = zip  # the builtin, shadowed by the ``zip`` keyword inside plan_sweep/run_sweep
+
+
+# ----------------------------------------------------------------------------- one point (runs in the worker)
+
+
+def quasistatic_summary(ds: xr.Dataset) -> dict[str, Any]:
+    """Scalars of a quasi-static result: mean/max contact loads, cage speed, axial displacement."""
+    out: dict[str, Any] = {}
+    for side in ("inner", "outer"):
+        name = f"{side}_contact_load"
+        if name in ds:
+            q = np.asarray(ds[name].values, dtype=float)
+            out[f"mean_{name}"] = float(np.mean(q))
+            out[f"max_{name}"] = float(np.max(q))
+    for name in ("cage_speed", "inner_ring_axial_displacement"):
+        if name in ds and ds[name].ndim == 0:
+            out[name] = float(ds[name].values)
+    return out
+
+
+def dynamic_summary(ds: xr.Dataset) -> dict[str, Any]:
+    """Scalars of a dynamic run, by :func:`hsbearing.analysis.summary` (the analysis module's)."""
+    from hsbearing import analysis
+
+    s = analysis.summary(ds)
+    return {k: v for k, v in dict(s).items() if k != "status"}
+
+
+def _scalar(v: Any) -> Any:
+    if isinstance(v, np.generic):
+        v = v.item()
+    if isinstance(v, np.ndarray) and v.ndim == 0:
+        v = v.item()
+    if isinstance(v, (bool, np.bool_)):
+        return int(v)
+    if isinstance(v, (int, float, str)):
+        return v
+    if v is None:
+        return float("nan")
+    return str(v)
+
+
+def _compute_point(case: Case, kind: str, duration, point_fn) -> tuple[dict, xr.Dataset | None]:
+    """Compute one point; never raises for a point's own failure.  Returns (record, dataset)."""
+    t0 = time.perf_counter()
+    ds = None
+    rec: dict[str, Any] = {"status": STATUS_OK, "error": "", "summary": {}}
+    try:
+        if point_fn is not None:
+            ds = point_fn(case, duration)
+        elif kind == "quasistatic":
+            from hsbearing import quasi_static
+
+            ds = quasi_static(case)
+        else:
+            from hsbearing import simulate
+
+            ds = simulate(case, duration=duration)
+        rec["status"] = str(ds.attrs.get("status", STATUS_OK))
+    except CaseError as exc:
+        rec.update(status="invalid", error=str(exc))
+        ds = None
+    except SolverError as exc:
+        rec.update(status="failed", error=f"SolverError: {exc}")
+        ds = exc.partial if isinstance(exc.partial, xr.Dataset) else None
+        if ds is None:
+            ds = xr.Dataset(attrs=standard_attrs(case, status="failed"))
+        ds = ds.copy()
+        ds.attrs.setdefault("status", "failed")
+        ds.attrs["error"] = str(exc)
+    except Exception as exc:  # a bug or an unexpected failure: record it, the sweep goes on
+        tb = traceback.extract_tb(exc.__traceback__)
+        where = f" ({Path(tb[-1].filename).name}:{tb[-1].lineno})" if tb else ""
+        rec.update(status="error", error=f"{type(exc).__name__}: {exc}{where}")
+        ds = None
+    if ds is not None and rec["status"] != "invalid":
+        try:
+            summ = quasistatic_summary(ds) if kind == "quasistatic" else dynamic_summary(ds)
+            rec["summary"] = {k: _scalar(v) for k, v in summ.items()}
+        except Exception as exc:  # summary of a partial/odd dataset: keep the archive, note why
+            rec["summary_error"] = f"{type(exc).__name__}: {exc}"
+    rec["wall_time"] = time.perf_counter() - t0
+    return rec, ds
+
+
+def _worker_init() -> None:  # pragma: no cover - runs in the worker processes
+    """Die with the parent (Linux): an interrupted sweep leaves no orphan computing."""
+    with contextlib.suppress(Exception):
+        signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent handles Ctrl-C and shuts us down
+    if sys.platform.startswith("linux"):
+        with contextlib.suppress(Exception):
+            import ctypes
+
+            libc = ctypes.CDLL("libc.so.6", use_errno=True)
+            libc.prctl(1, signal.SIGTERM)  # PR_SET_PDEATHSIG
+            if os.getppid() == 1:
+                os._exit(1)
+
+
+# ----------------------------------------------------------------------------- archives
+
+
+def archive_is_complete(path: str | os.PathLike) -> bool:
+    """True if ``path`` opens as netCDF and carries the ``status`` attribute."""
+    try:
+        with xr.open_dataset(path, engine="netcdf4") as ds:
+            return "status" in ds.attrs
+    except Exception:
+        return False
+
+
+def _read_record(path: Path) -> dict | None:
+    try:
+        with xr.open_dataset(path, engine="netcdf4") as ds:
+            if "status" not in ds.attrs:
+                return None
+            rec = json.loads(ds.attrs["sweep_record"]) if "sweep_record" in ds.attrs else None
+            if rec is None:  # an archive written by something else: summarise it again
+                ds = ds.load()
+                rec = {"status": str(ds.attrs["status"]), "error": str(ds.attrs.get("error", "")), "wall_time": float("nan")}
+                kind = ds.attrs.get("sweep_kind", "run")
+                with contextlib.suppress(Exception):
+                    rec["summary"] = quasistatic_summary(ds) if kind == "quasistatic" else dynamic_summary(ds)
+            return rec
+    except Exception:
+        return None
+
+
+def _write_archive(ds: xr.Dataset, rec: dict, path: Path, plan: SweepPlan, point: Point) -> None:
+    ds = ds.copy()
+    ds.attrs["sweep_kind"] = plan.kind
+    ds.attrs["sweep_duration"] = "" if plan.duration is None else plan.duration
+    ds.attrs["sweep_point_hash"] = point.hash
+    ds.attrs["sweep_overrides"] = json.dumps(point.overrides)
+    if "case_toml" not in ds.attrs and point.case is not None:
+        ds.attrs["case_toml"] = point.case.to_toml()
+    ds.attrs["sweep_record"] = json.dumps({k: v for k, v in rec.items()}, default=str)
+    ds.attrs.setdefault("status", rec["status"])
+    write_netcdf(ds, path)
+
+
+def _clean_temporaries(archive_dir: Path, names: Iterable[str]) -> list[Path]:
+    """Delete leftover ``.<name>.*.tmp`` files of this sweep's archives (interrupted writes)."""
+    removed = []
+    for name in set(names):
+        for p in archive_dir.glob(f".{name}.*.tmp"):
+            with contextlib.suppress(FileNotFoundError):
+                p.unlink()
+                removed.append(p)
+    return removed
+
+
+@contextlib.contextmanager
+def _dir_lock(directory: Path):
+    """Exclusive advisory lock on DIR (released by the OS if the process dies)."""
+    directory.mkdir(parents=True, exist_ok=True)
+    try:
+        import fcntl
+    except ImportError:  # pragma: no cover - not POSIX: no lock
+        yield
+        return
+    fh = open(directory / LOCK_NAME, "a+")
+    try:
+        try:
+            fcntl.flock(fh, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except OSError:
+            raise CaseError(str(directory), None, "another hsbearing sweep is running in this directory") from None
+        yield
+    finally:
+        fh.close()
+
+
+# ----------------------------------------------------------------------------- execution backends
+
+
+class _Serial:
+    """jobs=1: compute in the calling process."""
+
+    name = "serial"
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        return False
+
+    def run(self, tasks, on_done):
+        for key, args in tasks:
+            on_done(key, *_compute_point(*args))
+
+
+class _LocalPool:
+    """Local worker processes; a crashed worker does not take the sweep down."""
+
+    name = "processes"
+
+    def __init__(self, jobs: int):
+        self.jobs = jobs
+        self.ctx = multiprocessing.get_context("spawn")
+        self.ex: ProcessPoolExecutor | None = None
+
+    def _new(self, n):
+        return ProcessPoolExecutor(max_workers=n, mp_context=self.ctx, initializer=_worker_init)
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, exc_type, *exc):
+        if self.ex is not None:
+            if exc_type is not None:  # interrupted: do not wait for running points
+                _terminate(self.ex)
+            self.ex.shutdown(wait=exc_type is None, cancel_futures=True)
+            self.ex = None
+        return False
+
+    def run(self, tasks, on_done):
+        tasks = list(tasks)
+        if not tasks:
+            return
+        suspects = self._run_batch(tasks, on_done, min(self.jobs, len(tasks)))
+        # Points that were in flight when a worker died: one at a time, to find the culprit.
+        for key, args in suspects:
+            again = self._run_batch([(key, args)], on_done, 1)
+            for k, _ in again:
+                on_done(k, {"status": "crashed", "error": "worker process died while computing this point "
+                            "(segfault, out of memory or killed)", "summary": {}, "wall_time": float("nan")}, None)
+
+    def _run_batch(self, tasks, on_done, n) -> list:
+        pending = list(tasks)
+        suspects: list = []
+        self.ex = self._new(n)
+        futs = {}
+        try:
+            while pending or futs:
+                while pending and len(futs) < 2 * n:  # keep the queue short: cancellable, fair
+                    key, args = pending.pop(0)
+                    futs[self.ex.submit(_compute_point, *args)] = (key, args)
+                done, _ = wait(list(futs), return_when=FIRST_COMPLETED)
+                broken = False
+                for f in done:
+                    key, args = futs.pop(f)
+                    try:
+                        rec, ds = f.result()
+                    except BrokenProcessPool:
+                        suspects.append((key, args))
+                        broken = True
+                        continue
+                    on_done(key, rec, ds)
+                if broken:
+                    # every other in-flight point died with the pool: suspects too
+                    for f, (key, args) in futs.items():
+                        suspects.append((key, args))
+                    futs.clear()
+                    self.ex.shutdown(wait=True, cancel_futures=True)
+                    self.ex = self._new(n)
+        except BaseException:
+            _terminate(self.ex)
+            self.ex.shutdown(wait=False, cancel_futures=True)
+            self.ex = None
+            raise
+        self.ex.shutdown(wait=True)
+        self.ex = None
+        return suspects
+
+
+def _terminate(ex: ProcessPoolExecutor) -> None:
+    fn = getattr(ex, "terminate_workers", None)  # Python >= 3.14
+    if fn is not None:
+        with contextlib.suppress(Exception):
+            fn()
+        return
+    for p in list((getattr(ex, "_processes", None) or {}).values()):
+        with contextlib.suppress(Exception):
+            p.terminate()
+
+
+class _Dask:
+    """Submit the points to an existing dask.distributed scheduler."""
+
+    name = "dask"
+
+    def __init__(self, address: str, timeout: float = 30.0):
+        self.address = address
+        self.timeout = timeout
+        self.client = None
+
+    def __enter__(self):
+        try:
+            from distributed import Client
+        except ImportError:  # pragma: no cover - dask[distributed] is a dependency
+            raise CaseError("--scheduler", None, "dask.distributed is not installed") from None
+        try:
+            self.client = Client(self.address, timeout=self.timeout, set_as_default=False)
+        except (OSError, TimeoutError) as exc:
+            raise CaseError("--scheduler", None, f"cannot connect to the dask scheduler at {self.address} ({exc})") from None
+        return self
+
+    def __exit__(self, exc_type, *exc):
+        if self.client is not None:
+            self.client.close()
+            self.client = None
+        return False
+
+    def run(self, tasks, on_done):
+        import uuid
+
+        from distributed import as_completed
+
+        futs = {}
+        tag = uuid.uuid4().hex[:8]
+        for key, args in tasks:
+            point = args[0]
+            name = f"hsbearing-point-{point.name if point is not None else 'x'}-{key}-{tag}"
+            futs[self.client.submit(_compute_point, *args, key=name, pure=False)] = key
+        try:
+            with self.client.as_current():
+                finished = as_completed(list(futs))
+            for f in finished:
+                key = futs[f]
+                try:
+                    rec, ds = f.result()
+                except Exception as exc:
+                    status = "crashed" if type(exc).__name__ == "KilledWorker" else "error"
+                    rec, ds = {"status": status, "error": f"{type(exc).__name__}: {exc}", "summary": {},
+                               "wall_time": float("nan")}, None
+                on_done(key, rec, ds)
+        except BaseException:
+            for f in futs:
+                with contextlib.suppress(Exception):
+                    f.cancel()
+            raise
+
+
+def _backend(jobs: int | None, scheduler: str | None):
+    if scheduler:
+        return _Dask(scheduler)
+    jobs = (os.cpu_count() or 1) if jobs is None else int(jobs)
+    if jobs < 1:
+        raise CaseError("-j", None, f"jobs must be >= 1, got {jobs}")
+    return _Serial() if jobs == 1 else _LocalPool(jobs)
+
+
+# ----------------------------------------------------------------------------- execute + assemble
+
+
+def execute(
+    plans: Sequence[SweepPlan],
+    archive_dir: str | os.PathLike,
+    *,
+    jobs: int | None = None,
+    scheduler: str | None = None,
+    progress: bool = True,
+    retry_failed: bool = False,
+) -> list[list[dict]]:
+    """Compute every point of ``plans`` (deduplicated by archive name) -> one record list per plan.
+
+    A record: ``status``, ``error``, ``wall_time``, ``archive`` (file name or
+    ''), ``resumed`` (bool) and ``summary`` (dict of scalars).
+    """
+    archive_dir = Path(archive_dir)
+    archive_dir.mkdir(parents=True, exist_ok=True)
+    results: dict[str, dict] = {}  # archive name -> record
+    todo: dict[str, tuple] = {}  # archive name -> (plan, point)
+    n_total = sum(len(p.points) for p in plans)
+    names = [pt.archive for plan in plans for pt in plan.points if pt.archive]
+    _clean_temporaries(archive_dir, names)
+    n_resumed = 0
+    for plan in plans:
+        for pt in plan.points:
+            if pt.case is None or pt.archive in results or pt.archive in todo:
+                continue
+            path = archive_dir / pt.archive
+            rec = _read_record(path) if path.exists() else None
+            if rec is not None and not (retry_failed and rec.get("status") != STATUS_OK):
+                rec = dict(rec, archive=pt.archive, resumed=True)
+                results[pt.archive] = rec
+                continue
+            todo[pt.archive] = (plan, pt)
+    n_resumed = sum(1 for plan in plans for pt in plan.points if pt.archive in results)
+    n_invalid = sum(1 for plan in plans for pt in plan.points if pt.case is None)
+
+    bar = None
+    if progress:
+        from tqdm.auto import tqdm
+
+        bar = tqdm(total=n_total, initial=n_resumed + n_invalid, unit="pt", desc="sweep", file=sys.stderr,
+                   dynamic_ncols=True, smoothing=0.1)
+        if n_resumed:
+            bar.set_postfix_str(f"{n_resumed} resumed")
+
+    def on_done(name, rec, ds):
+        plan, pt = todo[name]
+        rec = dict(rec)
+        rec["resumed"] = False
+        if ds is not None and rec["status"] != "invalid":
+            _write_archive(ds, rec, archive_dir / name, plan, pt)
+            rec["archive"] = name
+        else:
+            rec["archive"] = ""
+        results[name] = rec
+        if bar is not None:
+            dup = sum(1 for p in plans for q in p.points if q.archive == name)
+            bar.update(dup)
+
+    tasks = [(name, (pt.case, plan.kind, plan.duration, plan.point_fn)) for name, (plan, pt) in todo.items()]
+    try:
+        with _backend(jobs, scheduler) as backend:
+            backend.run(tasks, on_done)
+    finally:
+        if bar is not None:
+            bar.close()
+    out = []
+    for plan in plans:
+        recs = []
+        for pt in plan.points:
+            if pt.case is None:
+                recs.append({"status": "invalid", "error": pt.error, "wall_time": 0.0, "archive": "",
+                             "resumed": False, "summary": {}})
+            else:
+                recs.append(results[pt.archive])
+        out.append(recs)
+    return out
+
+
+def _summary_attrs(name: str) -> dict:
+    if name in VARIABLES:
+        v = VARIABLES[name]
+        return {"units": v.units, "long_name": v.long_name}
+    for prefix, what in (("mean_", "mean of "), ("max_", "maximum of "), ("rms_", "RMS of ")):
+        if name.startswith(prefix) and name[len(prefix):] in VARIABLES:
+            v = VARIABLES[name[len(prefix):]]
+            return {"units": v.units, "long_name": what + v.long_name}
+    return {}
+
+
+def assemble(plan: SweepPlan, records: Sequence[dict], *, archive_prefix: str = "", attrs: Mapping | None = None) -> xr.Dataset:
+    """The sweep Dataset: a dim per varied key (or ``point``), summaries + record variables."""
+    shape, dims = plan.shape, plan.dims
+    names: list[str] = []
+    for r in records:
+        for k in r.get("summary", {}):
+            if k not in names and k not in _RECORD_VARS:
+                names.append(k)
+    data_vars = {}
+    for name in names:
+        vals = [r.get("summary", {}).get(name) for r in records]
+        is_str = any(isinstance(v, str) for v in vals)
+        if is_str:
+            arr = np.array(["" if v is None or (isinstance(v, float) and math.isnan(v)) else str(v) for v in vals], dtype=object)
+        else:
+            arr = np.array([np.nan if v is None else float(v) for v in vals], dtype=float)
+        data_vars[name] = _grid(arr, plan, shape, dims, _summary_attrs(name))
+    for name in _RECORD_VARS:
+        if name == "wall_time":
+            arr = np.array([float(r.get("wall_time", np.nan)) for r in records])
+        elif name == "resumed":
+            arr = np.array([int(bool(r.get("resumed", False))) for r in records], dtype=np.int8)
+        elif name == "archive":
+            arr = np.array([(archive_prefix + r["archive"]) if r.get("archive") else "" for r in records], dtype=object)
+        else:
+            arr = np.array([str(r.get(name, "")) for r in records], dtype=object)
+        data_vars[name] = _grid(arr, plan, shape, dims, _summary_attrs(name))
+    ds = xr.Dataset(data_vars)
+    for a in plan.axes:
+        fld = SCHEMA[a.key.rpartition(".")[0]][a.key.rpartition(".")[2]]
+        cattrs = {"long_name": fld.doc, "case_key": a.key}
+        if a.kind in DIMENSIONS:
+            cattrs["units"] = DIMENSIONS[a.kind]
+        coord = np.array(a.coords, dtype=object if isinstance(a.coords[0], str) else None)
+        labels = np.array([str(v) for v in a.values], dtype=object)
+        if plan.zipped:
+            ds = ds.assign_coords({a.dim: xr.Variable(("point",), coord, attrs=cattrs)})
+            ds = ds.assign_coords({f"{a.dim}_label": xr.Variable(("point",), labels, attrs={"long_name": f"{a.key} as given"})})
+        else:
+            ds = ds.assign_coords({a.dim: xr.Variable((a.dim,), coord, attrs=cattrs)})
+            ds = ds.assign_coords({f"{a.dim}_label": xr.Variable((a.dim,), labels, attrs={"long_name": f"{a.key} as given"})})
+    if plan.zipped:
+        ds = ds.assign_coords(point=np.arange(len(plan.points)))
+    statuses = [r.get("status") for r in records]
+    n_bad = sum(1 for s in statuses if s != STATUS_OK)
+    status = STATUS_OK if n_bad == 0 else f"partial: {n_bad} of {len(records)} points not ok"
+    ds.attrs.update(standard_attrs(plan.base, status=status))
+    ds.attrs.update(
+        {
+            "title": "hsbearing sweep",
+            "sweep_kind": plan.kind,
+            "sweep_duration": "" if plan.duration is None else plan.duration,
+            "sweep_mode": "zip" if plan.zipped else "product",
+            "sweep_vary": json.dumps({a.key: list(a.values) for a in plan.axes}),
+            "sweep_points": len(records),
+            "sweep_points_ok": len(records) - n_bad,
+            "sweep_points_resumed": sum(1 for r in records if r.get("resumed")),
+            "sweep_point_fn": _fn_name(plan.point_fn),
+        }
+    )
+    ds.attrs.update(dict(attrs or {}))
+    return ds
+
+
+def _grid(flat: np.ndarray, plan: SweepPlan, shape, dims, attrs) -> xr.Variable:
+    return xr.Variable(dims, flat.reshape(shape), attrs=attrs)
+
+
+def run_sweep(
+    case,
+    vary: Mapping[str, Any],
+    *,
+    zip: bool = False,  # noqa: A002 - the documented keyword
+    jobs: int | None = None,
+    scheduler: str | None = None,
+    out_dir: str | os.PathLike,
+    kind: str = "run",
+    duration=None,
+    progress: bool = True,
+    point_fn: Callable | None = None,
+    retry_failed: bool = False,
+) -> xr.Dataset:
+    """Run a sweep and return (and write to ``out_dir/sweep.nc``) its Dataset.
+
+    Parameters
+    ----------
+    case : Case, bundled case name or path.
+    vary : ``{key: values}``; key as accepted by :func:`hsbearing.case.resolve_key`
+        (``"operating.axial_load"``, ``"axial_load"``, ``"oil"``); values a list
+        of unit strings / numbers / names or a CLI string ``"100,500,1000N"``.
+    zip : vary the keys together (equal-length lists; one dim ``point``)
+        instead of the Cartesian product (one dim per key).
+    jobs : local worker processes (default ``os.cpu_count()``; 1 = in-process).
+    scheduler : ``"tcp://host:port"`` of a dask.distributed scheduler (overrides ``jobs``).
+    out_dir : directory of the point archives and ``sweep.nc``.
+    kind : ``"run"`` (dynamics, summary by :func:`hsbearing.analysis.summary`)
+        or ``"quasistatic"``.
+    duration : simulated time [s] or unit string (kind "run"); None = the case's.
+    progress : tqdm progress bar on stderr.
+    point_fn : ``f(case, duration) -> xr.Dataset`` replacing the computation
+        (module-level, picklable); part of the archive hash.
+    retry_failed : recompute points whose archive records a status other than ok.
+    """
+    out_dir = Path(out_dir)
+    plan = plan_sweep(case, vary, zip=zip, kind=kind, duration=duration, point_fn=point_fn)
+    t0 = time.perf_counter()
+    with _dir_lock(out_dir):
+        (records,) = execute([plan], out_dir, jobs=jobs, scheduler=scheduler, progress=progress, retry_failed=retry_failed)
+        ds = assemble(plan, records, attrs={"sweep_wall_time": time.perf_counter() - t0,
+                                            "sweep_backend": f"dask {scheduler}" if scheduler else f"jobs={jobs or os.cpu_count()}"})
+        write_netcdf(ds, out_dir / "sweep.nc")
+    return ds
+
+
+# ----------------------------------------------------------------------------- CLI
+
+
+def _parse_vary(items: Sequence[str]) -> dict[str, str]:
+    out: dict[str, str] = {}
+    for item in items or []:
+        if "=" not in item:
+            raise CaseError("--vary", item, "expected KEY=V1,V2,..., e.g. --vary axial_load=100,500,1000N")
+        k, _, v = item.partition("=")
+        k = k.strip()
+        if k in out:
+            raise CaseError("--vary", k, "varied twice")
+        out[k] = v.strip()
+    return out
+
+
+def print_table(ds: xr.Dataset, file=None) -> None:
+    """One line per point: varied values, status, a few summary values, error."""
+    file = file or sys.stdout
+    keys = [v for v in ("mean_cage_slip_ratio", "whirl_amplitude", "classification", "mean_inner_contact_load",
+                        "mean_outer_contact_load", "cage_speed") if v in ds]
+    dims = ds["status"].dims
+    labels = [c for c in ds.coords if str(c).endswith("_label")]
+    for idx in np.ndindex(*ds["status"].shape):
+        pt = ds.isel(dict(zip_(dims, idx)))
+        parts = [f"{str(c)[:-6]}={pt[c].values.item()}" for c in labels]
+        parts.append(f"status={pt['status'].values.item()}")
+        for k in keys:
+            v = pt[k].values.item()
+            parts.append(f"{k}={v:.4g}" if isinstance(v, float) else f"{k}={v}")
+        if pt["error"].values.item():
+            parts.append(f"error={pt['error'].values.item()}")
+        print("  ".join(parts), file=file)
+
+
+def cli_main(args) -> int:
+    """``hsbearing sweep CASE --vary KEY=V1,V2 [--zip] [-j N] [--scheduler ADDR] [--kind] [--duration] -o DIR``.
+
+    Exit code 0 when every point is ok, 1 when some point is not (its status
+    and error are in ``DIR/sweep.nc``; the other points are kept), 2 on bad
+    input (nothing computed).
+    """
+    from hsbearing.case import DEFAULT_CASE
+
+    sets = {}
+    for item in getattr(args, "set", None) or []:
+        if "=" not in item:
+            raise CaseError("--set", item, "expected key=value")
+        k, _, v = item.partition("=")
+        sets[k.strip()] = v.strip()
+    case = load_case(args.case or DEFAULT_CASE, **sets)
+    vary = _parse_vary(args.vary)
+    out = Path(args.output)
+    if out.exists() and not out.is_dir():
+        raise CaseError(str(out), None, "output must be a directory")
+    ds = run_sweep(case, vary, zip=args.zip, jobs=args.jobs, scheduler=args.scheduler, out_dir=out,
+                   kind=args.kind, duration=args.duration, progress=True)
+    print_table(ds)
+    n, n_ok = ds.attrs["sweep_points"], ds.attrs["sweep_points_ok"]
+    print(f"{n_ok} of {n} points ok ({ds.attrs['sweep_points_resumed']} resumed); wall time "
+          f"{ds.attrs['sweep_wall_time']:.1f} s; sweep: {out / 'sweep.nc'}")
+    return 0 if n_ok == n else 1

@@ -1,0 +1,347 @@
+"""Sweeps: product/zip grids, combined dataset, local processes vs dask LocalCluster, resume,
+failing and crashing points, interrupted sweeps (issue 5).
+
+The point computations here are small module-level functions (``point_fn``)
+so the tests exercise the sweep machinery, not the physics: they are
+picklable by reference, so spawned workers and dask workers import this module.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+import xarray as xr
+
+import hsbearing
+from hsbearing import sweeps
+from hsbearing.case import CaseError
+from hsbearing.errors import SolverError
+from hsbearing.results import make_dataset, open_run, standard_attrs
+
+HERE = Path(__file__).resolve().parent
+REPO = HERE.parent
+
+
+# ----------------------------------------------------------------------------- point functions
+
+
+def fake_qs(case, duration):
+    """A cheap, deterministic stand-in for a quasi-static result: Q = Fa / (Z sin alpha0) + Fr-dependent term."""
+    Z = case.bearing.ball_count
+    Fa, Fr = case.operating.axial_load, case.operating.radial_load
+    psi = 2 * np.pi * np.arange(Z) / Z
+    qi = Fa / (Z * np.sin(case.bearing.contact_angle)) + 2.0 * Fr / Z * np.cos(psi)
+    qo = qi * 1.1 + case.lubricant.temperature * 0.0 + (0.5 if case.lubricant.oil == "4050" else 0.0)
+    _log_call(case)
+    return make_dataset(
+        {"inner_contact_load": qi, "outer_contact_load": qo, "cage_speed": 600.0 + case.operating.axial_load / 1000.0,
+         "inner_ring_axial_displacement": 1e-8 * Fa},
+        coords={"ball": np.arange(Z)},
+        attrs=standard_attrs(case, status="ok"),
+    )
+
+
+def _log_call(case):
+    log = os.environ.get("HSB_TEST_CALL_LOG")
+    if log:
+        with open(log, "a") as fh:
+            fh.write(f"{case.operating.axial_load} {case.lubricant.oil} {os.getpid()}\n")
+
+
+def failing_qs(case, duration):
+    """Fails numerically above 2 kN (with a partial dataset), like a solver that does not converge."""
+    ds = fake_qs(case, duration)
+    if case.operating.axial_load > 2000.0:
+        ds.attrs["status"] = "failed: residual 3e-2 N after 50 iterations"
+        raise SolverError("did not converge (test)", partial=ds)
+    if case.operating.axial_load == 1500.0:
+        raise ZeroDivisionError("a bug in a point (test)")
+    return ds
+
+
+def crashing_qs(case, duration):
+    """Kills its own worker process at 500 N (a segfault stand-in)."""
+    if case.operating.axial_load == 500.0:
+        os.kill(os.getpid(), signal.SIGKILL)
+    return fake_qs(case, duration)
+
+
+def sleepy_qs(case, duration):
+    time.sleep(0.4)
+    return fake_qs(case, duration)
+
+
+# ----------------------------------------------------------------------------- values
+
+
+@pytest.mark.parametrize(
+    "key, spec, values, coords",
+    [
+        ("axial_load", "100,500,1000N", ["100 N", "500 N", "1000 N"], [100.0, 500.0, 1000.0]),
+        ("operating.axial_load", "1,2.5kN", ["1 kN", "2.5 kN"], [1000.0, 2500.0]),
+        ("axial_load", "500 N, 1 kN", ["500 N", "1 kN"], [500.0, 1000.0]),
+        ("axial_load", ["100 N", "0.2 kN"], ["100 N", "0.2 kN"], [100.0, 200.0]),
+        ("oil", "4109,4106,4050", ["4109", "4106", "4050"], ["4109", "4106", "4050"]),
+        ("temperature", "27,130degC", ["27 degC", "130 degC"], [300.15, 403.15]),
+        ("inner_conformity", "0.52,0.53", [0.52, 0.53], [0.52, 0.53]),
+        ("ball_count", "11,12", [11, 12], [11, 12]),
+    ],
+)
+def test_parse_values(key, spec, values, coords):
+    v, c = sweeps.parse_values(key, spec)
+    assert v == values
+    assert c == pytest.approx(coords) if isinstance(coords[0], float) else c == coords
+
+
+@pytest.mark.parametrize(
+    "key, spec, msg",
+    [
+        ("axial_load", "100,500", "needs a unit"),
+        ("axial_load", "100,500mm", "not a force"),
+        ("axial_lod", "100N", "unknown key"),
+        ("axial_load", "100N,,200N", "empty item"),
+        ("axial_load", "100,100N", "repeated"),
+        ("density", "1,2kg/m^3", "ambiguous"),
+    ],
+)
+def test_parse_values_errors(key, spec, msg):
+    with pytest.raises(CaseError, match=msg):
+        sweeps.parse_values(key, spec)
+
+
+def test_point_hash_depends_on_full_case_kind_and_duration():
+    c1 = hsbearing.load_case("zhang2016", axial_load="1 kN")
+    c2 = hsbearing.load_case("zhang2016", axial_load="2 kN")
+    h = sweeps.point_hash
+    assert h(c1, "run", 0.01) == h(hsbearing.load_case("zhang2016", axial_load="1 kN"), "run", 0.01)
+    assert len({h(c1, "run", 0.01), h(c2, "run", 0.01), h(c1, "run", 0.02), h(c1, "quasistatic", 0.01),
+                h(c1, "run", 0.01, fake_qs)}) == 5
+
+
+# ----------------------------------------------------------------------------- product / zip
+
+
+def _qs_sweep(tmp_path, vary, **kw):
+    kw.setdefault("jobs", 1)
+    kw.setdefault("progress", False)
+    return hsbearing.sweep("zhang2016", vary, out_dir=tmp_path, kind="quasistatic", point_fn=kw.pop("fn", fake_qs), **kw)
+
+
+def test_product_sweep_dims_values_and_archives(tmp_path):
+    ds = _qs_sweep(tmp_path, {"axial_load": "100,500,1000N", "oil": "4109,4050"})
+    assert ds["status"].dims == ("axial_load", "oil")
+    assert ds.sizes == {"axial_load": 3, "oil": 2}
+    assert list(ds["axial_load"].values) == [100.0, 500.0, 1000.0]
+    assert ds["axial_load"].attrs["units"] == "N" and ds["axial_load"].attrs["case_key"] == "operating.axial_load"
+    assert list(ds["oil"].values) == ["4109", "4050"]
+    assert list(ds["axial_load_label"].values) == ["100 N", "500 N", "1000 N"]
+    assert (ds["status"] == "ok").all()
+    # the values are those of each point's own case: Q = Fa / (Z sin 25 deg)
+    expect = np.array([100.0, 500.0, 1000.0]) / (11 * math.sin(math.radians(25)))
+    np.testing.assert_allclose(ds["mean_inner_contact_load"].sel(oil="4109"), expect, rtol=1e-12)
+    np.testing.assert_allclose(ds["mean_outer_contact_load"].sel(oil="4050") - ds["mean_outer_contact_load"].sel(oil="4109"), 0.5, rtol=1e-9)
+    assert ds["mean_inner_contact_load"].attrs["units"] == "N"
+    assert ds["wall_time"].attrs["units"] == "s" and (ds["wall_time"] >= 0).all()
+    # every point has its own archive, named by the hash, holding that point's case
+    names = set(ds["archive"].values.ravel())
+    assert len(names) == 6 and all((tmp_path / n).is_file() for n in names)
+    one = open_run(tmp_path / str(ds["archive"].sel(axial_load=500.0, oil="4050").item()))
+    case = hsbearing.case.loads_case(one.attrs["case_toml"])
+    assert case.operating.axial_load == 500.0 and case.lubricant.oil == "4050"
+    # sweep.nc on disk is the returned dataset
+    disk = open_run(tmp_path / "sweep.nc")
+    xr.testing.assert_identical(disk[["mean_inner_contact_load", "status"]], ds[["mean_inner_contact_load", "status"]])
+    assert disk.attrs["sweep_mode"] == "product" and disk.attrs["sweep_points"] == 6
+
+
+def test_zip_sweep_one_point_dim(tmp_path):
+    ds = _qs_sweep(tmp_path, {"axial_load": "100,500,1000N", "radial_load": "0,50,200N"}, zip=True)
+    assert ds["status"].dims == ("point",) and ds.sizes["point"] == 3
+    assert list(ds["axial_load"].values) == [100.0, 500.0, 1000.0]
+    assert list(ds["radial_load"].values) == [0.0, 50.0, 200.0]
+    assert ds.attrs["sweep_mode"] == "zip"
+    assert np.isclose(ds["max_inner_contact_load"].values[2] - ds["mean_inner_contact_load"].values[2], 2 * 200.0 / 11)
+    with pytest.raises(CaseError, match="equal length"):
+        _qs_sweep(tmp_path, {"axial_load": "100,500N", "oil": "4109,4106,4050"}, zip=True)
+
+
+def test_same_leaf_name_uses_full_key(tmp_path):
+    ds = _qs_sweep(tmp_path, {"materials.ball.density": ["7800 kg/m^3", "7900 kg/m^3"],
+                              "materials.races.density": ["7800 kg/m^3", "7900 kg/m^3"]})
+    assert ds["status"].dims == ("materials.ball.density", "materials.races.density")
+
+
+# ----------------------------------------------------------------------------- resume
+
+
+def test_resume_does_no_work(tmp_path, monkeypatch):
+    log = tmp_path / "calls.log"
+    monkeypatch.setenv("HSB_TEST_CALL_LOG", str(log))
+    out = tmp_path / "out"
+    first = _qs_sweep(out, {"axial_load": "100,500,1000N", "oil": "4109,4106"}, jobs=2)
+    assert len(log.read_text().splitlines()) == 6
+    mtimes = {p.name: p.stat().st_mtime_ns for p in out.glob("zhang2016-*.nc")}
+    assert len(mtimes) == 6
+    second = _qs_sweep(out, {"axial_load": "100,500,1000N", "oil": "4109,4106"}, jobs=2)
+    assert len(log.read_text().splitlines()) == 6  # no point computed again
+    assert {p.name: p.stat().st_mtime_ns for p in out.glob("zhang2016-*.nc")} == mtimes
+    assert (second["resumed"] == 1).all() and (first["resumed"] == 0).all()
+    assert second.attrs["sweep_points_resumed"] == 6
+    for v in ("mean_inner_contact_load", "status", "archive", "wall_time"):
+        xr.testing.assert_equal(first[v], second[v])
+    # an extended sweep computes only the new points
+    third = _qs_sweep(out, {"axial_load": "100,500,1000,2000N", "oil": "4109,4106"}, jobs=1)
+    assert len(log.read_text().splitlines()) == 8
+    assert int(third["resumed"].sum()) == 6
+
+
+def test_incomplete_archive_is_recomputed_and_temporaries_cleaned(tmp_path, monkeypatch):
+    log = tmp_path / "calls.log"
+    monkeypatch.setenv("HSB_TEST_CALL_LOG", str(log))
+    ds = _qs_sweep(tmp_path, {"axial_load": "100,500N"})
+    victim = tmp_path / str(ds["archive"].values[0])
+    victim.write_bytes(victim.read_bytes()[:200])  # truncated: not a complete archive
+    stale = tmp_path / f".{ds['archive'].values[1]}.abc123.tmp"
+    stale.write_bytes(b"half a file")
+    unrelated = tmp_path / ".someone-else.nc.xyz.tmp"
+    unrelated.write_bytes(b"")
+    again = _qs_sweep(tmp_path, {"axial_load": "100,500N"})
+    assert list(again["resumed"].values) == [0, 1]
+    assert len(log.read_text().splitlines()) == 3
+    assert sweeps.archive_is_complete(victim)
+    assert not stale.exists() and unrelated.exists()  # only this sweep's temporaries are removed
+
+
+# ----------------------------------------------------------------------------- failures
+
+
+def test_failing_points_are_recorded_and_the_rest_go_on(tmp_path):
+    vary = {"axial_load": "500,1500,2500N", "inner_conformity": "0.49,0.52"}
+    ds = _qs_sweep(tmp_path, vary, fn=failing_qs, jobs=2)
+    st = ds["status"]
+    # bad override (conformity <= 0.5): invalid, nothing computed, no archive
+    assert (st.sel(inner_conformity=0.49) == "invalid").all()
+    assert all("inner_conformity" in e and "0.5" in e for e in ds["error"].sel(inner_conformity=0.49).values)
+    assert (ds["archive"].sel(inner_conformity=0.49) == "").all()
+    good = ds.sel(inner_conformity=0.52)
+    assert list(good["status"].values) == ["ok", "error", "failed"]
+    assert "ZeroDivisionError" in good["error"].values[1]
+    assert "did not converge" in good["error"].values[2]
+    assert np.isfinite(good["mean_inner_contact_load"].values[[0, 2]]).all()  # partial result summarised
+    assert np.isnan(good["mean_inner_contact_load"].values[1])
+    part = open_run(tmp_path / str(good["archive"].values[2]))
+    assert part.attrs["status"].startswith("failed") and "did not converge" in part.attrs["error"]
+    assert good["archive"].values[1] == ""  # a bug is not archived: retried next time
+    assert ds.attrs["status"].startswith("partial: 5 of 6")
+
+
+def test_crashed_worker_is_isolated(tmp_path):
+    ds = _qs_sweep(tmp_path, {"axial_load": "100,500,1000,2000N"}, fn=crashing_qs, jobs=2)
+    assert list(ds["status"].values) == ["ok", "crashed", "ok", "ok"]
+    assert "worker process died" in ds["error"].values[1]
+    assert sorted(p.name for p in tmp_path.iterdir() if p.name.startswith(".") and p.name.endswith(".tmp")) == []
+
+
+def test_cli_sweep_exit_codes(tmp_path):
+    from hsbearing import cli
+
+    assert cli.main(["sweep", "zhang2016", "--vary", "axial_load=100,500", "-o", str(tmp_path / "a")]) == 2
+    assert not (tmp_path / "a" / "sweep.nc").exists()
+    assert cli.main(["sweep", "zhang2016", "--vary", "oil=4109", "--kind", "quasistatic", "--duration", "-1 s",
+                     "-o", str(tmp_path / "b")]) == 2
+
+
+# ----------------------------------------------------------------------------- local processes vs dask
+
+
+def test_local_processes_equal_serial(tmp_path):
+    vary = {"axial_load": "100,700N", "temperature": "27,130degC"}
+    a = _qs_sweep(tmp_path / "a", vary, jobs=1)
+    b = _qs_sweep(tmp_path / "b", vary, jobs=2)
+    for v in ("mean_inner_contact_load", "mean_outer_contact_load", "cage_speed", "status", "archive"):
+        xr.testing.assert_identical(a[v], b[v])
+
+
+def test_dask_local_cluster_equals_local(tmp_path):
+    distributed = pytest.importorskip("distributed")
+    vary = {"axial_load": "100,500,1000N", "oil": "4109,4050"}
+    local = _qs_sweep(tmp_path / "local", vary, jobs=2)
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=True, host="127.0.0.1",
+                                  dashboard_address=None) as cluster:
+        remote = _qs_sweep(tmp_path / "dask", vary, scheduler=cluster.scheduler_address)
+        assert remote.attrs["sweep_backend"].startswith("dask tcp://127.0.0.1")
+    for v in ("mean_inner_contact_load", "mean_outer_contact_load", "max_inner_contact_load", "cage_speed",
+              "inner_ring_axial_displacement", "status", "archive"):
+        xr.testing.assert_identical(local[v], remote[v])
+    # the point archives hold the same data (attrs differ: creation time, wall time)
+    for name in local["archive"].values.ravel():
+        xr.testing.assert_equal(open_run(tmp_path / "local" / name)[["inner_contact_load"]],
+                                    open_run(tmp_path / "dask" / name)[["inner_contact_load"]])
+
+
+def test_unreachable_scheduler_is_bad_input(tmp_path):
+    with pytest.raises(CaseError, match="cannot connect"):
+        sweeps._Dask("tcp://127.0.0.1:9", timeout=1.0).__enter__()
+
+
+# ----------------------------------------------------------------------------- interruption
+
+
+_DRIVER = textwrap.dedent(
+    """
+    import sys
+    sys.path.insert(0, {tests!r})
+    import hsbearing, test_sweeps
+    hsbearing.sweep("zhang2016", {{"axial_load": "100,200,300,400,500,600,700,800,900,1000N"}},
+                    out_dir={out!r}, kind="quasistatic", point_fn=test_sweeps.sleepy_qs, jobs=2, progress=False)
+    """
+)
+
+
+@pytest.mark.parametrize("sig", [signal.SIGKILL, signal.SIGINT])
+def test_interrupted_sweep_leaves_only_complete_archives(tmp_path, sig):
+    out = tmp_path / "out"
+    proc = subprocess.Popen([sys.executable, "-c", _DRIVER.format(tests=str(HERE), out=str(out))],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    try:
+        deadline = time.time() + 60
+        while time.time() < deadline and len(list(out.glob("zhang2016-*.nc"))) < 2:
+            time.sleep(0.05)
+        assert len(list(out.glob("zhang2016-*.nc"))) >= 2, proc.communicate(timeout=5)
+        proc.send_signal(sig)
+        proc.wait(timeout=30)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+    time.sleep(0.5)  # orphaned workers (if any) would write now: they must not
+    done = sorted(out.glob("zhang2016-*.nc"))
+    assert 2 <= len(done) < 10 and not (out / "sweep.nc").exists()
+    for p in done:
+        assert sweeps.archive_is_complete(p), p
+    leftovers = [p for p in out.iterdir() if p.name.endswith(".tmp")]
+    # a kill exactly during a write could leave one hidden temporary; resume removes it
+    assert all(p.name.startswith(".") for p in leftovers)
+    if sig == signal.SIGINT:
+        assert proc.returncode != 0 and not leftovers
+    # resume finishes the rest, recomputing none of the completed points
+    ds = _qs_sweep(out, {"axial_load": "100,200,300,400,500,600,700,800,900,1000N"}, jobs=2, fn=sleepy_qs)
+    assert (ds["status"] == "ok").all()
+    assert int(ds["resumed"].sum()) == len(done)
+    assert not [p for p in out.iterdir() if p.name.endswith(".tmp")]
+
+
+def test_second_sweep_in_same_directory_is_refused(tmp_path):
+    with sweeps._dir_lock(tmp_path):
+        with pytest.raises(CaseError, match="another hsbearing sweep"):
+            _qs_sweep(tmp_path, {"axial_load": "100,500N"})
