@@ -189,6 +189,7 @@ SCHEMA: dict[str, dict[str, Field]] = {
         # --- gyro bearing (seed 000) ---
         "mode": _f("choice", "constant rate or oscillation (seed 000)", default="constant", choices=("constant", "oscillation")),
         "oscillation_period": _f("time", "period of the speed reversal (seed 000)", default="2 s", positive=True),
+        "ramp_time": _f("time", "time to reach outer_speed from rest at constant acceleration (seed 000 Eq. 17)", positive=True),
         # --- wire race (seed 001) ---
         "preload": _f("length", "preload magnitude delta (seed 001)", nonneg=True),
         "framework_weight": _f("force", "gravity of the outer framework G_o (seed 001)", nonneg=True),
@@ -197,6 +198,8 @@ SCHEMA: dict[str, dict[str, Field]] = {
         "coefficient": _f("number", "Coulomb friction coefficient (ball/race, ball/cage)", default=0.07, nonneg=True),
         "cage_coefficient": _f("number", "ball/cage pocket friction coefficient", default=0.1, nonneg=True),
         "hysteresis_loss": _f("number", "elastic hysteresis loss fraction alpha_r", default=0.008, nonneg=True),
+        "viscous_factor": _f("number", "Palmgren lubrication factor f_0 of the viscous moment M_L (seed 000 Eq. 2)", nonneg=True),
+        "cage_restitution": _f("number", "ball/cage impact coefficient of restitution (Hunt-Crossley damping, seed 000 model)", minimum=0.0, maximum=1.0),
         "rolling_resistance": _f("length", "rolling-friction resistance coefficient zeta (seed 001)", nonneg=True),
         "unconsidered_torque": _f("moment", "torque not covered by the model M_u (seed 001)", nonneg=True),
         "law": _f("choice", "sliding friction law", default="stribeck", choices=("stribeck", "coulomb")),
