@@ -1,6 +1,10 @@
 """EHL traction laws, registered by oil name.
 
-``get(oil)`` returns a callable ``mu(S, W, U, T, E, R)`` (SI; T in kelvin).
+``get(oil, law="default")`` returns a callable ``mu(S, W, U, T, E, R)`` (SI; T in
+kelvin; E = reduced modulus E', R = Rx); ``contact_mu`` evaluates it from the
+physical contact quantities; ``law_id`` gives the integer id used by the numba
+kernels ``zhang2016.coefficients_nb`` / ``zhang2016.mu_nb`` of the dynamics hot
+path.  Conventions and the decision per oil: docs/traction.md.
 ``OILS`` maps the closed vocabulary of oil names to their Table 1 data
 (seed 004): eta0 [Pa s], alpha [1/Pa], beta [1/degC], K [N/(s degC)].
 """
@@ -8,6 +12,8 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+
+import numpy as np
 
 
 @dataclass(frozen=True)
@@ -25,3 +31,96 @@ OILS: dict[str, OilProperties] = {
     "4106": OilProperties("4106", 0.055, 1.85e-8, 0.031531, 0.0965788),
     "4050": OilProperties("4050", 0.060, 2.02e-8, 0.035, 0.0966),
 }
+
+
+# ----------------------------------------------------------------------------
+# registry of traction laws (one module per published law; seed 004 -> zhang2016)
+
+from hsbearing.models.traction import zhang2016  # noqa: E402
+
+#: law names accepted by :func:`get` for each oil ("default" resolves per oil)
+KNOWN_LAWS: dict[str, tuple[str, ...]] = {
+    oil: tuple(["default"] + [law for (o, law) in zhang2016.LAWS if o == oil]) for oil in OILS
+}
+
+
+def _resolve(oil, law: str = "default") -> tuple[str, str]:
+    oil = str(oil)
+    if oil not in OILS:
+        raise ValueError(f"unknown oil {oil!r} (known: {', '.join(OILS)})")
+    name = zhang2016.DEFAULT_LAW[oil] if law == "default" else law
+    if (oil, name) not in zhang2016.LAWS:
+        raise ValueError(f"unknown traction law {law!r} for oil {oil} (known: {', '.join(KNOWN_LAWS[oil])})")
+    return oil, name
+
+
+def law_id(oil, law: str = "default") -> int:
+    """Integer id of a law for the numba kernels ``zhang2016.coefficients_nb(law_id, ...)``."""
+    return zhang2016.LAWS[_resolve(oil, law)]
+
+
+def law_name(oil, law: str = "default") -> str:
+    """The concrete law name that ``law`` resolves to (e.g. "default" -> "analogue_4106" for 4050)."""
+    return _resolve(oil, law)[1]
+
+
+def _check_temperature(T):
+    if np.any(np.asarray(T, dtype=float) <= 273.15):
+        raise ValueError("the seed 004 traction laws are fitted in degC and undefined at or below 0 degC "
+                         f"(got T = {np.min(T)} K)")
+
+
+def get(oil, law: str = "default"):
+    """Traction law of an oil as a callable ``mu(S, W, U, T, E, R)``.
+
+    Parameters of the callable (SI, broadcastable arrays)
+    ------------------------------------------------------
+    S : signed slide-roll ratio (U_1 - U_2)/U [-]; mu has the sign of S
+    W : normal contact load [N]
+    U : rolling (entrainment) velocity (U_1 + U_2)/2 [m/s]
+    T : lubricant inlet temperature [K] (the seed's laws use degC internally)
+    E : reduced modulus E' = 2/((1-nu1^2)/E1 + (1-nu2^2)/E2) [Pa]
+        (:func:`hsbearing.models.hertz.reduced_modulus`)
+    R : effective radius of curvature in the rolling direction Rx [m]
+
+    ``law``: "default" (see docs/traction.md), "printed" (the seed's equation
+    as printed) or another name in :data:`KNOWN_LAWS`.  Unknown oil or law ->
+    ValueError listing the known ones.
+    """
+    oil, name = _resolve(oil, law)
+    lid = zhang2016.LAWS[(oil, name)]
+
+    def mu(S, W, U, T, E, R):
+        _check_temperature(T)
+        A, B, C, D = zhang2016.coefficients(lid, W, U, T, E, R)
+        return zhang2016.traction_coefficient(A, B, C, D, S)
+
+    mu.oil, mu.law, mu.law_id = oil, name, lid
+    mu.__doc__ = f"Traction coefficient of oil {oil}, law {name!r}: {zhang2016.describe(oil, name)}."
+    return mu
+
+
+def contact_mu(oil, S, Q, U, T, Ep, Rx, Ry=None, law: str = "default"):
+    """Traction coefficient of a ball/race contact from its physical quantities.
+
+    Maps the contact onto the convention of the laws (E = E', R = Rx; see
+    docs/traction.md) and evaluates them; vectorised.
+
+    Parameters
+    ----------
+    oil : oil name (closed vocabulary :data:`OILS`)
+    S : signed slide-roll ratio [-]
+    Q : normal contact load [N]
+    U : rolling (entrainment) velocity [m/s]
+    T : lubricant temperature [K]
+    Ep : reduced modulus E' [Pa] (hertz.reduced_modulus)
+    Rx, Ry : effective radii in the rolling / transverse directions [m];
+        Ry is accepted for a uniform contact interface and not used by the
+        seed 004 laws (their R is Rx).
+    law : as in :func:`get`
+
+    Returns
+    -------
+    mu [-] (sign of S)
+    """
+    return get(oil, law)(S, Q, U, T, Ep, Rx)

@@ -1,0 +1,279 @@
+"""EHL traction laws of the aviation oils 4109, 4106 and 4050 (seed 004).
+
+mu = (A_L + B_L S) exp(-C_L S) + D_L                        ([1], Eq. 1)
+
+with A_L ... D_L power laws of the dimensionless load, speed and temperature
+(Eqs. 2-4).  The decisions taken on the conventions (units, E, R, T, S) and
+on oil 4050 are argued with evidence in ``docs/traction.md``; in short:
+
+* inputs in SI, **temperature in degC inside the law** (the API takes kelvin),
+  E = reduced modulus E' = 2/((1-nu1^2)/E1 + (1-nu2^2)/E2) [Pa],
+  R = Rx, the effective radius in the rolling direction [m] (for the
+  ball-on-disc rig of [1] R = Rx = ball radius), W the normal load [N],
+  U = (U_1 + U_2)/2 the rolling (entrainment) velocity [m/s],
+  S = slide-roll ratio |U_1 - U_2| / U as a fraction (not percent);
+* 4109 (Eq. 2) and 4106 (Eq. 3) are used as printed.  Their "bounded"
+  reading only adds a smooth saturation of the load factor |Wc/W - 1| <= 3,
+  active far below the critical load (W < Wc/4), where the printed law
+  makes mu grow as 1/W (traction force not vanishing with the load);
+* 4050's printed Eq. 4 is not a traction curve under any convention tested
+  (C_L ~ 1e-26: mu = D + B S grows without bound).  Its default is the
+  documented fallback ``analogue_4106``: the form and coefficients of Eq. 3
+  evaluated with 4050's own Table 1 properties (eta0, beta, K), bounded as
+  above.  ``law="printed"`` keeps Eq. 4 for comparison.
+
+Sign convention: the seed's S >= 0.  Here mu is extended as an odd function
+of the signed slide-roll ratio, mu(-S) = -mu(S), so the traction opposes the
+slip.  For Eqs. 2-3 A_L = -D_L exactly, so mu(0) = 0 and the odd extension is
+continuous with a continuous slope (C^1; the curvature jumps by 2 |f''(0)|
+at S = 0, harmless for BDF).  Eq. 4 (printed) has mu(0+) = A_L + D_L != 0:
+its constant part is regularised as (A_L + D_L) tanh(S / S_EPS).
+
+References
+----------
+[1] Zhang W., Deng S., Chen G., Cui Y., "Impact of lubricant traction
+    coefficient on cage's dynamic characteristics in high-speed angular
+    contact ball bearing", Chin. J. Aeronaut. (2016),
+    doi:10.1016/j.cja.2016.08.019, Table 1 and Eqs. (1)-(4).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba
+import numpy as np
+
+__all__ = [
+    "LAWS",
+    "DEFAULT_LAW",
+    "PARAMS",
+    "S_EPS",
+    "LOAD_FACTOR_MAX",
+    "coefficients",
+    "dimensionless_groups",
+    "traction_coefficient",
+    "coefficients_nb",
+    "mu_nb",
+]
+
+#: Slip scale [-] of the tanh regularisation of a nonzero mu(0+) (printed Eq. 4 only).
+S_EPS = 1.0e-4
+#: Saturation value of the load factor |Wc/W - 1| in the bounded readings [-].
+LOAD_FACTOR_MAX = 3.0
+#: Exponent of the smooth saturation f / (1 + (f/f_max)^n)^(1/n) [-].
+LOAD_FACTOR_SHARPNESS = 8.0
+#: Floors that keep the kernels finite (W = 0, U = 0, T <= 0 degC) [N], [m/s], [degC].
+W_FLOOR, U_FLOOR, T_FLOOR_C = 1.0e-9, 1.0e-6, 1.0e-3
+
+# Table 1 of [1]: eta0 [Pa s], beta [1/degC], K [N/(s degC)]
+_OIL = {
+    "4109": (0.033, 0.0215, 0.0966),
+    "4106": (0.055, 0.031531, 0.0965788),
+    "4050": (0.060, 0.035, 0.0966),
+}
+# Eq. 2 (4109) and Eq. 3 (4106): Wc = c2 T^2 + c1 T + c0, and (coef, pW, pU, pT) of A_L, B_L, C_L, D_L
+_EQ2 = ((7.956015e12, 5553.090, 1.758455e-6),
+        ((-4.793526e-8, 0.0068361, -0.4047492, -0.1833848),
+         (8.37449e-15, 0.01409715, -0.5868325, -0.8173636),
+         (1.180823e-4, 0.0061321, -0.2061700, -0.3431740),
+         (4.793526e-8, 0.0068361, -0.4047492, -0.1833848)))
+_EQ3 = ((-2.279669e12, 5959.008, 1.647125e-6),
+        ((-1.172032e-7, 0.0104047, -0.530571, -0.0371558),
+         (1.164665e-11, 0.0146206, -0.6592641, -0.443983),
+         (3.962211e-6, 0.00992, -0.3987271, -0.3237042),
+         (1.172032e-7, 0.0104047, -0.530571, -0.0371558)))
+# Eq. 4 (4050): no critical-load factor, Tbar = T K / (eta0 U^2)
+_EQ4 = ((0.0, 0.0, 0.0),
+        ((0.0016, 1.1227, 0.8493, 0.8816),
+         (7.2804, -0.1372, 0.2116, 0.1766),
+         (61.4605, 0.3831, 2.9404, 1.6113),
+         (16.7177, 0.3403, 0.4748, 0.2488)))
+
+TBAR_SQRT, TBAR_BRINKMAN = 0, 1
+
+#: Registry of laws: (oil, law) -> law id.  Row ``law_id`` of :data:`PARAMS` holds its constants.
+LAWS: dict[tuple[str, str], int] = {}
+_DESCRIPTIONS: dict[tuple[str, str], str] = {}
+_rows = []
+
+
+def _add(oil, law, props_oil, eq, tbar_kind, has_wc, fmax, description):
+    eta0, beta, K = _OIL[props_oil]
+    (c2, c1, c0), coefs = eq
+    row = [eta0, beta, K, float(tbar_kind), float(has_wc), c2, c1, c0, fmax]
+    for c in coefs:
+        row.extend(c)
+    LAWS[(oil, law)] = len(_rows)
+    _DESCRIPTIONS[(oil, law)] = description
+    _rows.append(row)
+
+
+_add("4109", "printed", "4109", _EQ2, TBAR_SQRT, 1, 0.0, "seed 004 Eq. 2 as printed")
+_add("4106", "printed", "4106", _EQ3, TBAR_SQRT, 1, 0.0, "seed 004 Eq. 3 as printed")
+_add("4050", "printed", "4050", _EQ4, TBAR_BRINKMAN, 0, 0.0,
+     "seed 004 Eq. 4 as printed (NOT a traction curve: C_L ~ 1e-26, mu grows linearly with S)")
+_add("4109", "bounded", "4109", _EQ2, TBAR_SQRT, 1, LOAD_FACTOR_MAX,
+     "Eq. 2 with the load factor |Wc/W-1| smoothly saturated at 3 (W << Wc only)")
+_add("4106", "bounded", "4106", _EQ3, TBAR_SQRT, 1, LOAD_FACTOR_MAX,
+     "Eq. 3 with the load factor |Wc/W-1| smoothly saturated at 3 (W << Wc only)")
+_add("4050", "analogue_4106", "4050", _EQ3, TBAR_SQRT, 1, LOAD_FACTOR_MAX,
+     "fallback: Eq. 3 (4106 fit) evaluated with 4050's Table 1 eta0, beta, K; bounded")
+
+#: Constants of every law, one row per law id: eta0, beta, K, tbar_kind, has_wc, c2, c1, c0,
+#: f_max (0 = printed, no saturation), then (coef, pW, pU, pT) for A_L, B_L, C_L, D_L.
+PARAMS = np.array(_rows, dtype=float)
+PARAMS.setflags(write=False)
+
+#: Default reading per oil (see docs/traction.md).
+DEFAULT_LAW = {"4109": "bounded", "4106": "bounded", "4050": "analogue_4106"}
+
+
+def describe(oil: str, law: str) -> str:
+    """One-line description of a registered law."""
+    return _DESCRIPTIONS[(oil, law)]
+
+
+# ----------------------------------------------------------------------------
+# numpy (vectorised) implementation
+
+
+def dimensionless_groups(law_id: int, W, U, T_C, E, R):
+    """Dimensionless load, speed and temperature of [1], Eqs. 2-4.
+
+    Wbar = W / (E R^2),  Ubar = eta0 U / (E R),
+    Tbar = T sqrt(K eta0 beta) / (E R)   (Eqs. 2, 3)   or
+    Tbar = T K / (eta0 U^2)              (Eq. 4),
+    all in SI with T in degC.
+
+    Parameters
+    ----------
+    law_id : row of :data:`PARAMS`
+    W : normal load [N];  U : rolling velocity (U_1 + U_2)/2 [m/s]
+    T_C : lubricant (inlet) temperature [degC];  E : reduced modulus E' [Pa]
+    R : effective radius in the rolling direction Rx [m]
+
+    Returns
+    -------
+    (Wbar, Ubar, Tbar) [-]
+    """
+    p = PARAMS[law_id]
+    eta0, beta, K = p[0], p[1], p[2]
+    Wb = W / (E * R * R)  # [1], Eqs. 2-4
+    Ub = eta0 * U / (E * R)  # [1], Eqs. 2-4
+    if p[3] == TBAR_SQRT:
+        Tb = T_C * math.sqrt(K * eta0 * beta) / (E * R)  # [1], Eqs. 2-3
+    else:
+        Tb = T_C * K / (eta0 * U * U)  # [1], Eq. 4
+    return Wb, Ub, Tb
+
+
+def _saturate(f, fmax):
+    """Smooth saturation f / (1 + (f/f_max)^n)^(1/n) (identity if f_max == 0)."""
+    if fmax <= 0.0:
+        return f
+    n = LOAD_FACTOR_SHARPNESS
+    r = np.minimum(f / fmax, 1e6)
+    return np.where(f / fmax > 1e6, fmax, f / (1.0 + r**n) ** (1.0 / n))
+
+
+def coefficients(law_id: int, W, U, T_K, E, R):
+    """Coefficients A_L, B_L, C_L, D_L of [1], Eqs. 2-4 (vectorised).
+
+    Parameters
+    ----------
+    law_id : row of :data:`PARAMS` (see :func:`hsbearing.models.traction.law_id`)
+    W : normal load [N];  U : rolling velocity [m/s];  T_K : temperature [K]
+    E : reduced modulus E' [Pa];  R : Rx [m]
+
+    Returns
+    -------
+    (A, B, C, D) [-], broadcast arrays
+    """
+    p = PARAMS[law_id]
+    W = np.maximum(np.asarray(W, dtype=float), W_FLOOR)
+    U = np.maximum(np.abs(np.asarray(U, dtype=float)), U_FLOOR)
+    T_C = np.maximum(np.asarray(T_K, dtype=float) - 273.15, T_FLOOR_C)  # the laws are fitted in degC
+    Wb, Ub, Tb = dimensionless_groups(law_id, W, U, T_C, np.asarray(E, dtype=float), np.asarray(R, dtype=float))
+    if p[4]:
+        Wc = p[5] * Tb * Tb + p[6] * Tb + p[7]  # [1], Eqs. 2-3: critical load parameter
+        f = _saturate(np.abs(Wc / Wb - 1.0), p[8])  # [1], Eqs. 2-3: |Wc/W - 1|
+    else:
+        f = 1.0
+    out = []
+    for j in range(4):
+        a, pW, pU, pT = p[9 + 4 * j: 13 + 4 * j]
+        out.append(a * Wb**pW * f * Ub**pU * Tb**pT)  # [1], Eqs. 2-4
+    A, B, C, D = np.broadcast_arrays(*out)
+    return A, B, C, D
+
+
+def traction_coefficient(A, B, C, D, S):
+    """Traction coefficient mu(S) of [1], Eq. 1, extended as an odd function of S.
+
+    mu = sign(S) [(A + B|S|) e^(-C|S|) + D - mu0] + mu0 tanh(S / S_EPS),  mu0 = A + D
+
+    which is Eq. 1 for S > S_EPS (mu0 = 0 exactly for Eqs. 2-3).
+
+    Parameters
+    ----------
+    A, B, C, D : coefficients from :func:`coefficients` [-]
+    S : signed slide-roll ratio (U_1 - U_2)/U [-] (fraction)
+
+    Returns
+    -------
+    mu [-], with the sign of S
+    """
+    S = np.asarray(S, dtype=float)
+    s = np.abs(S)
+    mu0 = A + D
+    return np.sign(S) * ((A + B * s) * np.exp(-C * s) + D - mu0) + mu0 * np.tanh(S / S_EPS)  # [1], Eq. 1
+
+
+# ----------------------------------------------------------------------------
+# numba kernels for the dynamics hot path (scalar, allocation-free)
+
+_P = PARAMS  # captured as a compile-time constant array
+
+
+@numba.njit(cache=True, nogil=True)
+def coefficients_nb(law_id, W, U, T_K, E, R):
+    """Scalar numba twin of :func:`coefficients`: returns (A, B, C, D) [-] (SI, T in K)."""
+    p = _P[law_id]
+    W = max(W, W_FLOOR)
+    U = max(abs(U), U_FLOOR)
+    T_C = max(T_K - 273.15, T_FLOOR_C)
+    eta0, beta, K = p[0], p[1], p[2]
+    ER = E * R
+    Wb = W / (ER * R)
+    Ub = eta0 * U / ER
+    if p[3] == 0.0:
+        Tb = T_C * math.sqrt(K * eta0 * beta) / ER
+    else:
+        Tb = T_C * K / (eta0 * U * U)
+    f = 1.0
+    if p[4] != 0.0:
+        Wc = p[5] * Tb * Tb + p[6] * Tb + p[7]
+        f = abs(Wc / Wb - 1.0)
+        fmax = p[8]
+        if fmax > 0.0:
+            r = f / fmax
+            if r > 1e6:
+                f = fmax
+            else:
+                f = f / (1.0 + r**LOAD_FACTOR_SHARPNESS) ** (1.0 / LOAD_FACTOR_SHARPNESS)
+    lW, lU, lT = math.log(Wb), math.log(Ub), math.log(Tb)
+    A = p[9] * f * math.exp(p[10] * lW + p[11] * lU + p[12] * lT)
+    B = p[13] * f * math.exp(p[14] * lW + p[15] * lU + p[16] * lT)
+    C = p[17] * f * math.exp(p[18] * lW + p[19] * lU + p[20] * lT)
+    D = p[21] * f * math.exp(p[22] * lW + p[23] * lU + p[24] * lT)
+    return A, B, C, D
+
+
+@numba.njit(cache=True, nogil=True)
+def mu_nb(A, B, C, D, S):
+    """Scalar numba twin of :func:`traction_coefficient` (odd in S) [-]."""
+    s = abs(S)
+    mu0 = A + D
+    sg = 1.0 if S > 0.0 else (-1.0 if S < 0.0 else 0.0)
+    return sg * ((A + B * s) * math.exp(-C * s) + D - mu0) + mu0 * math.tanh(S / S_EPS)
