@@ -1,0 +1,777 @@
+"""High-speed quasi-static equilibrium of a ball bearing (Jones 1960, Harris & Kotzalas Vol. 2 Ch. 3).
+
+Unknowns: the 5 inner-ring displacements q = (delta_x, delta_y, delta_z,
+theta_y, theta_z) and, per ball, the position (X1, X2) of the ball centre
+relative to the outer groove curvature centre.  The physics (contact
+geometry, Hertz loads, centrifugal force, gyroscopic moment, race-control
+kinematics) is in :mod:`hsbearing.models.quasistatic_physics`.
+
+Numerics (nested, all vectorised over balls):
+
+1. inner level -- for a given q every ball's 2x2 force balance is solved by a
+   damped Newton iteration, all balls at once (central-difference 2x2
+   Jacobians).  The starting point is the static, collinear placement of the
+   ball on the line between the groove centres with the two deflections
+   split so that Q_i = Q_o; at zero speed this placement *is* the exact
+   solution, so zero speed reproduces the static case exactly.  Balls that
+   cannot touch both races and feel no centrifugal force are placed on that
+   line with zero loads (no NaN, no singular Jacobian).
+2. outer level -- the 5 ring equations are solved by :func:`scipy.optimize.root`
+   (Powell hybrid) with the exact Jacobian of the nested problem obtained by
+   the implicit-function theorem from central differences; a damped Newton
+   polish brings the residual below 1e-10 of the applied load.  The same
+   Jacobian, negated, is the bearing stiffness matrix.
+
+Speed sweeps continue from the previous solution (``initial=``).
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+import xarray as xr
+from scipy import optimize
+
+from hsbearing.errors import SolverError
+from hsbearing.case import CaseError
+from hsbearing.models import geometry as _geometry
+from hsbearing.models import hertz
+from hsbearing.models import quasistatic_physics as qp
+from hsbearing.results import make_dataset, register, solver_attrs, standard_attrs
+
+__all__ = [
+    "Problem",
+    "QuasiStaticSolution",
+    "build_problem",
+    "solve",
+    "solve_case",
+    "speed_sweep",
+    "to_dataset",
+    "print_summary",
+    "DOF_LABELS",
+]
+
+DOF_LABELS = ("x", "y", "z", "theta_y", "theta_z")
+
+# ----------------------------------------------------------------------------- output variables
+
+for _n, _d, _u, _l in [
+    ("ball_azimuth", ("ball",), "rad", "ball azimuth psi_j = 2 pi j / Z, from +Y towards +Z"),
+    ("inner_contact_deflection", ("time", "ball"), "m", "normal elastic approach at the inner contact delta_i"),
+    ("outer_contact_deflection", ("time", "ball"), "m", "normal elastic approach at the outer contact delta_o"),
+    ("inner_contact_semimajor", ("time", "ball"), "m", "inner contact ellipse semi-major axis a_i (transverse to rolling)"),
+    ("inner_contact_semiminor", ("time", "ball"), "m", "inner contact ellipse semi-minor axis b_i (rolling direction)"),
+    ("outer_contact_semimajor", ("time", "ball"), "m", "outer contact ellipse semi-major axis a_o (transverse to rolling)"),
+    ("outer_contact_semiminor", ("time", "ball"), "m", "outer contact ellipse semi-minor axis b_o (rolling direction)"),
+    ("inner_contact_pressure", ("time", "ball"), "Pa", "maximum Hertz pressure at the inner contact p_max,i"),
+    ("outer_contact_pressure", ("time", "ball"), "Pa", "maximum Hertz pressure at the outer contact p_max,o"),
+    ("inner_film_thickness_central", ("time", "ball"), "m", "Hamrock-Dowson central film thickness at the inner contact h_c,i"),
+    ("outer_film_thickness_central", ("time", "ball"), "m", "Hamrock-Dowson central film thickness at the outer contact h_c,o"),
+    ("inner_spin_to_roll", ("time", "ball"), "1", "spin-to-roll ratio at the inner contact omega_s,i / omega_roll,i"),
+    ("outer_spin_to_roll", ("time", "ball"), "1", "spin-to-roll ratio at the outer contact omega_s,o / omega_roll,o"),
+    ("ball_pitch_angle", ("time", "ball"), "rad", "ball pitch angle beta: ball rotation axis (cage frame) from the bearing axis"),
+    ("ball_angular_velocity_x", ("time", "ball"), "rad/s", "ball absolute angular velocity, component along the ball-frame x (axial) axis"),
+    ("ball_angular_velocity_y", ("time", "ball"), "rad/s", "ball absolute angular velocity, component along the ball-frame y (radial outward) axis"),
+    ("ball_angular_velocity_z", ("time", "ball"), "rad/s", "ball absolute angular velocity, component along the ball-frame z (circumferential) axis"),
+    ("ball_center_axial", ("time", "ball"), "m", "ball-centre axial position from the plane of the unloaded ball centres"),
+    ("ball_center_radial", ("time", "ball"), "m", "ball-centre distance from the bearing axis"),
+    ("ball_centrifugal_force", ("time", "ball"), "N", "ball centrifugal force F_c = m R_b omega_m^2"),
+    ("ball_gyroscopic_moment", ("time", "ball"), "N*m", "gyroscopic moment M_g on the ball about the circumferential axis"),
+    ("inner_ring_radial_displacement_y", ("time",), "m", "inner-ring displacement along Y"),
+    ("inner_ring_radial_displacement_z", ("time",), "m", "inner-ring displacement along Z"),
+    ("inner_ring_tilt_y", ("time",), "rad", "inner-ring tilt (small rotation) about Y"),
+    ("inner_ring_tilt_z", ("time",), "rad", "inner-ring tilt (small rotation) about Z"),
+    ("stiffness", ("dof", "dof2"), "mixed",
+     "bearing stiffness matrix -d(ball reaction on inner ring)/d(q), q = (x, y, z, theta_y, theta_z): "
+     "N/m (force/translation), N/rad (force/tilt), N*m/m (moment/translation), N*m/rad (moment/tilt)"),
+    ("residual_norm", (), "1", "ring equilibrium residual, max |R| relative to the applied load scale"),
+    ("ball_residual_norm", (), "N", "largest ball force-balance residual"),
+]:
+    register(_n, _d, _u, _l)
+
+
+# ----------------------------------------------------------------------------- problem definition
+
+
+@dataclass(frozen=True)
+class Problem:
+    """Everything the equilibrium needs, in SI (built by :func:`build_problem`)."""
+
+    Z: int
+    D: float
+    dm: float
+    fi: float
+    fo: float
+    alpha0: float
+    psi: np.ndarray  #: ball azimuths [rad]
+    ball_mass: float
+    ball_inertia: float
+    stiffness: qp.ContactStiffness
+    loads: np.ndarray  #: applied (F_x, F_y, F_z, M_y, M_z) [N, N m]
+    omega_i: float = 0.0  #: inner-ring speed [rad/s]
+    omega_o: float = 0.0  #: outer-ring speed [rad/s]
+    centrifugal: bool = True
+    gyroscopic: bool = True
+    control: str = "outer_race_control"
+    lam: tuple = (0.0, 2.0)  #: (lambda_i, lambda_o)
+    E1: float = 208e9
+    nu1: float = 0.3
+    E2: float = 208e9
+    nu2: float = 0.3
+    aligned: bool = False  #: deep-groove layout (grooves in the mid-plane, clearance P_d)
+    fixed_tilt: bool = False  #: hold theta_y = theta_z = 0 (moments become reactions)
+
+    @property
+    def A(self) -> float:
+        return (self.fi + self.fo - 1.0) * self.D
+
+    @property
+    def load_scale(self) -> float:
+        """Force scale [N] of the residual tolerances: the largest applied load (moments / (d_m/2))."""
+        L = self.loads
+        return float(max(abs(L[0]), math.hypot(L[1], L[2]), math.hypot(L[3], L[4]) / (0.5 * self.dm), 1e-3))
+
+    @property
+    def A1_0(self) -> float:
+        """Axial offset of the groove curvature centres at zero displacement [m]."""
+        return 0.0 if self.aligned else self.A * math.sin(self.alpha0)
+
+    @property
+    def layout(self):
+        return qp.groove_centre_layout(self.D, self.dm, self.fi, self.fo, self.alpha0, self.aligned)
+
+    @property
+    def moving(self) -> bool:
+        return self.omega_i != 0.0 or self.omega_o != 0.0
+
+
+def build_problem(case, *, inner_speed=None, centrifugal=True, gyroscopic=True, control=None,
+                  fixed_tilt=False) -> Problem:
+    """A :class:`Problem` from a case (``inner_speed`` [rad/s] overrides ``[operating] inner_speed``).
+
+    Deep-groove cases use the aligned-groove layout with the diametral
+    clearance; angular-contact cases the layout at the free contact angle.
+    ``fixed_tilt=True`` holds the ring tilts at zero (3 DOF; the moments the
+    balls apply are then reactions, reported in the residual).
+    """
+    if case.system not in ("angular_contact", "deep_groove"):
+        raise CaseError(case.source, "case.system",
+                        f"the quasi-static model covers angular_contact and deep_groove bearings, not {case.system!r}")
+    g = _geometry.derive(case)
+    b, r = case.materials.ball, case.materials.races
+    control = control or case.simulation.kinematics
+    if control not in qp.LAMBDA_SPLIT:
+        raise CaseError(case.source, "simulation.kinematics",
+                        f"{control!r} is not available in the quasi-static model (use outer_race_control or inner_race_control)")
+    stiff = qp.ContactStiffness.build(g.D, g.dm, g.fi, g.fo, b.elastic_modulus, b.poisson_ratio,
+                                      r.elastic_modulus, r.poisson_ratio)
+    op = case.operating
+    loads = np.array([op.axial_load, op.radial_load, op.radial_load_z, op.moment_y, op.moment_z], dtype=float)
+    wi = op.inner_speed if inner_speed is None else float(inner_speed)
+    return Problem(
+        Z=g.Z, D=g.D, dm=g.dm, fi=g.fi, fo=g.fo, alpha0=g.alpha0,
+        psi=2.0 * np.pi * np.arange(g.Z) / g.Z,
+        ball_mass=g.ball_mass, ball_inertia=g.ball_inertia, stiffness=stiff, loads=loads,
+        omega_i=float(wi), omega_o=float(op.outer_speed), centrifugal=bool(centrifugal), gyroscopic=bool(gyroscopic),
+        control=control, lam=qp.LAMBDA_SPLIT[control],
+        E1=b.elastic_modulus, nu1=b.poisson_ratio, E2=r.elastic_modulus, nu2=r.poisson_ratio,
+        aligned=(case.system == "deep_groove"), fixed_tilt=bool(fixed_tilt),
+    )
+
+
+# ----------------------------------------------------------------------------- ball level
+
+
+def _ball_state(P: Problem, X1, X2, q, free=None):
+    """All per-ball quantities for ball-centre positions (X1, X2) and ring displacement q."""
+    A1, A2 = qp.groove_centre_separation(q, P.psi, P.D, P.dm, P.fi, P.fo, P.alpha0, P.aligned)
+    di, do, si, ci, so, co, Li, Lo = qp.contact_geometry(X1, X2, A1, A2, P.D, P.fi, P.fo)
+    Ki, Ko = P.stiffness.K(ci, co)
+    Qi = qp.hertz_load(Ki, di)
+    Qo = qp.hertz_load(Ko, do)
+    _, _, x_o0, R_o = P.layout
+    R_b = R_o + X2
+    if P.moving:
+        wm, wx, wy = qp.race_control_kinematics(P.omega_i, P.omega_o, R_b, P.D, si, ci, so, co, P.control)
+    else:
+        wm = wx = wy = np.zeros_like(X1)
+    Fc = qp.centrifugal_force(P.ball_mass, R_b, wm) if P.centrifugal else np.zeros_like(X1)
+    Mg = qp.gyroscopic_moment(P.ball_inertia, wm, wy) if P.gyroscopic else np.zeros_like(X1)
+    Fi, Fo = qp.gyroscopic_friction(Mg, P.D, P.lam[0], P.lam[1])
+    if free is not None and np.any(free):
+        Fi = np.where(free, 0.0, Fi)
+        Fo = np.where(free, 0.0, Fo)
+    r_ax, r_rad = qp.ball_equilibrium_residual(Qi, Qo, si, ci, so, co, Fc, Fi, Fo)
+    return dict(A1=A1, A2=A2, di=di, do=do, si=si, ci=ci, so=so, co=co, Qi=Qi, Qo=Qo, Ki=Ki, Ko=Ko,
+                R_b=R_b, x_b=x_o0 + X1, wm=wm, wx=wx, wy=wy, Fc=Fc, Mg=Mg, Fi=Fi, Fo=Fo,
+                res=np.stack([r_ax, r_rad]))
+
+
+def _ring_contributions(P: Problem, st, q):
+    """Per-ball force/moment on the inner ring, shape (5, Z)."""
+    x_c = st["x_b"] - 0.5 * P.D * st["si"]  # inner contact point, axial
+    rho_c = st["R_b"] - 0.5 * P.D * st["ci"]  # inner contact point, radius
+    f_ax = -(st["Qi"] * st["si"] + st["Fi"] * st["ci"])
+    f_rad = -(st["Qi"] * st["ci"] - st["Fi"] * st["si"])
+    c, s = np.cos(P.psi), np.sin(P.psi)
+    fx, fy, fz = f_ax, f_rad * c, f_rad * s
+    px, py, pz = x_c - q[0], rho_c * c - q[1], rho_c * s - q[2]
+    return np.stack([fx, fy, fz, pz * fx - px * fz, px * fy - py * fx])  # r x F
+
+
+def _line_placement(P: Problem, q):
+    """Starting ball placement and the 'free' mask.
+
+    The ball lies on the line joining the groove curvature centres.  If the
+    total approach delta_n = L - A is positive it is split so that
+    K_i delta_i^1.5 = K_o delta_o^1.5 (the exact static solution).  A ball that
+    cannot touch both races is 'free' when it feels no centrifugal force
+    (zero loads, left on the line); otherwise it is seated on the outer race
+    with the deflection of an estimated centrifugal force (cage speed of
+    Harris Vol. 1 Eq. 8.21), from where the Newton iteration starts.
+    """
+    A1, A2 = qp.groove_centre_separation(q, P.psi, P.D, P.dm, P.fi, P.fo, P.alpha0, P.aligned)
+    L = np.hypot(A1, A2)
+    c = A2 / L
+    Ki, Ko = P.stiffness.K(c, c)
+    dn = L - P.A
+    ratio = (Ko / Ki) ** (2.0 / 3.0)  # delta_i / delta_o for equal loads
+    do = np.where(dn > 0, dn / (1.0 + ratio), 0.5 * dn)
+    spinning = P.centrifugal and P.moving
+    if spinning:
+        g = P.D * np.cos(P.alpha0) / P.dm
+        wc = 0.5 * (P.omega_i * (1.0 - g) + P.omega_o * (1.0 + g))  # Harris Vol. 1, Eq. 8.21
+        Fc = qp.centrifugal_force(P.ball_mass, 0.5 * P.dm, wc)
+        do_c = (Fc / Ko) ** (2.0 / 3.0)
+        do = np.where(dn > 0, np.maximum(do, np.minimum(do_c, dn)), do_c)
+    Lo = (P.fo - 0.5) * P.D + do
+    X1, X2 = A1 / L * Lo, A2 / L * Lo
+    free = (dn <= 0) & (not spinning)
+    return X1, X2, free
+
+
+def _solve_balls(P: Problem, q, X1, X2, tol, maxiter=60):
+    """Damped Newton on every ball's 2x2 force balance (vectorised).  Returns X1, X2, state, free, iters."""
+    Xl1, Xl2, free = _line_placement(P, q)
+    if X1 is None:
+        X1, X2 = Xl1, Xl2
+    X1 = np.where(free, Xl1, X1)
+    X2 = np.where(free, Xl2, X2)
+    h = 1e-7 * P.D
+    st = _ball_state(P, X1, X2, q, free)
+    # a ball touching neither race (zero Jacobian) restarts from the placement
+    lost = (~free) & (st["Qi"] <= 0) & (st["Qo"] <= 0)
+    if np.any(lost):
+        X1 = np.where(lost, Xl1, X1)
+        X2 = np.where(lost, Xl2, X2)
+        st = _ball_state(P, X1, X2, q, free)
+    res = np.where(free, 0.0, st["res"])
+    nrm = np.max(np.abs(res), axis=0)
+    it = 0
+    step_cap = 0.05 * P.D
+    while np.any(nrm > tol) and it < maxiter:
+        it += 1
+        act = nrm > tol
+        J = np.empty((P.Z, 2, 2))
+        for k in range(2):
+            dX1 = h if k == 0 else 0.0
+            dX2 = h if k == 1 else 0.0
+            rp = _ball_state(P, X1 + dX1, X2 + dX2, q, free)["res"]
+            rm = _ball_state(P, X1 - dX1, X2 - dX2, q, free)["res"]
+            J[:, :, k] = ((rp - rm) / (2 * h)).T
+        det = J[:, 0, 0] * J[:, 1, 1] - J[:, 0, 1] * J[:, 1, 0]
+        ok = act & (np.abs(det) > 0)
+        safe_det = np.where(ok, det, 1.0)
+        s1 = -(J[:, 1, 1] * res[0] - J[:, 0, 1] * res[1]) / safe_det
+        s2 = -(-J[:, 1, 0] * res[0] + J[:, 0, 0] * res[1]) / safe_det
+        s1 = np.where(ok, s1, 0.0)
+        s2 = np.where(ok, s2, 0.0)
+        sn = np.hypot(s1, s2)
+        scale = np.minimum(1.0, step_cap / np.maximum(sn, 1e-300))
+        s1, s2 = s1 * scale, s2 * scale
+        # backtracking per ball: halve the step where the residual grows
+        t = np.ones(P.Z)
+        for _ in range(30):
+            Y1, Y2 = X1 + t * s1, X2 + t * s2
+            st_new = _ball_state(P, Y1, Y2, q, free)
+            r_new = np.where(free, 0.0, st_new["res"])
+            n_new = np.max(np.abs(r_new), axis=0)
+            bad = ok & (n_new > nrm) & (n_new > tol)
+            if not np.any(bad):
+                break
+            t = np.where(bad, 0.5 * t, t)
+        X1, X2, st, res, nrm = Y1, Y2, st_new, r_new, n_new
+        if not np.any(ok & (nrm > tol)):
+            break
+    return X1, X2, st, free, it
+
+
+# ----------------------------------------------------------------------------- ring level
+
+
+@dataclass
+class QuasiStaticSolution:
+    """Result of :func:`solve` (numpy arrays over balls, SI)."""
+
+    problem: Problem
+    q: np.ndarray  #: (delta_x, delta_y, delta_z, theta_y, theta_z)
+    X1: np.ndarray
+    X2: np.ndarray
+    state: dict
+    free: np.ndarray
+    stiffness: np.ndarray  #: 5x5
+    residual: np.ndarray  #: ring residual (5,) [N, N m]
+    residual_norm: float  #: max |R| / load scale
+    ball_residual_norm: float  #: [N]
+    stats: dict = field(default_factory=dict)
+
+
+class _Ring:
+    """The 5-DOF ring problem with the balls solved inside (caches the last ball state)."""
+
+    def __init__(self, P: Problem, X1=None, X2=None):
+        self.P = P
+        self.Fs = P.load_scale
+        self.xs = np.array([1e-6, 1e-6, 1e-6, 1e-6 / (0.5 * P.dm), 1e-6 / (0.5 * P.dm)])  # variable scales
+        self.rs = np.array([self.Fs, self.Fs, self.Fs, self.Fs * 0.5 * P.dm, self.Fs * 0.5 * P.dm])
+        self.X1, self.X2 = X1, X2
+        self.act = np.arange(3) if P.fixed_tilt else np.arange(5)  #: DOFs solved for
+        self.ball_tol = 1e-13 * self.Fs
+        self.nfev = 0
+        self.njev = 0
+        self.ball_iters = 0
+
+    def balls(self, q):
+        X1, X2, st, free, it = _solve_balls(self.P, q, self.X1, self.X2, self.ball_tol)
+        self.ball_iters += it
+        return X1, X2, st, free
+
+    def residual(self, q, keep=True):
+        X1, X2, st, free = self.balls(q)
+        if keep:
+            self.X1, self.X2 = X1, X2
+        self.nfev += 1
+        R = self.P.loads + _ring_contributions(self.P, st, q).sum(axis=1)
+        return R, (X1, X2, st, free)
+
+    def jacobian(self, q, X1, X2, free):
+        """dR/dq of the nested problem (implicit-function theorem, central differences)."""
+        self.njev += 1
+        P = self.P
+        h = 1e-7 * P.D
+        hq = np.array([h, h, h, h / (0.5 * P.dm), h / (0.5 * P.dm)])
+        # partials with respect to the ball positions
+        dg_dX = np.empty((P.Z, 2, 2))
+        dF_dX = np.empty((P.Z, 5, 2))
+        for k in range(2):
+            e1 = h if k == 0 else 0.0
+            e2 = h if k == 1 else 0.0
+            sp = _ball_state(P, X1 + e1, X2 + e2, q, free)
+            sm = _ball_state(P, X1 - e1, X2 - e2, q, free)
+            dg_dX[:, :, k] = ((sp["res"] - sm["res"]) / (2 * h)).T
+            dF_dX[:, :, k] = ((_ring_contributions(P, sp, q) - _ring_contributions(P, sm, q)) / (2 * h)).T
+        dg_dq = np.empty((P.Z, 2, 5))
+        dF_dq = np.empty((5, 5))
+        dFj_dq = np.empty((P.Z, 5, 5))
+        for k in range(5):
+            dq = np.zeros(5)
+            dq[k] = hq[k]
+            sp = _ball_state(P, X1, X2, q + dq, free)
+            sm = _ball_state(P, X1, X2, q - dq, free)
+            dg_dq[:, :, k] = ((sp["res"] - sm["res"]) / (2 * hq[k])).T
+            dFj_dq[:, :, k] = ((_ring_contributions(P, sp, q + dq) - _ring_contributions(P, sm, q - dq)) / (2 * hq[k])).T
+        dF_dq = dFj_dq.sum(axis=0)
+        # dX/dq = -(dg/dX)^-1 dg/dq for the balls in equilibrium with loads; free balls do not move
+        det = np.linalg.det(dg_dX)
+        ok = (~free) & (np.abs(det) > 0)
+        dX_dq = np.zeros((P.Z, 2, 5))
+        if np.any(ok):
+            dX_dq[ok] = -np.linalg.solve(dg_dX[ok], dg_dq[ok])
+        return dF_dq + np.einsum("jab,jbc->ac", dF_dX, dX_dq)
+
+
+def _initial_ring_guess(P: Problem) -> np.ndarray:
+    """Static rigid-ring starting point: closed-form axial solution plus a Stribeck radial estimate."""
+    Fa, Fy, Fz, My, Mz = P.loads
+    A, a0 = P.A, P.alpha0
+    q = np.zeros(5)
+    if abs(Fa) > 0:
+        a, Q = qp.axial_static_single_ball(abs(Fa), P.Z, P.D, P.dm, P.fi, P.fo, a0, P.stiffness)
+        q[0] = math.copysign(A * math.cos(a0) * math.tan(a), Fa) - P.A1_0
+        alpha = a
+    else:
+        q[0] = -P.A1_0  # grooves aligned: the ring centres itself axially
+        alpha = 0.0
+    Fr = math.hypot(Fy, Fz)
+    if Fr > 0:
+        Ki, Ko = P.stiffness.K(math.cos(alpha), math.cos(alpha))
+        Kn = (Ki ** (-2 / 3) + Ko ** (-2 / 3)) ** -1.5
+        Qmax = 5.0 * Fr / (P.Z * max(math.cos(alpha), 0.3))  # Stribeck
+        dr = (Qmax / Kn) ** (2 / 3) / max(math.cos(alpha), 0.3)
+        if abs(Fa) == 0:
+            dr += A * (1 - math.cos(a0))
+        q[1], q[2] = dr * Fy / Fr, dr * Fz / Fr
+    Mr = math.hypot(My, Mz)
+    if Mr > 0:
+        Ki, Ko = P.stiffness.K(math.cos(alpha), math.cos(alpha))
+        Kn = (Ki ** (-2 / 3) + Ko ** (-2 / 3)) ** -1.5
+        R = 0.5 * P.dm
+        Qmax = 4.0 * Mr / (P.Z * R * max(math.sin(alpha), 0.3))
+        th = (Qmax / Kn) ** (2 / 3) / R
+        q[3], q[4] = th * My / Mr, th * Mz / Mr
+    return q
+
+
+def _newton_ring(ring: _Ring, q, tol, maxiter=40):
+    """Damped Newton on the ring equations (scaled); returns q and the last residual."""
+    a = ring.act
+    R, (X1, X2, st, free) = ring.residual(q)
+    for _ in range(maxiter):
+        rn = np.max(np.abs(R[a] / ring.rs[a]))
+        if rn < tol:
+            break
+        J = ring.jacobian(q, X1, X2, free)[np.ix_(a, a)]
+        Js = J * ring.xs[a][None, :] / ring.rs[a][:, None]
+        try:
+            dz = np.linalg.lstsq(Js, -R[a] / ring.rs[a], rcond=1e-13)[0]
+        except np.linalg.LinAlgError:
+            break
+        dq = np.zeros(5)
+        dq[a] = dz * ring.xs[a]
+        t = 1.0
+        for _ in range(25):
+            qn = q + t * dq
+            X1s, X2s = ring.X1, ring.X2
+            Rn, pack = ring.residual(qn)
+            if np.max(np.abs(Rn[a] / ring.rs[a])) < rn or t < 1e-6:
+                break
+            ring.X1, ring.X2 = X1s, X2s
+            t *= 0.5
+        q, R, (X1, X2, st, free) = qn, Rn, pack
+    return q, R
+
+
+def solve(P: Problem, *, initial=None, tol=1e-10, maxfev=400) -> QuasiStaticSolution:
+    """Solve the quasi-static equilibrium of problem ``P``.
+
+    initial : a :class:`QuasiStaticSolution` or a Dataset written by
+        :func:`to_dataset` to continue from (speed sweeps); otherwise the
+        static rigid-ring estimate, and for a moving bearing the static
+        solution first, then speed continuation if needed.
+    tol : ring residual tolerance relative to the load scale.
+
+    Raises :class:`SolverError` naming the residual when it does not converge.
+    """
+    t0 = time.perf_counter()
+    q0, X1, X2 = _unpack_initial(P, initial)
+    stats = {"ring_evaluations": 0, "jacobian_evaluations": 0, "continuation_steps": 0}
+    if q0 is None and P.moving and (P.centrifugal or P.gyroscopic):
+        static = solve(replace(P, centrifugal=False, gyroscopic=False), tol=tol, maxfev=maxfev)
+        q0, X1, X2 = static.q, static.X1, static.X2
+        stats["ring_evaluations"] += static.stats["ring_evaluations"]
+        stats["jacobian_evaluations"] += static.stats["jacobian_evaluations"]
+    if q0 is None:
+        q0 = _initial_ring_guess(P)
+    try:
+        sol = _solve_from(P, q0, X1, X2, tol, maxfev, stats)
+    except SolverError:
+        if not (P.moving and (P.centrifugal or P.gyroscopic)):
+            raise
+        sol = None
+    if sol is None or sol.residual_norm > tol:
+        # continuation in speed from the static state
+        static = solve(replace(P, centrifugal=False, gyroscopic=False), tol=tol, maxfev=maxfev)
+        q, X1, X2 = static.q, static.X1, static.X2
+        for f in np.linspace(0.25, 1.0, 4):
+            Pk = replace(P, omega_i=P.omega_i * f, omega_o=P.omega_o * f)
+            sol = _solve_from(Pk, q, X1, X2, tol, maxfev, stats)
+            q, X1, X2 = sol.q, sol.X1, sol.X2
+            stats["continuation_steps"] += 1
+        sol.problem = P
+    sol.stats.update(stats)
+    sol.stats["wall_time_s"] = time.perf_counter() - t0
+    return sol
+
+
+def _solve_from(P, q0, X1, X2, tol, maxfev, stats):
+    ring = _Ring(P, X1, X2)
+    a = ring.act
+    q0 = np.array(q0, dtype=float)
+    if P.fixed_tilt:
+        q0[3:] = 0.0
+    scale = ring.xs[a]
+
+    def full(z):
+        q = q0.copy()
+        q[a] = z * scale
+        return q
+
+    def fun(z):
+        R, _ = ring.residual(full(z))
+        return R[a] / ring.rs[a]
+
+    def jac(z):
+        q = full(z)
+        X1, X2, st, free = ring.balls(q)
+        return ring.jacobian(q, X1, X2, free)[np.ix_(a, a)] * scale[None, :] / ring.rs[a][:, None]
+
+    R0, _ = ring.residual(q0)
+    q = q0
+    if np.max(np.abs(R0[a] / ring.rs[a])) > tol:
+        with np.errstate(all="ignore"):
+            res = optimize.root(fun, q0[a] / scale, jac=jac, method="hybr", options={"maxfev": maxfev, "xtol": 1e-14})
+        if np.all(np.isfinite(res.x)):
+            q = full(res.x)
+        q, _ = _newton_ring(ring, q, tol)
+    R, (X1, X2, st, free) = ring.residual(q)
+    rn = float(np.max(np.abs(R[a] / ring.rs[a])))
+    J = ring.jacobian(q, X1, X2, free)
+    stats["ring_evaluations"] += ring.nfev
+    stats["jacobian_evaluations"] += ring.njev
+    stats["ball_newton_iterations"] = stats.get("ball_newton_iterations", 0) + ring.ball_iters
+    bres = float(np.max(np.abs(np.where(free, 0.0, st["res"])))) if P.Z else 0.0
+    sol = QuasiStaticSolution(problem=P, q=q, X1=X1, X2=X2, state=st, free=free, stiffness=-J, residual=R,
+                              residual_norm=rn, ball_residual_norm=bres, stats={})
+    if not np.all(np.isfinite(R)) or rn > tol:
+        ds = None
+        try:
+            ds = to_dataset(sol, status="failed")
+        except Exception:  # pragma: no cover - the partial result is best effort
+            pass
+        raise SolverError(
+            f"quasi-static equilibrium did not converge: ring residual max|R|/F = {rn:.3e} "
+            f"(tolerance {tol:.1e}; R = {np.array2string(R, precision=4)} [N, N m])", partial=ds)
+    return sol
+
+
+def _unpack_initial(P: Problem, initial):
+    if initial is None:
+        return None, None, None
+    if isinstance(initial, QuasiStaticSolution):
+        if initial.problem.Z != P.Z:
+            return None, None, None
+        return initial.q.copy(), initial.X1.copy(), initial.X2.copy()
+    if isinstance(initial, xr.Dataset):
+        if initial.sizes.get("ball") != P.Z:
+            return None, None, None
+        q = np.array([float(initial[n]) for n in ("inner_ring_axial_displacement", "inner_ring_radial_displacement_y",
+                                                   "inner_ring_radial_displacement_z", "inner_ring_tilt_y",
+                                                   "inner_ring_tilt_z")])
+        _, _, x_o0, R_o = P.layout
+        X1 = initial["ball_center_axial"].values - x_o0
+        X2 = initial["ball_center_radial"].values - R_o
+        return q, X1, X2
+    raise TypeError(f"initial must be a QuasiStaticSolution or an xarray Dataset, not {type(initial).__name__}")
+
+
+# ----------------------------------------------------------------------------- outputs
+
+
+def to_dataset(sol: QuasiStaticSolution, case=None, status: str = "ok") -> xr.Dataset:
+    """The solution as a Dataset over ``ball`` with the names of DESIGN.md."""
+    P, st = sol.problem, sol.state
+    Rxi, Ryi, Rxo, Ryo = _contact_radii(P, st)
+    hi = hertz.point_contact(Rxi, Ryi, st["Qi"], P.E1, P.nu1, P.E2, P.nu2)
+    ho = hertz.point_contact(Rxo, Ryo, st["Qo"], P.E1, P.nu1, P.E2, P.nu2)
+    # spin-to-roll ratios are speed-independent under race control: use a nominal
+    # inner-ring speed when the bearing stands still.
+    if P.moving:
+        wm, wx, wy = st["wm"], st["wx"], st["wy"]
+        wi, wo = P.omega_i, P.omega_o
+    else:
+        wi, wo = 1.0, 0.0
+        wm, wx, wy = qp.race_control_kinematics(wi, wo, st["R_b"], P.D, st["si"], st["ci"], st["so"], st["co"], P.control)
+    spin_i, roll_i, spin_o, roll_o = qp.contact_spin_roll(wx, wy, wm, wi, wo, st["si"], st["ci"], st["so"], st["co"])
+    with np.errstate(invalid="ignore", divide="ignore"):
+        sr_i = np.where(roll_i != 0, spin_i / roll_i, 0.0)
+        sr_o = np.where(roll_o != 0, spin_o / roll_o, 0.0)
+        beta_src = (st["wx"], st["wy"]) if P.moving else (wx, wy)
+        beta = np.arctan2(-beta_src[1], beta_src[0])
+    beta = np.where(beta > 0.5 * np.pi, beta - np.pi, np.where(beta < -0.5 * np.pi, beta + np.pi, beta))
+    q = sol.q
+    data = {
+        "inner_contact_load": st["Qi"],
+        "outer_contact_load": st["Qo"],
+        "inner_contact_angle": np.arctan2(st["si"], st["ci"]),
+        "outer_contact_angle": np.arctan2(st["so"], st["co"]),
+        "inner_contact_deflection": st["di"],
+        "outer_contact_deflection": st["do"],
+        "inner_contact_semimajor": hi.a,
+        "inner_contact_semiminor": hi.b,
+        "outer_contact_semimajor": ho.a,
+        "outer_contact_semiminor": ho.b,
+        "inner_contact_pressure": hi.p_max,
+        "outer_contact_pressure": ho.p_max,
+        "inner_spin_to_roll": sr_i,
+        "outer_spin_to_roll": sr_o,
+        "ball_pitch_angle": beta,
+        "ball_orbit_speed": st["wm"],
+        "ball_spin_speed": np.hypot(st["wx"], st["wy"]),
+        "ball_angular_velocity_x": st["wx"] + st["wm"],
+        "ball_angular_velocity_y": st["wy"],
+        "ball_angular_velocity_z": np.zeros(P.Z),
+        "ball_center_axial": st["x_b"],
+        "ball_center_radial": st["R_b"],
+        "ball_centrifugal_force": st["Fc"],
+        "ball_gyroscopic_moment": st["Mg"],
+        "cage_speed": float(np.mean(st["wm"])),
+        "inner_ring_axial_displacement": q[0],
+        "inner_ring_radial_displacement_y": q[1],
+        "inner_ring_radial_displacement_z": q[2],
+        "inner_ring_tilt_y": q[3],
+        "inner_ring_tilt_z": q[4],
+        "stiffness": sol.stiffness,
+        "residual_norm": sol.residual_norm,
+        "ball_residual_norm": sol.ball_residual_norm,
+    }
+    if case is not None:
+        hc = _film(case, P, st, Rxi, Ryi, Rxo, Ryo, wi, wo, wm, wx, wy)
+        if hc is not None:
+            data["inner_film_thickness_central"], data["outer_film_thickness_central"] = hc
+    attrs = dict(
+        model="quasi-static Jones-Harris (hsbearing.solvers.quasistatic)",
+        kinematics=P.control,
+        lambda_inner=P.lam[0], lambda_outer=P.lam[1],
+        centrifugal=P.centrifugal, gyroscopic=P.gyroscopic,
+        inner_speed=P.omega_i, outer_speed=P.omega_o,
+        applied_loads=[float(x) for x in P.loads],
+        unloaded_balls=int(np.sum((st["Qi"] <= 0) | (st["Qo"] <= 0))),
+    )
+    attrs.update(solver_attrs({k: v for k, v in sol.stats.items()}))
+    full = standard_attrs(case, status=status, **attrs) if case is not None else attrs | {"status": status}
+    ds = make_dataset(data, coords={"ball": np.arange(P.Z), "dof": list(DOF_LABELS), "dof2": list(DOF_LABELS)},
+                      attrs=full)
+    ds = ds.assign_coords(ball_azimuth=("ball", P.psi, {"units": "rad", "long_name": "ball azimuth psi_j, from +Y towards +Z"}))
+    return ds
+
+
+def _contact_radii(P: Problem, st):
+    """Rolling/transverse radii of each contact at its own contact angle (Harris Vol. 1 Eqs. 2.27-2.31)."""
+    gi = P.D * st["ci"] / P.dm
+    go = P.D * st["co"] / P.dm
+    Rxi = 0.5 * P.D * (1.0 - gi)
+    Rxo = 0.5 * P.D * (1.0 + go)
+    Ryi = np.full(P.Z, P.fi * P.D / (2 * P.fi - 1))
+    Ryo = np.full(P.Z, P.fo * P.D / (2 * P.fo - 1))
+    return Rxi, Ryi, Rxo, Ryo
+
+
+def _film(case, P, st, Rxi, Ryi, Rxo, Ryo, wi, wo, wm, wx, wy):
+    """Hamrock-Dowson central film thickness at both contacts, or None when no oil data are available."""
+    try:
+        from hsbearing.models import ehl
+    except ImportError:  # pragma: no cover
+        return None
+    props = _oil_properties(case)
+    if props is None:
+        return None
+    eta0, alpha_p = props
+    # entrainment (mean rolling) speed of each contact: u = |roll| * D/2 relative to the race, in the contact frame
+    spin_i, roll_i, spin_o, roll_o = qp.contact_spin_roll(st["wx"], st["wy"], st["wm"], P.omega_i, P.omega_o,
+                                                          st["si"], st["ci"], st["so"], st["co"])
+    ui = np.abs(roll_i) * 0.5 * P.D * (1.0 - P.D * st["ci"] / P.dm) if P.moving else np.zeros(P.Z)
+    uo = np.abs(roll_o) * 0.5 * P.D * (1.0 + P.D * st["co"] / P.dm) if P.moving else np.zeros(P.Z)
+    Ep = float(hertz.reduced_modulus(P.E1, P.nu1, P.E2, P.nu2))
+    out = []
+    for Q, u, Rx, Ry in ((st["Qi"], ui, Rxi, Ryi), (st["Qo"], uo, Rxo, Ryo)):
+        ok = (Q > 0) & (u > 0)
+        h = np.full(P.Z, np.nan)
+        if np.any(ok):
+            r = ehl.film_thickness(Q[ok], u[ok], Rx[ok], Ry[ok], Ep, eta0, alpha_p)
+            hc = r[0] if isinstance(r, tuple) else getattr(r, "central", getattr(r, "h_c", None))
+            h[ok] = hc
+        out.append(h)
+    return tuple(out)
+
+
+def _oil_properties(case):
+    """(eta0 [Pa s], alpha [1/Pa]) of the case lubricant at its temperature, or None."""
+    lub = case.lubricant
+    eta0 = lub.dynamic_viscosity
+    alpha_p = lub.pressure_viscosity_coefficient
+    if eta0 is None and lub.kinematic_viscosity is not None:
+        eta0 = lub.kinematic_viscosity * lub.density
+    if eta0 is None or alpha_p is None:
+        try:
+            from hsbearing.models import ehl
+
+            getter = getattr(ehl, "oil_properties", None)
+            if getter is not None:
+                e, a = getter(lub.oil, lub.temperature)[:2]
+                eta0 = eta0 if eta0 is not None else e
+                alpha_p = alpha_p if alpha_p is not None else a
+        except Exception:
+            return None
+    if eta0 is None or alpha_p is None:
+        return None
+    return float(eta0), float(alpha_p)
+
+
+def solve_case(case, *, inner_speed=None, centrifugal=True, gyroscopic=True, initial=None) -> xr.Dataset:
+    """Quasi-static equilibrium of a case as a Dataset over ``ball`` (``hsbearing.quasi_static``).
+
+    inner_speed : [rad/s], overrides ``[operating] inner_speed``.
+    centrifugal, gyroscopic : switch the ball inertia effects (both off = static).
+    initial : a previous Dataset / solution to continue from (speed sweeps).
+    """
+    P = build_problem(case, inner_speed=inner_speed, centrifugal=centrifugal, gyroscopic=gyroscopic)
+    sol = solve(P, initial=initial)
+    return to_dataset(sol, case)
+
+
+def speed_sweep(case, speeds, **kwargs) -> xr.Dataset:
+    """Solutions at successive inner-ring speeds [rad/s], each continuing from the previous one.
+
+    Returns one Dataset with a leading ``inner_speed`` dimension.
+    """
+    out, prev = [], None
+    P0 = build_problem(case, **kwargs)
+    for w in np.asarray(speeds, dtype=float):
+        sol = solve(replace(P0, omega_i=float(w)), initial=prev)
+        prev = sol
+        out.append(to_dataset(sol, case))
+    ds = xr.concat(out, dim="inner_speed", data_vars="all", coords="minimal", compat="override", join="override")
+    ds = ds.assign_coords(inner_speed=("inner_speed", np.asarray(speeds, dtype=float),
+                                       {"units": "rad/s", "long_name": "inner-ring speed"}))
+    return ds
+
+
+def print_summary(ds: xr.Dataset) -> None:
+    """Human-readable summary of a quasi-static Dataset (``hsbearing quasistatic``)."""
+    deg, rpm = 180.0 / math.pi, 30.0 / math.pi
+    print(f"status: {ds.attrs.get('status', '?')}")
+    if "case_name" in ds.attrs:
+        print(f"case: {ds.attrs['case_name']}  kinematics: {ds.attrs.get('kinematics', '?')}"
+              f"  inner speed: {float(ds.attrs.get('inner_speed', 0.0)) * rpm:.6g} r/min")
+    loads = ds.attrs.get("applied_loads")
+    if loads is not None:
+        print("applied loads: F_x, F_y, F_z [N], M_y, M_z [N m] = " + ", ".join(f"{x:.6g}" for x in np.ravel(loads)))
+    print(f"inner ring: delta_x = {float(ds.inner_ring_axial_displacement) * 1e6:.5f} um, "
+          f"delta_y = {float(ds.inner_ring_radial_displacement_y) * 1e6:.5f} um, "
+          f"delta_z = {float(ds.inner_ring_radial_displacement_z) * 1e6:.5f} um, "
+          f"theta_y = {float(ds.inner_ring_tilt_y) * 1e3:.5f} mrad, theta_z = {float(ds.inner_ring_tilt_z) * 1e3:.5f} mrad")
+    print(f"cage speed: {float(ds.cage_speed) * rpm:.6g} r/min")
+    print(f"{'ball':>4} {'psi':>7} {'Q_i/N':>10} {'Q_o/N':>10} {'a_i/deg':>8} {'a_o/deg':>8} "
+          f"{'p_i/GPa':>8} {'p_o/GPa':>8} {'beta/deg':>8} {'wR/rpm':>9} {'s/r_i':>7} {'s/r_o':>7}")
+    for j in range(ds.sizes["ball"]):
+        s = ds.isel(ball=j)
+        print(f"{j:>4d} {float(s.ball_azimuth) * deg:7.2f} {float(s.inner_contact_load):10.3f} "
+              f"{float(s.outer_contact_load):10.3f} {float(s.inner_contact_angle) * deg:8.3f} "
+              f"{float(s.outer_contact_angle) * deg:8.3f} {float(s.inner_contact_pressure) / 1e9:8.4f} "
+              f"{float(s.outer_contact_pressure) / 1e9:8.4f} {float(s.ball_pitch_angle) * deg:8.3f} "
+              f"{float(s.ball_spin_speed) * rpm:9.1f} {float(s.inner_spin_to_roll):7.4f} {float(s.outer_spin_to_roll):7.4f}")
+    if "inner_film_thickness_central" in ds:
+        print(f"central film thickness: inner {np.nanmin(ds.inner_film_thickness_central.values) * 1e9:.1f}-"
+              f"{np.nanmax(ds.inner_film_thickness_central.values) * 1e9:.1f} nm, outer "
+              f"{np.nanmin(ds.outer_film_thickness_central.values) * 1e9:.1f}-"
+              f"{np.nanmax(ds.outer_film_thickness_central.values) * 1e9:.1f} nm")
+    K = ds.stiffness.values
+    print(f"stiffness: K_xx = {K[0, 0]:.5g} N/m, K_yy = {K[1, 1]:.5g} N/m, K_zz = {K[2, 2]:.5g} N/m, "
+          f"K_theta_y = {K[3, 3]:.5g} N*m/rad, K_theta_z = {K[4, 4]:.5g} N*m/rad")
+    print(f"residual: ring {float(ds.residual_norm):.2e} (relative), balls {float(ds.ball_residual_norm):.2e} N")
+    stats = {k[len('solver_'):]: v for k, v in ds.attrs.items() if k.startswith("solver_")}
+    if stats:
+        print("solver: " + ", ".join(f"{k}={v:.4g}" if isinstance(v, float) else f"{k}={v}" for k, v in stats.items()))
