@@ -212,8 +212,10 @@ def traction_coefficient(A, B, C, D, S):
     """Traction coefficient mu(S) of [1], Eq. 1, extended as an odd function of S.
 
     mu = sign(S) [(A + B|S|) e^(-C|S|) + D - mu0] + mu0 tanh(S / S_EPS),  mu0 = A + D
+       = sign(S) [A expm1(-C|S|) + B |S| e^(-C|S|)] + mu0 tanh(S / S_EPS)
 
-    which is Eq. 1 for S > S_EPS (mu0 = 0 exactly for Eqs. 2-3).
+    which is Eq. 1 for S > S_EPS (mu0 = 0 exactly for Eqs. 2-3).  The second,
+    algebraically identical form avoids the cancellation of A and D at small S.
 
     Parameters
     ----------
@@ -227,7 +229,8 @@ def traction_coefficient(A, B, C, D, S):
     S = np.asarray(S, dtype=float)
     s = np.abs(S)
     mu0 = A + D
-    return np.sign(S) * ((A + B * s) * np.exp(-C * s) + D - mu0) + mu0 * np.tanh(S / S_EPS)  # [1], Eq. 1
+    e = np.exp(-C * s)
+    return np.sign(S) * (A * np.expm1(-C * s) + B * s * e) + mu0 * np.tanh(S / S_EPS)  # [1], Eq. 1
 
 
 # ----------------------------------------------------------------------------
@@ -276,4 +279,4 @@ def mu_nb(A, B, C, D, S):
     s = abs(S)
     mu0 = A + D
     sg = 1.0 if S > 0.0 else (-1.0 if S < 0.0 else 0.0)
-    return sg * ((A + B * s) * math.exp(-C * s) + D - mu0) + mu0 * math.tanh(S / S_EPS)
+    return sg * (A * math.expm1(-C * s) + B * s * math.exp(-C * s)) + mu0 * math.tanh(S / S_EPS)

@@ -1,0 +1,366 @@
+"""Seed 004 traction laws (oils 4109, 4106, 4050): transcription, registry, physics, numba kernels.
+
+Literature: Zhang et al. 2016 (seed 004), Table 1 and Eqs. 1-4; the CSVs in tests/data are
+transcriptions of that text.  Decisions (units, E, R, T, 4050 fallback): docs/traction.md.
+"""
+
+import csv
+import itertools
+import math
+from pathlib import Path
+
+import numba
+import numpy as np
+import pytest
+
+from hsbearing.models import traction
+from hsbearing.models.geometry import curvature_radii
+from hsbearing.models.hertz import reduced_modulus
+from hsbearing.models.traction import zhang2016
+
+DATA = Path(__file__).parent / "data"
+
+# default case (seed 004) inner contact: D = 9.525 mm, dm = 46 mm, fi = 0.52, alpha = 25 deg, GCr15
+D, DM, ALPHA = 9.525e-3, 46e-3, math.radians(25.0)
+RX = float(curvature_radii(D, DM, ALPHA, 0.52, 0.53)[0])
+RY = float(curvature_radii(D, DM, ALPHA, 0.52, 0.53)[1])
+EP = float(reduced_modulus(208e9, 0.3, 208e9, 0.3))
+GAMMA = D * math.cos(ALPHA) / DM
+U_CASE = 14000 * 2 * math.pi / 60 * DM * (1 - GAMMA**2) / 4  # pure-rolling entrainment velocity, ~16.3 m/s
+T130 = 130.0 + 273.15
+
+# operating range in which every default law must be physical (docs/traction.md)
+W_GRID = (0.0, 1e-3, 1.0, 10.0, 50.0, 200.0, 1000.0, 5000.0)
+U_GRID = (2.0, 5.0, 15.0, 40.0)
+T_GRID_C = (20.0, 27.0, 80.0, 130.0, 180.0, 200.0)
+
+
+def _csv_rows(name):
+    with open(DATA / name) as fh:
+        return list(csv.DictReader(line for line in fh if not line.startswith("#")))
+
+
+# ----------------------------------------------------------------------------
+# transcription
+
+
+def test_oil_table_matches_seed_table1_csv():
+    for row in _csv_rows("seed004_oils.csv"):
+        o = traction.OILS[row["oil"]]
+        assert o.eta0 == float(row["eta0_Pa_s"])
+        assert o.alpha == float(row["alpha_per_Pa"])
+        assert o.beta == float(row["beta_per_degC"])
+        assert o.K == float(row["K_N_per_s_degC"])
+    assert set(traction.OILS) == {"4109", "4106", "4050"}
+
+
+def test_printed_law_constants_match_the_transcribed_csv():
+    """Every coefficient and exponent of Eqs. 2-4 in PARAMS equals tests/data/seed004_traction_coefficients.csv."""
+    rows = _csv_rows("seed004_traction_coefficients.csv")
+    assert len(rows) == 3 + 4 + 3 + 4 + 4
+    for row in rows:
+        p = zhang2016.PARAMS[traction.law_id(row["oil"], "printed")]
+        eta0, beta, K = p[0:3]
+        ref = traction.OILS[row["oil"]]
+        assert (eta0, beta, K) == (ref.eta0, ref.beta, ref.K)
+        term = row["term"]
+        if term.startswith("WC_"):
+            idx = {"WC_c2": 5, "WC_c1": 6, "WC_c0": 7}[term]
+            assert p[idx] == float(row["coef"])
+        else:
+            j = "ABCD".index(term[0])
+            assert tuple(p[9 + 4 * j: 13 + 4 * j]) == tuple(float(row[k]) for k in ("coef", "pW", "pU", "pT"))
+
+
+def _independent_printed_mu(oil, S, W, U, T_C, E, R):
+    """Eqs. 1-4 re-implemented straight from the CSV (independent of the package code)."""
+    rows = {r["term"]: r for r in _csv_rows("seed004_traction_coefficients.csv") if r["oil"] == oil}
+    o = traction.OILS[oil]
+    Wb, Ub = W / (E * R**2), o.eta0 * U / (E * R)
+    if oil == "4050":
+        Tb, f = T_C * o.K / (o.eta0 * U**2), 1.0
+    else:
+        Tb = T_C * math.sqrt(o.K * o.eta0 * o.beta) / (E * R)
+        Wc = sum(float(rows[f"WC_c{i}"]["coef"]) * Tb**i for i in range(3))
+        f = abs(Wc / Wb - 1)
+    c = {t: float(rows[t]["coef"]) * Wb ** float(rows[t]["pW"]) * f * Ub ** float(rows[t]["pU"]) * Tb ** float(rows[t]["pT"])
+         for t in ("A_L", "B_L", "C_L", "D_L")}
+    return (c["A_L"] + c["B_L"] * S) * math.exp(-c["C_L"] * S) + c["D_L"]
+
+
+@pytest.mark.parametrize("oil", ["4109", "4106", "4050"])
+def test_printed_law_equals_independent_evaluation(oil):
+    mu = traction.get(oil, "printed")
+    for S, W, U, Tc in itertools.product((0.01, 0.05, 0.2, 1.0), (50.0, 1000.0), (8.0, 16.0), (27.0, 130.0, 180.0)):
+        assert mu(S, W, U, Tc + 273.15, EP, RX) == pytest.approx(_independent_printed_mu(oil, S, W, U, Tc, EP, RX), rel=1e-12)
+
+
+# ----------------------------------------------------------------------------
+# registry
+
+
+def test_unknown_oil_lists_known_oils():
+    with pytest.raises(ValueError) as e:
+        traction.get("9999")
+    for oil in ("4109", "4106", "4050"):
+        assert oil in str(e.value)
+
+
+def test_unknown_law_lists_known_laws():
+    with pytest.raises(ValueError) as e:
+        traction.get("4109", "analogue_4106")
+    assert "printed" in str(e.value) and "bounded" in str(e.value)
+
+
+def test_registry_defaults_and_ids():
+    assert traction.law_name("4109") == "bounded"
+    assert traction.law_name("4106") == "bounded"
+    assert traction.law_name("4050") == "analogue_4106"
+    ids = {traction.law_id(o, law) for o in traction.OILS for law in traction.KNOWN_LAWS[o]}
+    assert ids == set(range(len(zhang2016.PARAMS)))
+    mu = traction.get(4050)  # numeric name accepted
+    assert mu.oil == "4050" and mu.law == "analogue_4106" and mu.law_id == traction.law_id("4050")
+
+
+def test_every_case_oil_has_a_law():
+    """The closed vocabulary of case.py (traction.OILS) and the registry agree."""
+    for oil in traction.OILS:
+        assert callable(traction.get(oil))
+
+
+def test_temperature_at_or_below_zero_celsius_is_rejected():
+    with pytest.raises(ValueError, match="degC"):
+        traction.get("4109")(0.05, 500.0, 15.0, 273.15, EP, RX)
+
+
+def test_contact_mu_maps_onto_E_prime_and_Rx():
+    S = np.linspace(-0.2, 0.2, 9)
+    for oil in traction.OILS:
+        ref = traction.get(oil)(S, 700.0, U_CASE, T130, EP, RX)
+        got = traction.contact_mu(oil, S, 700.0, U_CASE, T130, EP, RX, RY)
+        np.testing.assert_array_equal(got, ref)
+
+
+def test_vectorised_broadcasting():
+    mu = traction.get("4106")
+    out = mu(np.linspace(0, 0.2, 5)[:, None, None], np.array([100.0, 1000.0])[None, :, None],
+             U_CASE, np.array([300.0, 400.0, 450.0])[None, None, :], EP, RX)
+    assert out.shape == (5, 2, 3) and np.all(np.isfinite(out))
+
+
+# ----------------------------------------------------------------------------
+# physics of the default laws
+
+
+@pytest.mark.parametrize("oil", ["4109", "4106", "4050"])
+def test_mu_zero_at_zero_slip_and_odd(oil):
+    mu = traction.get(oil)
+    S = np.linspace(0.0, 1.0, 201)
+    for W, U, Tc in itertools.product(W_GRID, U_GRID, T_GRID_C):
+        T = Tc + 273.15
+        assert mu(0.0, W, U, T, EP, RX) == 0.0
+        np.testing.assert_allclose(mu(-S, W, U, T, EP, RX), -mu(S, W, U, T, EP, RX), rtol=0, atol=1e-15)
+
+
+@pytest.mark.parametrize("oil", ["4109", "4106"])
+def test_printed_4109_4106_start_at_zero(oil):
+    """Eqs. 2-3 print A_L = -D_L, so mu(0+) = A_L + D_L = 0 exactly (no regularisation needed)."""
+    lid = traction.law_id(oil, "printed")
+    A, B, C, D = zhang2016.coefficients(lid, np.array([50.0, 1000.0]), U_CASE, T130, EP, RX)
+    np.testing.assert_array_equal(A + D, 0.0)
+
+
+@pytest.mark.parametrize("oil", ["4109", "4106", "4050"])
+def test_default_laws_bounded_over_operating_grid(oil):
+    mu = traction.get(oil)
+    S = np.linspace(-1.0, 1.0, 401)[:, None]
+    worst = 0.0
+    for W, U, Tc in itertools.product(W_GRID, U_GRID, T_GRID_C):
+        m = mu(S, W, U, Tc + 273.15, EP, RX)
+        assert np.all(np.isfinite(m))
+        worst = max(worst, float(np.abs(m).max()))
+    assert worst < 0.2, worst
+
+
+def _critical_load(oil, T_C, law="default"):
+    """W_c [N] of Eqs. 2-3 on the default-case inner contact (E', Rx)."""
+    p = zhang2016.PARAMS[traction.law_id(oil, law)]
+    Tb = T_C * math.sqrt(p[2] * p[0] * p[1]) / (EP * RX)
+    return (p[5] * Tb * Tb + p[6] * Tb + p[7]) * EP * RX * RX
+
+
+@pytest.mark.parametrize("oil", ["4109", "4106", "4050"])
+def test_default_laws_have_an_ehl_traction_shape(oil):
+    """Bearing loads (>= 100 N) outside the critical-load notch (|Wc/W - 1| >= 0.3): rises from 0 with
+    positive slope, saturates at 0.002-0.05 by S = 0.5, at most a mild decay after a peak."""
+    mu = traction.get(oil)
+    S = np.linspace(0.0, 1.0, 2001)
+    n = 0
+    for W, U, Tc in itertools.product((100.0, 300.0, 1000.0, 3000.0), (5.0, 15.0, 40.0), (27.0, 80.0, 130.0, 180.0)):
+        if abs(_critical_load(oil, Tc) / W - 1.0) < 0.3:
+            continue
+        n += 1
+        m = mu(S, W, U, Tc + 273.15, EP, RX)
+        assert m[1] > 0.0
+        assert 0.002 < m.max() < 0.05, (W, U, Tc, m.max())
+        assert abs(m[-1] - m[S.searchsorted(0.5)]) < 0.1 * m.max()  # plateau, not linear growth
+        assert m.max() <= 1.25 * m[-1]  # a peak then a mild (thermal) decay, never a collapse
+    assert n >= 40
+
+
+@pytest.mark.parametrize("oil", ["4109", "4106", "4050"])
+def test_traction_vanishes_at_the_critical_load(oil):
+    """A property of Eqs. 2-3 as printed (documented, kept): every coefficient carries |Wc/W - 1|,
+    so at W = Wc the law gives mu = 0 for all S (a notch in W, continuous but not smooth).
+    (Wc of Eq. 3 turns negative above ~190 degC for 4106 and ~172 degC for the 4050 analogue on this
+    contact: no notch there.)"""
+    n = 0
+    for Tc in (27.0, 80.0, 130.0, 180.0):
+        Wc = _critical_load(oil, Tc)
+        if Wc <= 0:
+            assert oil == "4050" and Tc > 172.0
+            continue
+        n += 1
+        mu = traction.get(oil)
+        at = np.abs(mu(np.linspace(0, 1, 11), Wc, U_CASE, Tc + 273.15, EP, RX)).max()
+        away = np.abs(mu(np.linspace(0, 1, 11), 3 * Wc, U_CASE, Tc + 273.15, EP, RX)).max()
+        assert at < 1e-6 * away
+    assert n >= 3
+
+
+def test_force_vanishes_with_load_for_bounded_laws():
+    """Far below the critical load the printed |Wc/W-1| makes mu ~ 1/W; the bounded readings keep mu W -> 0."""
+    for oil in traction.OILS:
+        mu = traction.get(oil)
+        W = np.array([1e-6, 1e-3, 0.1, 1.0])
+        F = mu(0.1, W, U_CASE, 180.0 + 273.15, EP, RX) * W
+        assert np.all(np.diff(F) > 0) and F[0] < 1e-6
+    printed = traction.get("4109", "printed")
+    F_printed = printed(0.1, np.array([0.1, 1.0]), U_CASE, 180.0 + 273.15, EP, RX) * np.array([0.1, 1.0])
+    assert F_printed[0] > 0.5 * F_printed[1]  # the printed law's force does not vanish: the reason for "bounded"
+
+
+@pytest.mark.parametrize("oil", ["4109", "4106"])
+def test_bounded_equals_printed_at_bearing_loads(oil):
+    """The saturation only acts far below the critical load: < 1e-4 relative above W = 3 Wc (>= 350 N here)."""
+    S = np.linspace(-0.3, 0.3, 61)
+    for W, Tc in itertools.product((350.0, 1000.0, 3000.0), (27.0, 80.0, 130.0, 180.0)):
+        a = traction.get(oil, "bounded")(S, W, U_CASE, Tc + 273.15, EP, RX)
+        b = traction.get(oil, "printed")(S, W, U_CASE, Tc + 273.15, EP, RX)
+        np.testing.assert_allclose(a, b, rtol=1e-4, atol=1e-12)
+
+
+def test_slope_continuous_at_zero_slip():
+    """C^1 at S = 0: the odd extension has equal one-sided slopes B - A C."""
+    for oil in traction.OILS:
+        lid = traction.law_id(oil)
+        A, B, C, D = (float(x) for x in zhang2016.coefficients(lid, 800.0, U_CASE, T130, EP, RX))
+        mu = traction.get(oil)
+        h = 1e-7
+        right = (mu(h, 800.0, U_CASE, T130, EP, RX) - mu(0.0, 800.0, U_CASE, T130, EP, RX)) / h
+        left = (mu(0.0, 800.0, U_CASE, T130, EP, RX) - mu(-h, 800.0, U_CASE, T130, EP, RX)) / h
+        assert right == pytest.approx(B - A * C, rel=1e-5)
+        assert left == pytest.approx(right, rel=1e-5)
+
+
+def test_trends_of_the_fitted_laws():
+    """Plateau falls with rolling speed (Ubar exponents < 0) and, for 4106, rises with load above W_c."""
+    for oil in traction.OILS:
+        mu = traction.get(oil)
+        m = [float(mu(0.5, 1000.0, U, T130, EP, RX)) for U in (5.0, 15.0, 40.0)]
+        assert m[0] > m[1] > m[2]
+    mu = traction.get("4106")
+    assert mu(0.5, 1000.0, U_CASE, T130, EP, RX) > mu(0.5, 100.0, U_CASE, T130, EP, RX)
+
+
+# ----------------------------------------------------------------------------
+# the 4050 anomaly (printed Eq. 4) and the convention evidence
+
+
+def test_printed_4050_reproduces_the_documented_anomaly():
+    """Eq. 4 as printed, SI, T in degC: C_L ~ 1e-26, so mu = D_L + B_L S grows linearly (~0.27 at S = 1)."""
+    lid = traction.law_id("4050", "printed")
+    A, B, C, D = (float(x) for x in zhang2016.coefficients(lid, 1000.0, 15.0, T130, EP, RX))
+    assert C < 1e-20
+    assert 0.2 < B < 0.35 and abs(A) < 1e-10 and 0 < D < 1e-3
+    mu = traction.get("4050", "printed")
+    m1, mhalf = float(mu(1.0, 1000.0, 15.0, T130, EP, RX)), float(mu(0.5, 1000.0, 15.0, T130, EP, RX))
+    assert m1 == pytest.approx(0.27, abs=0.02)  # the issue's "mu ~ 0.3 at S = 1"
+    assert m1 / mhalf == pytest.approx(2.0, rel=0.01)  # linear, no saturation
+    assert mu(1.0, 1000.0, 15.0, T130, EP, RX) == pytest.approx(_independent_printed_mu("4050", 1.0, 1000.0, 15.0, 130.0, EP, RX), rel=1e-12)
+
+
+def test_no_unit_reading_makes_eq4_a_traction_curve():
+    """Physical D_L, C_L, B_L of Eq. 4 would need Ubar ~ 1e12-1e21 (SI gives ~1e-9): no unit choice bridges that."""
+    M = np.array([[0.3403, 0.4748, 0.2488], [0.3831, 2.9404, 1.6113], [-0.1372, 0.2116, 0.1766]])
+    for Dt, Ct, peak in ((0.02, 30.0, 0.05), (0.04, 100.0, 0.08)):
+        Wb, Ub, Tb = np.exp(np.linalg.solve(M, np.log([Dt / 16.7177, Ct / 61.4605, peak * Ct * np.e / 7.2804])))
+        assert Ub > 1e12 and Wb < 1e-10 and Tb < 1e-20
+
+
+def test_critical_load_positive_only_with_celsius():
+    """Evidence for T in degC: 4106's critical load Wc of Eq. 3 is positive over 27-180 degC in degC,
+    negative (meaningless) if T is taken in kelvin."""
+    p = zhang2016.PARAMS[traction.law_id("4106", "printed")]
+    for Tc in (27.0, 80.0, 130.0, 180.0):
+        for T, sign in ((Tc, 1), (Tc + 273.15, -1)):
+            Tb = T * math.sqrt(p[2] * p[0] * p[1]) / (EP * RX)
+            Wc = p[5] * Tb * Tb + p[6] * Tb + p[7]
+            assert sign * Wc > 0
+
+
+def test_analogue_4050_is_eq3_with_4050_properties():
+    lid = traction.law_id("4050", "analogue_4106")
+    p, p6 = zhang2016.PARAMS[lid], zhang2016.PARAMS[traction.law_id("4106", "bounded")]
+    o = traction.OILS["4050"]
+    assert tuple(p[:3]) == (o.eta0, o.beta, o.K)
+    np.testing.assert_array_equal(p[3:], p6[3:])
+
+
+# ----------------------------------------------------------------------------
+# numba kernels
+
+
+def _random_inputs(n=400, seed=1):
+    rng = np.random.default_rng(seed)
+    W = 10 ** rng.uniform(-1, 3.7, n)
+    U = rng.uniform(1.0, 40.0, n)
+    T = rng.uniform(293.15, 473.15, n)
+    R = rng.uniform(2e-3, 8e-3, n)
+    S = rng.uniform(-1.0, 1.0, n)
+    S[:5] = (0.0, 1e-6, -1e-6, 1e-3, -0.3)
+    return W, U, T, R, S
+
+
+@pytest.mark.parametrize("lid", range(6))
+def test_numba_kernel_matches_numpy(lid):
+    W, U, T, R, S = _random_inputs()
+    A, B, C, D = zhang2016.coefficients(lid, W, U, T, EP, R)
+    ref = zhang2016.traction_coefficient(A, B, C, D, S)
+    for i in range(len(W)):
+        c = zhang2016.coefficients_nb(lid, W[i], U[i], T[i], EP, R[i])
+        np.testing.assert_allclose(c, (A[i], B[i], C[i], D[i]), rtol=1e-12, atol=0)
+        assert zhang2016.mu_nb(*c, S[i]) == pytest.approx(ref[i], rel=1e-12, abs=1e-300)
+
+
+def test_numba_kernel_callable_from_nopython_code():
+    lid = traction.law_id("4109")
+
+    @numba.njit
+    def total(n):
+        acc = 0.0
+        for j in range(n):
+            A, B, C, D = zhang2016.coefficients_nb(lid, 100.0 + j, 15.0, 403.15, EP, RX)
+            acc += zhang2016.mu_nb(A, B, C, D, 0.01 * (j % 7 - 3))
+        return acc
+
+    val = total(1000)
+    assert math.isfinite(val)
+
+
+def test_numba_kernel_survives_zero_load_and_speed():
+    for lid in range(6):
+        c = zhang2016.coefficients_nb(lid, 0.0, 0.0, 403.15, EP, RX)
+        if traction.law_id("4050", "printed") != lid:
+            assert all(math.isfinite(x) for x in c)
+            assert math.isfinite(zhang2016.mu_nb(*c, 0.1))
