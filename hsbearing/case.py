@@ -209,6 +209,7 @@ SCHEMA: dict[str, dict[str, Field]] = {
         "static_load_rating": _f("force", "basic static load rating C_0 (SKF model contact angle alpha_F)", positive=True),
         "skf_reading": _f("choice", "G_sl under combined load: SKF catalogue, or the seed 003 reading", default="catalogue", choices=("catalogue", "seed003")),
         "skf_drag_variable": _f("number", "SKF drag-loss variable V_M read from the catalogue diagram (oil bath only)", nonneg=True),
+        "spin_torque_reading": _f("choice", "seed 003 spinning torque: dissipated power m_s omega_s / omega, or Tong-Hong projection sum |m_s| sin(alpha)", default="power", choices=("power", "projection")),
     },
     "simulation": {
         "duration": _f("time", "simulated time", default="0.05 s", positive=True),
