@@ -100,20 +100,27 @@ def steady_mask(t, transient_fraction: float = DEFAULT_TRANSIENT_FRACTION) -> tu
 
 
 def crossing_times(t, phase, period: float = 2.0 * np.pi) -> np.ndarray:
-    """Times at which a (mostly increasing) ``phase`` crosses a multiple of ``period``.
+    """Times at which a (mostly increasing) ``phase`` first crosses each multiple of ``period``.
 
-    Linear interpolation between the bracketing samples.  Only upward crossings
-    are counted (a cage rocking back across a multiple of 2 pi is not a new
-    revolution).
+    Linear interpolation between the bracketing samples.  Only the first
+    upward crossing of each multiple counts (a cage rocking back and forth
+    across a multiple of 2 pi is not a new revolution); a sample step that
+    jumps over several multiples gives one crossing for each.
     """
     t = np.asarray(t, dtype=float)
-    k = np.floor(np.asarray(phase, dtype=float) / period)
-    idx = np.nonzero(k[1:] > k[:-1])[0]
+    phase = np.asarray(phase, dtype=float)
+    if t.size < 2:
+        return np.zeros(0)
+    k = np.maximum.accumulate(np.floor(phase / period))  # highest multiple reached so far
+    jump = (k[1:] - k[:-1]).astype(int)
+    idx = np.repeat(np.nonzero(jump > 0)[0], jump[jump > 0])
     if idx.size == 0:
         return np.zeros(0)
-    target = k[idx + 1] * period
+    # multiples crossed in each step: k[i] + 1, ..., k[i + 1]
+    offs = np.concatenate([np.arange(1, j + 1) for j in jump[jump > 0]])
+    target = (k[idx] + offs) * period
     p0, p1 = phase[idx], phase[idx + 1]
-    frac = (target - p0) / (p1 - p0)
+    frac = np.clip((target - p0) / (p1 - p0), 0.0, 1.0)
     return t[idx] + frac * (t[idx + 1] - t[idx])
 
 

@@ -1,0 +1,297 @@
+"""The run figure (``hsbearing run`` / ``hsbearing plot OUT.nc``).
+
+:func:`plot_run` dispatches on the Dataset:
+
+- ``attrs["model"] == "gyro_ribbon_cage"`` -> :func:`hsbearing.models.friction.gyro.plot_run`;
+- no ``time`` dimension (quasi-static result) -> per-ball contact loads and angles;
+- otherwise the dynamic-run figure: (a) cage whirl orbit D_Y-D_Z with the
+  guide clearance circle, (b) Poincare map (D_Y, V_Y) -- the same section
+  points as the stored classification (:mod:`hsbearing.analysis.poincare`),
+  (c) cage speed against time with the pure-rolling speed, (d) cage slip ratio.
+
+Matplotlib is used through its object API with the Agg canvas (no pyplot, no
+global backend change), and the PNG is written atomically (temporary file in
+the target directory, then rename).
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import tempfile
+import tomllib
+from pathlib import Path
+
+import numpy as np
+
+__all__ = ["plot_run", "title_lines"]
+
+_RPM = 60.0 / (2.0 * math.pi)
+
+
+def _save(fig, path: Path) -> Path:
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    FigureCanvasAgg(fig)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.stem}.", suffix=path.suffix or ".png", dir=path.parent)
+    os.close(fd)
+    try:
+        fig.savefig(tmp, dpi=110)
+        os.replace(tmp, path)
+    except BaseException:
+        try:
+            os.unlink(tmp)
+        except FileNotFoundError:
+            pass
+        raise
+    return path
+
+
+def _case_labels(ds) -> dict[str, str]:
+    """Readable operating-condition labels from the ``case_toml`` attr (empty dict if absent)."""
+    from hsbearing.case import parse_quantity
+
+    text = ds.attrs.get("case_toml")
+    if not text:
+        return {}
+    try:
+        raw = tomllib.loads(text)
+    except tomllib.TOMLDecodeError:
+        return {}
+    out = {}
+    lub, op = raw.get("lubricant", {}), raw.get("operating", {})
+
+    def q(table, key, kind):
+        try:
+            return parse_quantity(table[key], kind) if key in table else None
+        except Exception:
+            return None
+
+    if "oil" in lub:
+        out["oil"] = f"oil {lub['oil']}"
+    T = q(lub, "temperature", "temperature")
+    if T is not None:
+        out["temperature"] = f"T = {T - 273.15:.0f} \N{DEGREE SIGN}C"
+    n = q(op, "inner_speed", "angular_speed")
+    if n is not None:
+        out["speed"] = f"n = {n * _RPM:.0f} r/min"
+    Fa = q(op, "axial_load", "force")
+    if Fa is not None:
+        out["axial_load"] = f"Fa = {Fa:.0f} N"
+    Fr = q(op, "radial_load", "force")
+    if Fr:
+        out["radial_load"] = f"Fr = {Fr:.0f} N"
+    return out
+
+
+def title_lines(ds) -> list[str]:
+    """Figure title: case name and operating conditions; classification, slip and status."""
+    name = ds.attrs.get("case_name", "hsbearing run")
+    lab = _case_labels(ds)
+    first = ", ".join([name] + [lab[k] for k in ("oil", "speed", "axial_load", "radial_load", "temperature") if k in lab])
+    parts = []
+    if "classification" in ds.attrs:
+        conf = ds.attrs.get("classification_confidence")
+        c = f"cage motion: {ds.attrs['classification']}"
+        if conf is not None and ds.attrs["classification"] != "undetermined":
+            c += f" (confidence {float(conf):.2f})"
+        parts.append(c)
+    if "mean_cage_slip_ratio" in ds and np.isfinite(float(ds["mean_cage_slip_ratio"])):
+        parts.append(f"mean cage slip ratio {100 * float(ds['mean_cage_slip_ratio']):.2f} %")
+    status = ds.attrs.get("status", "")
+    if status and status != "ok":
+        parts.append(f"status: {status}")
+    return [first, "; ".join(parts)] if parts else [first]
+
+
+def plot_run(ds, path) -> Path:
+    """Draw the figure of a result Dataset to ``path`` (PNG) and return the path.
+
+    See the module docstring for the dispatch.  A dynamic run that was not
+    annotated is annotated first (:func:`hsbearing.analysis.annotate`, with the
+    case re-read from ``attrs["case_toml"]``) so the figure shows the slip
+    ratio, the Poincare map and the classification.
+    """
+    path = Path(path)
+    if ds.attrs.get("model") == "gyro_ribbon_cage":
+        from hsbearing.models.friction import gyro
+
+        return gyro.plot_run(ds, path)
+    if "time" not in ds.dims:
+        return _plot_static(ds, path)
+    return _plot_dynamic(ds, path)
+
+
+def _figure(figsize):
+    from matplotlib.figure import Figure
+
+    return Figure(figsize=figsize, layout="constrained")
+
+
+def _plot_dynamic(ds, path: Path) -> Path:
+    from hsbearing.analysis import orbit, poincare
+
+    if "classification" not in ds.attrs and all(v in ds.variables for v in orbit.REQUIRED):
+        try:
+            ds = orbit.annotate(ds)
+        except Exception as exc:  # the figure still shows the raw signals
+            ds = ds.copy()
+            ds.attrs["classification"] = "undetermined"
+            ds.attrs["classification_reason"] = f"analysis failed: {exc}"
+    t = np.asarray(ds["time"].values, float)
+    tf = float(ds.attrs.get("transient_fraction", poincare.DEFAULT_TRANSIENT_FRACTION))
+    mask, t_tr = poincare.steady_mask(t, tf)
+    t_ms = (t - t[0]) * 1e3 if t.size else t
+
+    fig = _figure((12.5, 9.5))
+    axs = fig.subplots(2, 2)
+    fig.suptitle("\n".join(title_lines(ds)), fontsize=11)
+
+    # (a) whirl orbit
+    ax = axs[0, 0]
+    if "cage_center_y" in ds and "cage_center_z" in ds:
+        y = np.asarray(ds["cage_center_y"].values, float) * 1e6
+        z = np.asarray(ds["cage_center_z"].values, float) * 1e6
+        ax.plot(y[~mask], z[~mask], color="0.75", lw=0.6, label=f"transient (first {t_tr * 1e3:.3g} ms)")
+        ax.plot(y[mask], z[mask], color="C0", lw=0.8, label="after transient")
+        rmax = float(np.nanmax(np.hypot(y, z))) if y.size and np.any(np.isfinite(y)) else 0.0
+        gc = ds.attrs.get("guide_clearance")
+        view = max(rmax, 1e-3) * 1.15
+        if gc is not None and np.isfinite(gc) and gc > 0:
+            gcu = float(gc) * 1e6
+            th = np.linspace(0, 2 * np.pi, 361)
+            if rmax > 0.25 * gcu:
+                view = max(view, 1.08 * gcu)
+                ax.plot(gcu * np.cos(th), gcu * np.sin(th), "r--", lw=1.0, label=f"guide clearance {gcu:.0f} \u00b5m")
+            else:
+                ax.plot([], [], "r--", lw=1.0,
+                        label=f"guide clearance {gcu:.0f} \u00b5m (off view: orbit uses {100 * rmax / gcu:.1f} %)")
+        ax.plot([0], [0], "k+", ms=8)
+        ax.set_xlim(-view, view)
+        ax.set_ylim(-view, view)
+        ax.set_aspect("equal", adjustable="box")
+        ax.set_xlabel("cage centre $D_Y$ [\u00b5m]")
+        ax.set_ylabel("cage centre $D_Z$ [\u00b5m]")
+        amp = float(ds["whirl_amplitude"]) * 1e6 if "whirl_amplitude" in ds else float("nan")
+        ratio = float(ds["whirl_frequency_ratio"]) if "whirl_frequency_ratio" in ds else float("nan")
+        ttl = "(a) cage whirl orbit"
+        if np.isfinite(amp):
+            ttl += f": RMS radius {amp:.3g} \u00b5m"
+        if np.isfinite(ratio):
+            ttl += f", whirl/cage speed {ratio:.3g}"
+        ax.set_title(ttl, fontsize=10)
+        ax.legend(fontsize=8, loc="upper right")
+        ax.grid(alpha=0.3)
+
+    # (b) Poincare map
+    ax = axs[0, 1]
+    try:
+        pts = poincare.poincare_points(ds, ds.attrs.get("poincare_section_kind", "cage_revolution"), tf)
+    except Exception:
+        pts = np.zeros((0, 2))
+    if len(pts):
+        sc = ax.scatter(pts[:, 0] * 1e6, pts[:, 1] * 1e3, c=np.arange(len(pts)), cmap="viridis", s=14, zorder=3)
+        cb = fig.colorbar(sc, ax=ax, pad=0.01)
+        cb.set_label("section index (time \u2192)")
+        # orbit in the same plane, faint, to show where the section lies
+        if "cage_center_y" in ds:
+            vy = poincare.cage_velocity(ds, "y")
+            ax.plot(np.asarray(ds["cage_center_y"].values)[mask] * 1e6, vy[mask] * 1e3, color="0.85", lw=0.4, zorder=1)
+    else:
+        ax.text(0.5, 0.5, "no Poincare section point\n(run shorter than one cage revolution after the transient)",
+                ha="center", va="center", transform=ax.transAxes)
+    ax.set_xlabel("cage centre $D_Y$ [\u00b5m]")
+    ax.set_ylabel("cage centre velocity $V_Y$ [mm/s]")
+    lab = ds.attrs.get("classification", "")
+    conf = ds.attrs.get("classification_confidence")
+    ttl = f"(b) Poincar\u00e9 map, {len(pts)} points (one per cage revolution)"
+    if ds.attrs.get("poincare_section_kind") == "plane":
+        ttl = f"(b) Poincar\u00e9 map, {len(pts)} points (plane D_Z = mean, upward)"
+    ax.set_title(ttl, fontsize=10)
+    if lab:
+        txt = lab if lab == "undetermined" or conf is None else f"{lab} (confidence {float(conf):.2f})"
+        reason = ds.attrs.get("classification_reason", "")
+        if lab == "undetermined" and reason:
+            txt += "\n" + _wrap(reason, 60)
+        ax.text(0.02, 0.98, txt, transform=ax.transAxes, va="top", fontsize=9,
+                bbox=dict(boxstyle="round", fc="white", ec="0.6", alpha=0.9))
+    ax.grid(alpha=0.3)
+
+    # (c) cage speed
+    ax = axs[1, 0]
+    if "cage_speed" in ds:
+        w = np.asarray(ds["cage_speed"].values, float) * _RPM
+        ax.plot(t_ms, w, color="C0", lw=0.8, label="cage speed")
+        if "theoretical_cage_speed" in ds:
+            wth = float(ds["theoretical_cage_speed"]) * _RPM
+            ax.axhline(wth, color="k", ls="--", lw=0.9, label=f"pure rolling {wth:.0f} r/min")
+        _shade(ax, t_tr * 1e3)
+        ax.legend(fontsize=8, loc="lower right")
+    ax.set_xlabel("time [ms]")
+    ax.set_ylabel("cage speed [r/min]")
+    ax.set_title("(c) cage speed", fontsize=10)
+    ax.grid(alpha=0.3)
+
+    # (d) slip ratio
+    ax = axs[1, 1]
+    if "cage_slip_ratio" in ds:
+        s = np.asarray(ds["cage_slip_ratio"].values, float) * 100
+        ax.plot(t_ms, s, color="C3", lw=0.8, label="cage slip ratio")
+        if "mean_cage_slip_ratio" in ds and np.isfinite(float(ds["mean_cage_slip_ratio"])):
+            ms = 100 * float(ds["mean_cage_slip_ratio"])
+            ax.axhline(ms, color="k", ls=":", lw=0.9, label=f"mean after transient {ms:.2f} %")
+        _shade(ax, t_tr * 1e3)
+        ax.legend(fontsize=8, loc="lower right")
+    else:
+        ax.text(0.5, 0.5, "no cage slip ratio (case unknown)", ha="center", va="center", transform=ax.transAxes)
+    ax.set_xlabel("time [ms]")
+    ax.set_ylabel("cage slip ratio $(\\omega_{c,th}-\\omega_c)/\\omega_{c,th}$ [%]")
+    ax.set_title("(d) cage slip ratio", fontsize=10)
+    ax.grid(alpha=0.3)
+    return _save(fig, path)
+
+
+def _shade(ax, t_end_ms):
+    if t_end_ms > 0:
+        ax.axvspan(0.0, t_end_ms, color="0.9", zorder=0, label="transient (discarded)")
+
+
+def _wrap(text: str, width: int) -> str:
+    import textwrap
+
+    return "\n".join(textwrap.wrap(text, width))
+
+
+def _plot_static(ds, path: Path) -> Path:
+    fig = _figure((11, 4.8))
+    ax1, ax2 = fig.subplots(1, 2)
+    fig.suptitle("\n".join(title_lines(ds)), fontsize=11)
+    nb = None
+    for name, lab, c in (("inner_contact_load", "inner race $Q_i$", "C0"), ("outer_contact_load", "outer race $Q_o$", "C1")):
+        if name in ds:
+            q = np.atleast_1d(np.asarray(ds[name].values, float))
+            nb = len(q)
+            x = np.arange(1, nb + 1)
+            off = -0.2 if "inner" in name else 0.2
+            ax1.bar(x + off, q, width=0.4, color=c, label=lab)
+    ax1.set_xlabel("ball")
+    ax1.set_ylabel("contact load [N]")
+    ax1.set_title("contact loads per ball", fontsize=10)
+    if nb:
+        ax1.set_xticks(np.arange(1, nb + 1))
+        ax1.legend(fontsize=8)
+    ax1.grid(alpha=0.3, axis="y")
+    for name, lab, c in (("inner_contact_angle", "inner race $\\alpha_i$", "C0"), ("outer_contact_angle", "outer race $\\alpha_o$", "C1")):
+        if name in ds:
+            a = np.degrees(np.atleast_1d(np.asarray(ds[name].values, float)))
+            ax2.plot(np.arange(1, len(a) + 1), a, "o-", color=c, label=lab)
+    ax2.set_xlabel("ball")
+    ax2.set_ylabel("contact angle [\N{DEGREE SIGN}]")
+    ax2.set_title("contact angles per ball", fontsize=10)
+    if nb:
+        ax2.set_xticks(np.arange(1, nb + 1))
+        ax2.legend(fontsize=8)
+    ax2.grid(alpha=0.3)
+    return _save(fig, path)
