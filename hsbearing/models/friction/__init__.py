@@ -14,7 +14,6 @@
 from __future__ import annotations
 
 import math
-import sys
 
 import numpy as np
 
@@ -161,7 +160,6 @@ def friction_torque(case, speeds="500,5000,15000rpm", *, traction: str = "strip"
     g = geometry.derive(case)
     fr, lub = case.friction, case.lubricant
     skf = skf2004.skf_moments(case, w)
-    n_rpm = w * 60.0 / (2.0 * math.pi)
     if fr.law == "stribeck":
         mu = skf["skf_sliding_coefficient"]
     else:
@@ -176,7 +174,13 @@ def friction_torque(case, speeds="500,5000,15000rpm", *, traction: str = "strip"
         else:
             psi, Q, al, states = contact_states(case, wi, source=contacts)
             balls = [sp.solve_ball(st, g.D, g.dm, outer_speed_ratio=speed_ratio, traction=traction) for st in states]
-            per_mu = np.array([[b.spin_power, b.rotation_power, b.orbital_power] for b in balls]).sum(axis=0)
+            if fr.spin_torque_reading == "projection":
+                # [S] Eq. 8 read as Tong & Hong: M_s = sum_j (|m_s,i| sin a_i + |m_s,e| sin a_e)
+                spin = sum(abs(b.spin_moment[0]) * abs(math.sin(st.alpha[0])) + abs(b.spin_moment[1]) * abs(math.sin(st.alpha[1]))
+                           for b, st in zip(balls, states))
+            else:  # dissipated power of the spin tractions over omega_i (energy-consistent)
+                spin = sum(b.spin_power for b in balls)
+            per_mu = np.array([spin, sum(b.rotation_power for b in balls), sum(b.orbital_power for b in balls)])
             if prl is None:
                 prl = (Q, al, np.array([[b.prl[0][0], b.prl[0][1], b.prl[1][0], b.prl[1][1]] for b in balls]))
             cache = per_mu
@@ -197,7 +201,7 @@ def friction_torque(case, speeds="500,5000,15000rpm", *, traction: str = "strip"
         case, "ok", title="hsbearing friction torque (seed 003 sliding method, SKF 2004 model)",
         friction_law=fr.law, traction_model=traction, contact_source=contacts,
         kinematic_viscosity_mm2_s=lub.kinematic_viscosity * 1e6 if lub.kinematic_viscosity else None,
-        skf_reading=fr.skf_reading,
+        skf_reading=fr.skf_reading, spin_torque_reading=fr.spin_torque_reading,
         note="ball data (contact_load/angle, PRLs) at the first speed; torques in N m",
     )
     return make_dataset(data, coords={"speed": w, "ball": np.arange(g.Z)}, attrs=attrs)
