@@ -182,7 +182,7 @@ def _plot_dynamic(ds, path: Path) -> Path:
         if np.isfinite(ratio):
             ttl += f", whirl/cage speed {ratio:.3g}"
         ax.set_title(ttl, fontsize=10)
-        ax.legend(fontsize=8, loc="upper right")
+        ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=2, frameon=False)
         ax.grid(alpha=0.3)
 
     # (b) Poincare map
@@ -195,6 +195,10 @@ def _plot_dynamic(ds, path: Path) -> Path:
         sc = ax.scatter(pts[:, 0] * 1e6, pts[:, 1] * 1e3, c=np.arange(len(pts)), cmap="viridis", s=14, zorder=3)
         cb = fig.colorbar(sc, ax=ax, pad=0.01)
         cb.set_label("section index (time \u2192)")
+        from matplotlib.ticker import MaxNLocator
+
+        cb.locator = MaxNLocator(integer=True)
+        cb.update_ticks()
         # orbit in the same plane, faint, to show where the section lies
         if "cage_center_y" in ds:
             vy = poincare.cage_velocity(ds, "y")
@@ -267,7 +271,9 @@ def _wrap(text: str, width: int) -> str:
 def _plot_static(ds, path: Path) -> Path:
     fig = _figure((11, 4.8))
     ax1, ax2 = fig.subplots(1, 2)
-    fig.suptitle("\n".join(title_lines(ds)), fontsize=11)
+    lines = title_lines(ds)
+    lines[0] = "quasi-static equilibrium: " + lines[0]
+    fig.suptitle("\n".join(lines), fontsize=11)
     nb = None
     for name, lab, c in (("inner_contact_load", "inner race $Q_i$", "C0"), ("outer_contact_load", "outer race $Q_o$", "C1")):
         if name in ds:

@@ -1,0 +1,127 @@
+"""The run figure: dispatch, content of the title, atomic write, `hsbearing plot`."""
+
+from __future__ import annotations
+
+import sys
+import types
+
+import numpy as np
+import pytest
+
+import hsbearing
+from hsbearing import plotting
+from hsbearing.analysis import annotate
+from hsbearing.results import make_dataset, standard_attrs, write_netcdf
+
+sys.path.insert(0, str(__import__("pathlib").Path(__file__).parent))
+from test_analysis import cage_run  # noqa: E402  (shared synthetic-run builder)
+
+
+@pytest.fixture(scope="module")
+def case():
+    return hsbearing.load_case("zhang2016")
+
+
+def _png_ok(path):
+    import matplotlib.image as mpimg
+
+    img = mpimg.imread(path)
+    assert img.ndim == 3 and img.shape[0] > 400 and img.shape[1] > 800
+    # not a blank canvas
+    assert np.std(img[..., :3]) > 0.05
+    return img
+
+
+def _no_temp_left(directory):
+    return not [p for p in directory.iterdir() if p.name.startswith(".")]
+
+
+def test_dynamic_figure(case, tmp_path):
+    ds = annotate(cage_run("k", case, n_rev=40), case)
+    out = plotting.plot_run(ds, tmp_path / "run.png")
+    assert out == tmp_path / "run.png" and out.exists()
+    _png_ok(out)
+    assert _no_temp_left(tmp_path)
+
+
+def test_title_names_case_conditions_and_classification(case):
+    ds = annotate(cage_run("k", case, n_rev=40), case)
+    lines = plotting.title_lines(ds)
+    assert "zhang2016" in lines[0] and "oil 4109" in lines[0] and "14000 r/min" in lines[0]
+    assert "Fa = 1000 N" in lines[0] and "130 \N{DEGREE SIGN}C" in lines[0]
+    assert "4 periods" in lines[1] and "3.00 %" in lines[1]
+    over = case.with_overrides(**{"operating.radial_load": "500 N", "lubricant.oil": "4050"})
+    ds2 = cage_run("period", over, n_rev=10)
+    l2 = plotting.title_lines(annotate(ds2, over))[0]
+    assert "Fr = 500 N" in l2 and "oil 4050" in l2
+
+
+def test_unannotated_run_is_annotated_for_the_figure(case, tmp_path):
+    ds = cage_run("quasi", case, n_rev=30)
+    assert "classification" not in ds.attrs
+    out = plotting.plot_run(ds, tmp_path / "a.png")
+    _png_ok(out)
+    assert "classification" not in ds.attrs  # input untouched
+
+
+def test_run_without_case_and_failed_status(case, tmp_path):
+    ds = cage_run("period", case, n_rev=12)
+    ds.attrs = {"status": "failed at t = 0.012 s"}
+    assert "status: failed at t = 0.012 s" in " ".join(plotting.title_lines(annotate(ds)))
+    _png_ok(plotting.plot_run(ds, tmp_path / "b.png"))
+
+
+def test_too_short_run_still_draws(case, tmp_path):
+    ds = cage_run("period", case, n_rev=1, spr=50)
+    _png_ok(plotting.plot_run(ds, tmp_path / "c.png"))
+
+
+def test_quasi_static_figure(case, tmp_path):
+    ds = make_dataset({"inner_contact_load": np.linspace(300, 350, 11), "outer_contact_load": np.linspace(380, 420, 11),
+                       "inner_contact_angle": np.radians(np.full(11, 27.0)), "outer_contact_angle": np.radians(np.full(11, 22.0))},
+                      attrs=standard_attrs(case))
+    _png_ok(plotting.plot_run(ds, tmp_path / "qs.png"))
+
+
+def test_gyro_dispatch(monkeypatch, tmp_path):
+    calls = []
+    fake = types.ModuleType("hsbearing.models.friction.gyro")
+    fake.plot_run = lambda ds, path: calls.append(path) or path
+    monkeypatch.setitem(sys.modules, "hsbearing.models.friction.gyro", fake)
+    import hsbearing.models.friction as fr
+
+    monkeypatch.setattr(fr, "gyro", fake, raising=False)
+    ds = make_dataset({}, attrs={"model": "gyro_ribbon_cage"})
+    assert plotting.plot_run(ds, tmp_path / "g.png") == tmp_path / "g.png"
+    assert calls == [tmp_path / "g.png"]
+
+
+def test_failed_write_leaves_nothing(case, tmp_path, monkeypatch):
+    from matplotlib.figure import Figure
+
+    def boom(self, *a, **k):
+        raise OSError("disk full")
+
+    monkeypatch.setattr(Figure, "savefig", boom)
+    with pytest.raises(OSError):
+        plotting.plot_run(annotate(cage_run("period", case, n_rev=10), case), tmp_path / "x.png")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_cli_plot_redraws_from_archive(case, tmp_path, capsys):
+    from hsbearing.cli import main
+
+    nc = write_netcdf(annotate(cage_run("quasi", case, n_rev=30), case), tmp_path / "run.nc")
+    assert main(["plot", str(nc)]) == 0
+    assert (tmp_path / "run.png").exists()
+    _png_ok(tmp_path / "run.png")
+    assert main(["plot", str(nc), "-o", str(tmp_path / "other.png")]) == 0
+    assert (tmp_path / "other.png").exists()
+    # bad input: exit 2, one line, nothing written
+    assert main(["plot", str(tmp_path / "missing.nc")]) == 2
+    bad = tmp_path / "bad.nc"
+    bad.write_text("not netcdf")
+    assert main(["plot", str(bad)]) == 2
+    assert not (tmp_path / "bad.png").exists()
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 2 and all(line.startswith("hsbearing: error:") for line in err)
