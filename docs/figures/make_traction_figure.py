@@ -146,6 +146,32 @@ def convention_table():
     return "\n".join(rows)
 
 
+def brute_force_search():
+    """Count, per oil, the unit readings (of 2304) under which the printed law is physical at all 48 points,
+    and the best reading's count: 3 moduli (E', E'/2, E) x Pa/MPa/GPa x (Rx, R') x m/mm x U m/s, mm/s x W N, kN
+    x T degC, K x eta0 Pa s, mPa s x S fraction, percent x (Tbar of Eqs. 2-3, Tbar of Eq. 4)."""
+    Rx, Ry, Ep, Ucase = inner_contact()
+    Rred = 1.0 / (1.0 / Rx + 1.0 / Ry)
+    moduli = {"E'": Ep, "E'/2": Ep / 2, "E": 208e9}
+    out = ["| oil | readings tested | physical at all 48 points | best reading: points passed |", "|---|---|---|---|"]
+    for oil in traction.OILS:
+        n_read, n_full, best = 0, 0, (-1, None)
+        for (en, E), es, (rn, R), rs, us, ws, tk, hs, ss, tb in itertools.product(
+                moduli.items(), (1.0, 1e-6, 1e-9), (("Rx", Rx), ("R'", Rred)), (1.0, 1e3), (1.0, 1e3), (1.0, 1e-3),
+                (False, True), (1.0, 1e3), (1.0, 100.0), (0, 1)):
+            n_read += 1
+            n_ok = 0
+            for W, U, T in OPS:
+                ok, _ = _physical(*_coefs_reading(oil, W, U, T, E=E, R=R, e_scale=es, r_scale=rs, u_scale=us,
+                                                  w_scale=ws, t_kelvin=tk, eta_scale=hs, tbar=tb), ss)
+                n_ok += ok
+            n_full += n_ok == len(OPS)
+            if n_ok > best[0]:
+                best = (n_ok, (en, es, rn, rs, us, ws, "K" if tk else "degC", hs, ss, "sqrt" if tb == 0 else "brinkman"))
+        out.append(f"| {oil} | {n_read} | {n_full} | {best[0]} {best[1]} |")
+    return "\n".join(out)
+
+
 def critical_load_table():
     """Critical load W_c = Wbar_c E' Rx^2 [N] of Eqs. 2-3 with T in degC and in K."""
     Rx, Ry, Ep, U = inner_contact()
@@ -192,6 +218,7 @@ if __name__ == "__main__":
         print(convention_table(), end="\n\n")
         print(critical_load_table(), end="\n\n")
         print(eq4_required_groups(), end="\n\n")
-        print(oil_comparison_table())
+        print(oil_comparison_table(), end="\n\n")
+        print(brute_force_search())
     else:
         print(make_figure())
