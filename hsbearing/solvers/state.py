@@ -1,0 +1,144 @@
+"""State-vector layout of the bearing dynamic model: the ONE place the order is documented.
+
+The state vector ``y`` of :mod:`hsbearing.dynamics` (``N = 9 Z + 12 + 10``
+floats, SI units, no scaling) is stored **state-major**: each ball quantity
+occupies a contiguous block of ``Z`` entries (one per ball), so that
+``y[k*Z:(k+1)*Z]`` is the array of quantity ``k`` over all balls.  This makes
+the per-ball loops of the compiled right-hand side and the "perturb the same
+state of every ball at once" Jacobian trivial.
+
+Order (index ranges for Z balls):
+
+===========  ==========================  =========================================  ========
+block        slice                       quantity                                   unit
+===========  ==========================  =========================================  ========
+ball 0       ``[0, Z)``                  x_b: ball centre axial position (X)        m
+ball 1       ``[Z, 2Z)``                 r_b: ball centre radial distance to X      m
+ball 2       ``[2Z, 3Z)``                theta_b: orbital (azimuth) angle           rad
+ball 3       ``[3Z, 4Z)``                dx_b/dt                                    m/s
+ball 4       ``[4Z, 5Z)``                dr_b/dt                                    m/s
+ball 5       ``[5Z, 6Z)``                dtheta_b/dt: orbital speed                 rad/s
+ball 6       ``[6Z, 7Z)``                omega_x: ball angular velocity, axial      rad/s
+ball 7       ``[7Z, 8Z)``                omega_y: idem, radial (ball frame)         rad/s
+ball 8       ``[8Z, 9Z)``                omega_z: idem, circumferential             rad/s
+cage         ``9Z + 0 .. 5``             x_c, y_c, z_c [m], phi_c (rotation about   m, rad
+                                         X) [rad], psi_y, psi_z (tilts) [rad]
+cage rates   ``9Z + 6 .. 11``            their time derivatives                     m/s, rad/s
+ring         ``9Z + 12 .. 16``           x_i, y_i, z_i [m], beta_y, beta_z [rad]    m, rad
+ring rates   ``9Z + 17 .. 21``           their time derivatives                     m/s, rad/s
+===========  ==========================  =========================================  ========
+
+The ball angular velocity (omega_x, omega_y, omega_z) is the *absolute*
+angular velocity of the ball expressed in the ball frame of seed 004, Fig. 2
+(x axial, y radial outward, z circumferential in the direction of increasing
+theta_b); the frame turns with the orbit, which gives the gyroscopic terms
+I_b omega theta_dot of Eqs. (9)-(10).  The inner-ring spin about X is
+prescribed by the case (``operating.inner_speed``) and is not a state; the
+outer ring is fixed (its speed ``operating.outer_speed`` enters the contact
+kinematics only).
+
+Absolute tolerances: :meth:`StateLayout.atol` returns a per-state array,
+``atol * scale`` with the scales of :data:`ATOL_SCALE` (the case ``atol`` is
+for states of order one; lengths are of order 1e-5..1e-2 m, so the length
+scale is 1e-3, giving 1e-11 m for the default atol 1e-8).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+__all__ = ["StateLayout", "BALL_STATES", "CAGE_STATES", "RING_STATES", "ATOL_SCALE"]
+
+#: Per-ball quantities in block order.
+BALL_STATES = ("x_b", "r_b", "theta_b", "xdot_b", "rdot_b", "thetadot_b", "omega_x", "omega_y", "omega_z")
+#: Cage states in order.
+CAGE_STATES = ("x_c", "y_c", "z_c", "phi_c", "psi_y", "psi_z",
+               "xdot_c", "ydot_c", "zdot_c", "phidot_c", "psidot_y", "psidot_z")
+#: Inner-ring states in order.
+RING_STATES = ("x_i", "y_i", "z_i", "beta_y", "beta_z", "xdot_i", "ydot_i", "zdot_i", "betadot_y", "betadot_z")
+
+#: atol multiplier per kind of state (see module docstring).
+ATOL_SCALE = {
+    "length": 1e-3,  # m   -> 1e-11 m for atol = 1e-8
+    "angle": 1e-1,  # rad (tilts; the orbit/cage angles grow, rtol governs them)
+    "velocity": 1e1,  # m/s  -> 1e-7 m/s
+    "angular_velocity": 1e3,  # rad/s -> 1e-5 rad/s
+    "tilt_rate": 1e1,  # rad/s
+}
+
+_BALL_KIND = ("length", "length", "angle", "velocity", "velocity", "angular_velocity",
+              "angular_velocity", "angular_velocity", "angular_velocity")
+_CAGE_KIND = ("length", "length", "length", "angle", "angle", "angle",
+              "velocity", "velocity", "velocity", "angular_velocity", "tilt_rate", "tilt_rate")
+_RING_KIND = ("length", "length", "length", "angle", "angle",
+              "velocity", "velocity", "velocity", "tilt_rate", "tilt_rate")
+
+
+@dataclass(frozen=True)
+class StateLayout:
+    """Named slices of the state vector for ``Z`` balls (see the module docstring for the order)."""
+
+    Z: int
+
+    @property
+    def n_ball(self) -> int:
+        return 9 * self.Z
+
+    @property
+    def cage0(self) -> int:
+        """Index of the first cage state."""
+        return 9 * self.Z
+
+    @property
+    def ring0(self) -> int:
+        """Index of the first inner-ring state."""
+        return 9 * self.Z + 12
+
+    @property
+    def size(self) -> int:
+        return 9 * self.Z + 22
+
+    def ball(self, name: str) -> slice:
+        """Slice of ball quantity ``name`` (one of :data:`BALL_STATES`) over all balls."""
+        k = BALL_STATES.index(name)
+        return slice(k * self.Z, (k + 1) * self.Z)
+
+    def cage(self, name: str) -> int:
+        return self.cage0 + CAGE_STATES.index(name)
+
+    def ring(self, name: str) -> int:
+        return self.ring0 + RING_STATES.index(name)
+
+    @property
+    def state_names(self) -> list[str]:
+        names = [f"{q}[{j}]" for q in BALL_STATES for j in range(self.Z)]
+        names += list(CAGE_STATES) + list(RING_STATES)
+        return names
+
+    def pack(self, ball: dict, cage: dict, ring: dict) -> np.ndarray:
+        """Build ``y`` from ``{name: array (Z,)}``, ``{name: float}``, ``{name: float}``; missing = 0."""
+        y = np.zeros(self.size)
+        for name, val in ball.items():
+            y[self.ball(name)] = val
+        for name, val in cage.items():
+            y[self.cage(name)] = val
+        for name, val in ring.items():
+            y[self.ring(name)] = val
+        return y
+
+    def unpack(self, y: np.ndarray) -> dict:
+        """``y`` of shape (..., N) -> dict of arrays; ball quantities get a trailing ``ball`` axis."""
+        y = np.asarray(y)
+        out = {name: y[..., self.ball(name)] for name in BALL_STATES}
+        for name in CAGE_STATES:
+            out[name] = y[..., self.cage(name)]
+        for name in RING_STATES:
+            out[name] = y[..., self.ring(name)]
+        return out
+
+    def atol(self, atol: float) -> np.ndarray:
+        """Per-state absolute tolerance ``atol * scale`` (:data:`ATOL_SCALE`)."""
+        kinds = [k for k in _BALL_KIND for _ in range(self.Z)] + list(_CAGE_KIND) + list(_RING_KIND)
+        return atol * np.array([ATOL_SCALE[k] for k in kinds])
