@@ -335,32 +335,43 @@ def ball_equilibrium_residual(Qi, Qo, sin_ai, cos_ai, sin_ao, cos_ao, Fc, Fi, Fo
     return r_ax, r_rad
 
 
-def inner_ring_reaction(Qi, Fi, sin_ai, cos_ai, x_c, rho_c, psi, q):
-    """Force and moment of all balls on the inner ring ([1] Eqs. 3.20-3.24).
+def inner_ring_reaction(Qi, Fi, sin_ai, cos_ai, psi, x_i0, R_i, r_i):
+    """Force and moment of each ball on the inner ring, shape (5, Z) ([1] Eqs. 3.20-3.24).
 
     Parameters
     ----------
-    Qi, Fi : inner normal load and gyroscopic friction force [N] per ball.
-    x_c, rho_c : axial position and radius of the inner contact point [m].
-    psi : ball azimuths [rad].  q : ring displacement (moments are taken
-        about the displaced ring centre).
+    Qi, Fi : inner normal load and gyroscopic friction force [N] per ball
+        (the ring receives -(Q_i e_i + F_i t_i)).
+    sin_ai, cos_ai : inner contact angle.  psi : ball azimuths [rad].
+    x_i0, R_i : axial position and radius of the inner groove curvature
+        centre of the unloaded ring [m] (:func:`groove_centre_layout`).
+    r_i : inner groove radius f_i D [m].
 
     Returns
     -------
-    (F_x, F_y, F_z, M_y, M_z) [N, N m]: the resultant the balls apply to the
-    inner ring.  Equilibrium: applied load + this = 0.
+    rows (F_x, F_y, F_z, M_y, M_z) [N, N m] per ball.  Equilibrium of the
+    ring: applied load + sum over balls = 0.
+
+    Notes
+    -----
+    Moments are taken about the bearing centre with the arms of the
+    undisplaced ring, as in [1] Eqs. 3.23-3.24 (arm R_i of the groove-centre
+    locus): the normal force acts along a line through the inner groove
+    curvature centre, the friction force at the contact point
+    (groove centre - r_i e_i).  This is the statics that is work-conjugate to
+    the linearised ring kinematics of :func:`groove_centre_separation`, so the
+    static stiffness matrix is exactly symmetric.
     """
-    # force on the ring = -(Q_i e_i + F_i t_i), in (axial, radial)
     f_ax = -(Qi * sin_ai + Fi * cos_ai)
     f_rad = -(Qi * cos_ai - Fi * sin_ai)
     c, s = np.cos(psi), np.sin(psi)
     fx, fy, fz = f_ax, f_rad * c, f_rad * s
-    px = x_c - q[0]
-    py = rho_c * c - q[1]
-    pz = rho_c * s - q[2]
-    My = pz * fx - px * fz  # r x F, Y component
-    Mz = px * fy - py * fx  # r x F, Z component
-    return np.array([fx.sum(), fy.sum(), fz.sum(), My.sum(), Mz.sum()])
+    px = x_i0 - r_i * sin_ai  # contact point, axial
+    pr = R_i - r_i * cos_ai  # contact point, radius
+    py, pz = pr * c, pr * s
+    My = pz * fx - px * fz  # [1], Eq. 3.23 (r x F, Y component)
+    Mz = px * fy - py * fx  # [1], Eq. 3.24 (r x F, Z component)
+    return np.stack([fx, fy, fz, My, Mz])
 
 
 def axial_static_single_ball(Fa, Z, D, dm, fi, fo, alpha0, stiffness: ContactStiffness, tol=1e-15):

@@ -211,15 +211,9 @@ def _ball_state(P: Problem, X1, X2, q, free=None):
 
 
 def _ring_contributions(P: Problem, st, q):
-    """Per-ball force/moment on the inner ring, shape (5, Z)."""
-    x_c = st["x_b"] - 0.5 * P.D * st["si"]  # inner contact point, axial
-    rho_c = st["R_b"] - 0.5 * P.D * st["ci"]  # inner contact point, radius
-    f_ax = -(st["Qi"] * st["si"] + st["Fi"] * st["ci"])
-    f_rad = -(st["Qi"] * st["ci"] - st["Fi"] * st["si"])
-    c, s = np.cos(P.psi), np.sin(P.psi)
-    fx, fy, fz = f_ax, f_rad * c, f_rad * s
-    px, py, pz = x_c - q[0], rho_c * c - q[1], rho_c * s - q[2]
-    return np.stack([fx, fy, fz, pz * fx - px * fz, px * fy - py * fx])  # r x F
+    """Per-ball force/moment on the inner ring, shape (5, Z) (see :func:`qp.inner_ring_reaction`)."""
+    x_i0, R_i, _, _ = P.layout
+    return qp.inner_ring_reaction(st["Qi"], st["Fi"], st["si"], st["ci"], P.psi, x_i0, R_i, P.fi * P.D)
 
 
 def _line_placement(P: Problem, q):
@@ -628,7 +622,7 @@ def to_dataset(sol: QuasiStaticSolution, case=None, status: str = "ok") -> xr.Da
         "ball_residual_norm": sol.ball_residual_norm,
     }
     if case is not None:
-        hc = _film(case, P, st, Rxi, Ryi, Rxo, Ryo, wi, wo, wm, wx, wy)
+        hc = _film(case, P, st, Rxi, Ryi, Rxo, Ryo)
         if hc is not None:
             data["inner_film_thickness_central"], data["outer_film_thickness_central"] = hc
     attrs = dict(
@@ -659,55 +653,56 @@ def _contact_radii(P: Problem, st):
     return Rxi, Ryi, Rxo, Ryo
 
 
-def _film(case, P, st, Rxi, Ryi, Rxo, Ryo, wi, wo, wm, wx, wy):
-    """Hamrock-Dowson central film thickness at both contacts, or None when no oil data are available."""
-    try:
-        from hsbearing.models import ehl
-    except ImportError:  # pragma: no cover
-        return None
+def _film(case, P, st, Rxi, Ryi, Rxo, Ryo):
+    """Hamrock-Dowson isothermal central film thickness (h_c,i, h_c,o) [m], or None without oil data.
+
+    Entrainment speed of a contact = surface speed of the race relative to
+    the cage at the contact centre, where race-control kinematics impose
+    pure rolling (ball and race surfaces move together):
+    u_i = |omega_i - omega_m| (R_b - (D/2) cos a_i),
+    u_o = |omega_o - omega_m| (R_b + (D/2) cos a_o), R_b = ball-centre orbit
+    radius.  Unloaded or standing contacts get NaN.
+    """
+    from hsbearing.models import ehl
+
     props = _oil_properties(case)
     if props is None:
         return None
-    eta0, alpha_p = props
-    # entrainment (mean rolling) speed of each contact: u = |roll| * D/2 relative to the race, in the contact frame
-    spin_i, roll_i, spin_o, roll_o = qp.contact_spin_roll(st["wx"], st["wy"], st["wm"], P.omega_i, P.omega_o,
-                                                          st["si"], st["ci"], st["so"], st["co"])
-    ui = np.abs(roll_i) * 0.5 * P.D * (1.0 - P.D * st["ci"] / P.dm) if P.moving else np.zeros(P.Z)
-    uo = np.abs(roll_o) * 0.5 * P.D * (1.0 + P.D * st["co"] / P.dm) if P.moving else np.zeros(P.Z)
+    eta, alpha_p = props
+    ui = np.abs(P.omega_i - st["wm"]) * (st["R_b"] - 0.5 * P.D * st["ci"])
+    uo = np.abs(P.omega_o - st["wm"]) * (st["R_b"] + 0.5 * P.D * st["co"])
     Ep = float(hertz.reduced_modulus(P.E1, P.nu1, P.E2, P.nu2))
     out = []
     for Q, u, Rx, Ry in ((st["Qi"], ui, Rxi, Ryi), (st["Qo"], uo, Rxo, Ryo)):
         ok = (Q > 0) & (u > 0)
         h = np.full(P.Z, np.nan)
         if np.any(ok):
-            r = ehl.film_thickness(Q[ok], u[ok], Rx[ok], Ry[ok], Ep, eta0, alpha_p)
-            hc = r[0] if isinstance(r, tuple) else getattr(r, "central", getattr(r, "h_c", None))
-            h[ok] = hc
+            h[ok] = ehl.film_thickness(Q[ok], u[ok], Rx[ok], Ry[ok], Ep, eta, alpha_p)[0]
         out.append(h)
     return tuple(out)
 
 
 def _oil_properties(case):
-    """(eta0 [Pa s], alpha [1/Pa]) of the case lubricant at its temperature, or None."""
-    lub = case.lubricant
-    eta0 = lub.dynamic_viscosity
-    alpha_p = lub.pressure_viscosity_coefficient
-    if eta0 is None and lub.kinematic_viscosity is not None:
-        eta0 = lub.kinematic_viscosity * lub.density
-    if eta0 is None or alpha_p is None:
-        try:
-            from hsbearing.models import ehl
+    """(eta [Pa s] at the case temperature, alpha [1/Pa]) of the case lubricant, or None.
 
-            getter = getattr(ehl, "oil_properties", None)
-            if getter is not None:
-                e, a = getter(lub.oil, lub.temperature)[:2]
-                eta0 = eta0 if eta0 is not None else e
-                alpha_p = alpha_p if alpha_p is not None else a
-        except Exception:
-            return None
-    if eta0 is None or alpha_p is None:
+    ``[lubricant] kinematic_viscosity`` (operating value) wins; otherwise the
+    oil's Table 1 data (seed 004) with ``dynamic_viscosity`` /
+    ``pressure_viscosity_coefficient`` overriding eta0 / alpha, brought to the
+    case temperature by :func:`hsbearing.models.ehl.viscosity_at_temperature`.
+    """
+    from hsbearing.models import ehl, traction
+
+    lub = case.lubricant
+    oil = traction.OILS.get(lub.oil)
+    alpha_p = lub.pressure_viscosity_coefficient or (oil.alpha if oil else None)
+    if alpha_p is None:
         return None
-    return float(eta0), float(alpha_p)
+    if lub.kinematic_viscosity is not None:
+        return float(lub.kinematic_viscosity * lub.density), float(alpha_p)
+    eta0 = lub.dynamic_viscosity or (oil.eta0 if oil else None)
+    if eta0 is None or oil is None:
+        return (float(eta0), float(alpha_p)) if eta0 is not None else None
+    return float(ehl.viscosity_at_temperature(eta0, oil.beta, lub.temperature)), float(alpha_p)
 
 
 def solve_case(case, *, inner_speed=None, centrifugal=True, gyroscopic=True, initial=None) -> xr.Dataset:
