@@ -120,13 +120,35 @@ def test_table2_calculated_torque_from_its_forces(row):
     assert Msc == pytest.approx(row.Msc_Nm, rel=0.01)
 
 
-def test_table2_calculated_torque_chain(case):
-    """Table 2 (seed 001): M_sc from the preload through Eqs. 10, 7, 4 (paper's stiffness) within 1 %,
-    rows other than 100 and 120 um (see the xfail above)."""
-    c = wr.contacts(case, T2.delta_um.values * 1e-6, stiffness=table2_stiffness())
-    ok = ~np.isin(T2.delta_um.values, (100, 120))
-    np.testing.assert_allclose(c.rolling_torque[ok], T2.Msc_Nm[ok], rtol=0.01)
-    np.testing.assert_allclose(c.torque - c.rolling_torque, 17.3245)  # M_u of the case (Table 3)
+PAPER_ZETA_MU = {"friction.rolling_resistance": "1.0265e-4 m", "friction.unconsidered_torque": "17.3245 N*m"}  # Table 3
+CONSISTENT = ~np.isin(T2.delta_um.values, (100, 120))  # rows whose M_sc agrees with Eq. 4 of their own forces
+
+
+def test_table2_calculated_torque_chain_paper_stiffness(case):
+    """Table 2 (seed 001): M_sc from the preload through Eqs. 10, 7, 4 with the paper's stiffness and Table 3's
+    zeta, within 1 % (rows other than 100 and 120 um, see the xfail above)."""
+    c = wr.contacts(case.with_overrides(**PAPER_ZETA_MU), T2.delta_um.values * 1e-6, stiffness=table2_stiffness())
+    np.testing.assert_allclose(c.rolling_torque[CONSISTENT], T2.Msc_Nm[CONSISTENT], rtol=0.01)
+    np.testing.assert_allclose(c.torque - c.rolling_torque, 17.3245)  # + M_u (Table 3), Eq. 11
+
+
+def test_table2_calculated_torque_chain_our_stiffness(case):
+    """Table 2 (seed 001): M_sc within 1 % with OUR Hertz stiffness and the bundled case's zeta (Eq. 12 refit
+    with our forces): the torque depends on zeta * F only, which the measured torques fix."""
+    c = wr.contacts(case, T2.delta_um.values * 1e-6)
+    np.testing.assert_allclose(c.rolling_torque[CONSISTENT], T2.Msc_Nm[CONSISTENT], rtol=0.01)
+
+
+def test_case_zeta_is_the_eq12_refit_with_our_forces(case):
+    """The bundled case's zeta, M_u are Eqs. 12-13 applied to Table 2's M_bm with this model's forces (so a
+    change of the contact model that is not carried into the case fails here)."""
+    fit = wr.fit_rolling_resistance(T2.delta_um.values * 1e-6, T2.Mbm_Nm.values, case, first_group=4)
+    assert case.friction.rolling_resistance == pytest.approx(fit.zeta, rel=1e-4)
+    assert case.friction.unconsidered_torque == pytest.approx(fit.M_u, abs=1e-3)
+    # zeta * (F1 + F2) is what the measurement fixes: our zeta is the paper's / (our F / paper F)
+    c = wr.contacts(case, T2.delta_um.values * 1e-6)
+    force_ratio = np.mean(c.F1 + c.F2) / np.mean(T2.F1_N + T2.F2_N)
+    assert fit.zeta * force_ratio == pytest.approx(1.0265e-4, rel=1e-4)
 
 
 # ----------------------------------------------------------------------------- Table 3
@@ -223,7 +245,7 @@ def test_preload_round_trip(case):
     c = wr.contacts(case, pre)
     back = wr.preload_from_forces(c.F1, c.F2, c.K_i, c.K_o, ALPHA)
     np.testing.assert_allclose(back, pre, rtol=1e-9)
-    back2 = wr.preload_from_torque(c.rolling_torque, 1.0265e-4, Z, ALPHA, G_O, c.K_i, c.K_o)
+    back2 = wr.preload_from_torque(c.rolling_torque, case.friction.rolling_resistance, Z, ALPHA, G_O, c.K_i, c.K_o)
     np.testing.assert_allclose(back2, pre, rtol=1e-9)
 
 
@@ -289,10 +311,16 @@ def test_equilibrium_of_the_outer_ring(case):
 
 
 def test_preload_window_paper_target(case):
-    """Sec. 4.1 of seed 001: starting torque 90-100 N m -> preload 130-140 um (read by the authors from the
-    measured curve of Fig. 9).  Our Eq. 11 with exact Hertz K gives 128.6-140.1 um: within 2 um."""
+    """Sec. 4.1 of seed 001: starting torque 90-100 N m -> preload 130-140 um.  That window is read from the
+    MEASURED curve (M_bm of Table 2, linear interpolation: 132.2-141.6 um); the paper's own model (Eq. 11 with
+    its K and Table 3) gives 141.7-154.4 um, and so does ours (self-consistent zeta): we assert ours against the
+    paper's model within 0.5 um and report the 2-14 um gap to the measured window (docs/validation/wire_race.md)."""
     lo, hi = wr.preload_window(case, 90.0, 100.0)
-    assert lo == pytest.approx(130e-6, abs=2e-6) and hi == pytest.approx(140e-6, abs=2e-6)
+    lo_p, hi_p = wr.preload_window(case.with_overrides(**PAPER_ZETA_MU), 90.0, 100.0, stiffness=table2_stiffness())
+    assert lo == pytest.approx(lo_p, abs=0.5e-6) and hi == pytest.approx(hi_p, abs=0.5e-6)
+    assert 141e-6 < lo < 143e-6 and 153.5e-6 < hi < 155.5e-6  # regression of the values in the docs
+    measured = np.interp([90.0, 100.0], T2.Mbm_Nm, T2.delta_um) * 1e-6  # Table 2, M_bm column
+    assert measured[0] == pytest.approx(130e-6, abs=2.5e-6) and measured[1] == pytest.approx(140e-6, abs=2.5e-6)
     c = wr.contacts(case, [lo, hi])
     np.testing.assert_allclose(c.torque, [90.0, 100.0], rtol=1e-8)
     with pytest.raises(CaseError):
@@ -345,7 +373,7 @@ def test_cli_table_window_and_archive(tmp_path):
     assert r.returncode == 0, r.stderr
     assert "preload window for 90..100 N m:" in r.stdout and "archive:" in r.stdout
     ds = open_run(out)
-    assert ds.sizes["preload"] == 3 and list(ds.attrs["preload_window"]) == pytest.approx([128.57e-6, 140.11e-6], abs=0.05e-6)
+    assert ds.sizes["preload"] == 3 and list(ds.attrs["preload_window"]) == pytest.approx(wr.preload_window(load_case("shan2010_wire_race"), 90, 100), rel=1e-9)
     assert not list(tmp_path.glob(".*tmp"))
 
 
