@@ -152,33 +152,39 @@ def _plot_dynamic(ds, path: Path) -> Path:
     # (a) whirl orbit
     ax = axs[0, 0]
     if "cage_center_y" in ds and "cage_center_z" in ds:
-        y = np.asarray(ds["cage_center_y"].values, float) * 1e6
-        z = np.asarray(ds["cage_center_z"].values, float) * 1e6
+        y_m = np.asarray(ds["cage_center_y"].values, float)
+        z_m = np.asarray(ds["cage_center_z"].values, float)
+        r_m = np.hypot(y_m, z_m)
+        r_ext = float(np.nanmax(r_m)) if r_m.size and np.any(np.isfinite(r_m)) else float("nan")
+        lf, lu = _length_scale(r_ext)
+        y, z = y_m * lf, z_m * lf
         ax.plot(y[~mask], z[~mask], color="0.75", lw=0.6, label=f"transient (first {t_tr * 1e3:.3g} ms)")
         ax.plot(y[mask], z[mask], color="C0", lw=0.8, label="after transient")
         rmax = float(np.nanmax(np.hypot(y, z))) if y.size and np.any(np.isfinite(y)) else 0.0
         gc = ds.attrs.get("guide_clearance")
         view = max(rmax, 1e-3) * 1.15
         if gc is not None and np.isfinite(gc) and gc > 0:
-            gcu = float(gc) * 1e6
+            gcu = float(gc) * lf
             th = np.linspace(0, 2 * np.pi, 361)
             if rmax > 0.25 * gcu:
                 view = max(view, 1.08 * gcu)
-                ax.plot(gcu * np.cos(th), gcu * np.sin(th), "r--", lw=1.0, label=f"guide clearance {gcu:.0f} \u00b5m")
+                ax.plot(gcu * np.cos(th), gcu * np.sin(th), "r--", lw=1.0,
+                        label=f"guide clearance {float(gc) * 1e6:.0f} \u00b5m")
             else:
-                ax.plot([], [], "r--", lw=1.0,
-                        label=f"guide clearance {gcu:.0f} \u00b5m (off view: orbit uses {100 * rmax / gcu:.1f} %)")
+                used = 100 * rmax / gcu
+                ax.plot([], [], "r--", lw=1.0, label=f"guide clearance {float(gc) * 1e6:.0f} \u00b5m (off view: orbit "
+                        + (f"uses {used:.1f} %)" if used >= 0.1 else "uses < 0.1 %)"))
         ax.plot([0], [0], "k+", ms=8)
         ax.set_xlim(-view, view)
         ax.set_ylim(-view, view)
         ax.set_aspect("equal", adjustable="box")
-        ax.set_xlabel("cage centre $D_Y$ [\u00b5m]")
-        ax.set_ylabel("cage centre $D_Z$ [\u00b5m]")
-        amp = float(ds["whirl_amplitude"]) * 1e6 if "whirl_amplitude" in ds else float("nan")
+        ax.set_xlabel(f"cage centre $D_Y$ [{lu}]")
+        ax.set_ylabel(f"cage centre $D_Z$ [{lu}]")
+        amp = float(ds["whirl_amplitude"]) * lf if "whirl_amplitude" in ds else float("nan")
         ratio = float(ds["whirl_frequency_ratio"]) if "whirl_frequency_ratio" in ds else float("nan")
         ttl = "(a) cage whirl orbit"
         if np.isfinite(amp):
-            ttl += f": RMS radius {amp:.3g} \u00b5m"
+            ttl += f": RMS radius {amp:.3g} {lu}"
         if np.isfinite(ratio):
             ttl += f", whirl/cage speed {ratio:.3g}"
         ax.set_title(ttl, fontsize=10)
@@ -191,8 +197,17 @@ def _plot_dynamic(ds, path: Path) -> Path:
         pts = poincare.poincare_points(ds, ds.attrs.get("poincare_section_kind", "cage_revolution"), tf)
     except Exception:
         pts = np.zeros((0, 2))
+    vy = poincare.cage_velocity(ds, "y") if "cage_center_y" in ds else np.zeros(0)
+    yy = np.asarray(ds["cage_center_y"].values, float) if "cage_center_y" in ds else np.zeros(0)
+    ext_y = float(np.nanmax(np.abs(yy[mask]))) if mask.any() and yy.size else float("nan")
+    ext_v = float(np.nanmax(np.abs(vy[mask]))) if mask.any() and vy.size else float("nan")
     if len(pts):
-        sc = ax.scatter(pts[:, 0] * 1e6, pts[:, 1] * 1e3, c=np.arange(len(pts)), cmap="viridis", s=14, zorder=3)
+        ext_y = max(ext_y, float(np.nanmax(np.abs(pts[:, 0])))) if np.isfinite(ext_y) else float(np.nanmax(np.abs(pts[:, 0])))
+        ext_v = max(ext_v, float(np.nanmax(np.abs(pts[:, 1])))) if np.isfinite(ext_v) else float(np.nanmax(np.abs(pts[:, 1])))
+    lf, lu = _length_scale(ext_y)
+    vf, vu = _velocity_scale(ext_v)
+    if len(pts):
+        sc = ax.scatter(pts[:, 0] * lf, pts[:, 1] * vf, c=np.arange(len(pts)), cmap="viridis", s=14, zorder=3)
         cb = fig.colorbar(sc, ax=ax, pad=0.01)
         cb.set_label("section index (time \u2192)")
         from matplotlib.ticker import MaxNLocator
@@ -200,14 +215,13 @@ def _plot_dynamic(ds, path: Path) -> Path:
         cb.locator = MaxNLocator(integer=True)
         cb.update_ticks()
         # orbit in the same plane, faint, to show where the section lies
-        if "cage_center_y" in ds:
-            vy = poincare.cage_velocity(ds, "y")
-            ax.plot(np.asarray(ds["cage_center_y"].values)[mask] * 1e6, vy[mask] * 1e3, color="0.85", lw=0.4, zorder=1)
+        if yy.size:
+            ax.plot(yy[mask] * lf, vy[mask] * vf, color="0.85", lw=0.4, zorder=1)
     else:
         ax.text(0.5, 0.5, "no Poincare section point\n(run shorter than one cage revolution after the transient)",
                 ha="center", va="center", transform=ax.transAxes)
-    ax.set_xlabel("cage centre $D_Y$ [\u00b5m]")
-    ax.set_ylabel("cage centre velocity $V_Y$ [mm/s]")
+    ax.set_xlabel(f"cage centre $D_Y$ [{lu}]")
+    ax.set_ylabel(f"cage centre velocity $V_Y$ [{vu}]")
     lab = ds.attrs.get("classification", "")
     conf = ds.attrs.get("classification_confidence")
     ttl = f"(b) Poincar\u00e9 map, {len(pts)} points (one per cage revolution)"
@@ -232,7 +246,7 @@ def _plot_dynamic(ds, path: Path) -> Path:
             wth = float(ds["theoretical_cage_speed"]) * _RPM
             ax.axhline(wth, color="k", ls="--", lw=0.9, label=f"pure rolling {wth:.0f} r/min")
         _shade(ax, t_tr * 1e3)
-        ax.legend(fontsize=8, loc="lower right")
+        ax.legend(fontsize=8, loc="best")
     ax.set_xlabel("time [ms]")
     ax.set_ylabel("cage speed [r/min]")
     ax.set_title("(c) cage speed", fontsize=10)
@@ -247,7 +261,7 @@ def _plot_dynamic(ds, path: Path) -> Path:
             ms = 100 * float(ds["mean_cage_slip_ratio"])
             ax.axhline(ms, color="k", ls=":", lw=0.9, label=f"mean after transient {ms:.2f} %")
         _shade(ax, t_tr * 1e3)
-        ax.legend(fontsize=8, loc="lower right")
+        ax.legend(fontsize=8, loc="best")
     else:
         ax.text(0.5, 0.5, "no cage slip ratio (case unknown)", ha="center", va="center", transform=ax.transAxes)
     ax.set_xlabel("time [ms]")
@@ -255,6 +269,16 @@ def _plot_dynamic(ds, path: Path) -> Path:
     ax.set_title("(d) cage slip ratio", fontsize=10)
     ax.grid(alpha=0.3)
     return _save(fig, path)
+
+
+def _length_scale(extent_m: float) -> tuple[float, str]:
+    """Display factor and unit for a length of the given extent [m]: um, or nm below 1 um."""
+    return (1e9, "nm") if np.isfinite(extent_m) and extent_m < 1e-6 else (1e6, "\u00b5m")
+
+
+def _velocity_scale(extent: float) -> tuple[float, str]:
+    """Display factor and unit for a velocity extent [m/s]: mm/s, or um/s below 1 mm/s."""
+    return (1e6, "\u00b5m/s") if np.isfinite(extent) and extent < 1e-3 else (1e3, "mm/s")
 
 
 def _shade(ax, t_end_ms):
