@@ -20,7 +20,7 @@ import numpy as np
 from hsbearing.case import CaseError, parse_quantity
 from hsbearing.results import make_dataset, register, standard_attrs
 
-__all__ = ["friction_torque", "cli_main", "parse_speeds", "contact_states"]
+__all__ = ["friction_torque", "cli_main", "parse_speeds", "contact_states", "make_figures"]
 
 for _n, _d, _u, _l in [
     ("speed", ("speed",), "rad/s", "inner-ring rotational speed n"),
@@ -116,7 +116,7 @@ def contact_states(case, speed=None, source: str = "static"):
     elif source == "quasistatic":
         from hsbearing.solvers import quasistatic
 
-        ds = quasistatic.solve_case(case.with_overrides(**{"operating.inner_speed": f"{speed} rad/s"}))
+        ds = quasistatic.solve_case(case, inner_speed=speed, centrifugal=True, gyroscopic=True)
         Qi, Qo = ds["inner_contact_load"].values, ds["outer_contact_load"].values
         ai, ao = ds["inner_contact_angle"].values, ds["outer_contact_angle"].values
         psi = 2 * math.pi * np.arange(g.Z) / g.Z
@@ -233,3 +233,113 @@ def cli_main(args) -> int:
         write_netcdf(ds, args.output)
         print(f"archive: {args.output}")
     return 0
+
+
+# --------------------------------------------------------------------------- figures (seed 003 Figs. 8-16)
+
+
+def make_figures(outdir="docs/figures", speeds_rpm=None) -> list:
+    """Draw the seed 003 style figures (Figs. 8-16) as ``outdir/dgbb_*.png``; returns the paths.
+
+    Solid: seed 003 method (this package); dashed: SKF 2004 catalogue M_sl;
+    dotted: the seed's reading of the SKF model (differs only with radial load).
+    """
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from pathlib import Path
+
+    from hsbearing.case import load_case
+
+    out = Path(outdir)
+    out.mkdir(parents=True, exist_ok=True)
+    rpm = np.asarray(speeds_rpm if speeds_rpm is not None else np.geomspace(100, 20000, 40))
+    speeds = rpm * 2 * math.pi / 60
+    paths = []
+
+    def run(name="dgbb_6206", Fa=500, Fr=0, **extra):
+        case = load_case(name, **{"operating.axial_load": f"{Fa} N", "operating.radial_load": f"{Fr} N", **extra})
+        ds = friction_torque(case, speeds)
+        seed = skf_seed_sliding(case, speeds)
+        return ds, seed
+
+    def skf_seed_sliding(case, w):
+        from hsbearing.models.friction import skf2004
+
+        return skf2004.skf_moments(case, w, reading="seed003")["skf_sliding_torque"]
+
+    def save(fig, name):
+        p = out / name
+        fig.tight_layout()
+        fig.savefig(p, dpi=110)
+        plt.close(fig)
+        paths.append(p)
+
+    def components(Fa, Fr, fname, title):
+        ds, seed = run(Fa=Fa, Fr=Fr)
+        fig, ax = plt.subplots(figsize=(6.4, 4.2))
+        for var, lab, st in (("sliding_torque", "$M_{sl}$ (seed 003 method)", "k-"), ("spinning_torque", "$M_s$ spinning", "C0-"),
+                             ("rotation_sliding_torque", "$M_r$ ball rotation", "C1-"), ("orbital_sliding_torque", "$M_d$ orbital motion", "C2-")):
+            ax.plot(rpm, ds[var].values * 1e3, st, label=lab)
+        ax.plot(rpm, ds["skf_sliding_torque"].values * 1e3, "k--", label="SKF 2004 $M_{sl}$ (catalogue)")
+        if Fr > 0:
+            ax.plot(rpm, seed * 1e3, "k:", label="SKF $M_{sl}$ as read by seed 003")
+        ax.set_xscale("log")
+        ax.set_xlabel("inner-ring speed n [r/min]")
+        ax.set_ylabel("torque [N mm]")
+        ax.set_title(title, fontsize=10)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=8)
+        save(fig, fname)
+
+    def family(param_list, fname, title, label_fmt, runner):
+        fig, ax = plt.subplots(figsize=(6.4, 4.2))
+        for i, p in enumerate(param_list):
+            ds, seed = runner(p)
+            ax.plot(rpm, ds["sliding_torque"].values * 1e3, f"C{i}-", label=label_fmt(p) + " seed 003 method")
+            ax.plot(rpm, ds["skf_sliding_torque"].values * 1e3, f"C{i}--", label=label_fmt(p) + " SKF catalogue")
+        ax.set_xscale("log")
+        ax.set_xlabel("inner-ring speed n [r/min]")
+        ax.set_ylabel("sliding friction torque $M_{sl}$ [N mm]")
+        ax.set_title(title, fontsize=10)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7, ncol=2)
+        save(fig, fname)
+
+    # Fig. 8: Stribeck-type vs Coulomb mu = 0.07
+    ds_s, _ = run()
+    ds_c, _ = run(**{"friction.law": "coulomb", "friction.coefficient": 0.07})
+    fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    for ds, st, lab in ((ds_s, "-", "Stribeck-type (SKF-weighted) mu"), (ds_c, "--", "Coulomb mu = 0.07")):
+        for var, col, name in (("sliding_torque", "k", "$M_{sl}$"), ("spinning_torque", "C0", "$M_s$"), ("orbital_sliding_torque", "C2", "$M_d$")):
+            ax.plot(rpm, ds[var].values * 1e3, col + st, label=f"{name}, {lab}")
+    ax.set_xscale("log")
+    ax.set_xlabel("inner-ring speed n [r/min]")
+    ax.set_ylabel("torque [N mm]")
+    ax.set_title("DGBB 6206, Fa = 500 N: friction law (seed 003 Fig. 8)", fontsize=10)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=7)
+    save(fig, "dgbb_friction_law.png")
+
+    components(500, 0, "dgbb_components_axial.png", "DGBB 6206, pure axial Fa = 500 N (seed 003 Fig. 9, Table 2)")
+    family([500, 1000, 1500], "dgbb_axial_load.png", "DGBB 6206, pure axial load (seed 003 Fig. 10)",
+           lambda p: f"Fa = {p} N,", lambda p: run(Fa=p, Fr=0))
+    family(["dgbb_6206", "dgbb_6207", "dgbb_6208"], "dgbb_size_axial.png", "Fa = 500 N, bearing size (seed 003 Fig. 11)",
+           lambda p: p[5:] + ",", lambda p: run(name=p, Fa=500, Fr=0))
+    components(0, 500, "dgbb_components_radial.png", "DGBB 6206, pure radial Fr = 500 N (seed 003 Fig. 12, Table 3)")
+    family([500, 1000, 1500], "dgbb_radial_load.png", "DGBB 6206, pure radial load (seed 003 Fig. 13)",
+           lambda p: f"Fr = {p} N,", lambda p: run(Fa=0, Fr=p))
+    family(["dgbb_6206", "dgbb_6207", "dgbb_6208"], "dgbb_size_radial.png", "Fr = 500 N, bearing size (seed 003 Fig. 14)",
+           lambda p: p[5:] + ",", lambda p: run(name=p, Fa=0, Fr=500))
+    components(1000, 1000, "dgbb_components_combined.png", "DGBB 6206, Fa = Fr = 1000 N (seed 003 Fig. 15, Table 4)")
+    family([500, 1000, 1500], "dgbb_combined_load.png", "DGBB 6206, Fr = 1000 N, varying Fa (seed 003 Fig. 16)",
+           lambda p: f"Fa = {p} N,", lambda p: run(Fa=p, Fr=1000))
+    return paths
+
+
+if __name__ == "__main__":  # python -m hsbearing.models.friction [OUTDIR]
+    import sys as _sys
+
+    for _p in make_figures(_sys.argv[1] if len(_sys.argv) > 1 else "docs/figures"):
+        print(_p)

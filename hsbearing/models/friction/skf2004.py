@@ -221,7 +221,7 @@ def drag_moment(n_rpm, dm_mm, d_mm, D_mm, V_M, irw=1, K_Z=K_Z_DGBB):
     return V_M * K_ball * dm_mm**5 * n**2  # [1]
 
 
-def skf_moments(case, speeds) -> dict[str, np.ndarray]:
+def skf_moments(case, speeds, reading: str | None = None) -> dict[str, np.ndarray]:
     """SKF-model moments of a deep-groove ball bearing case at inner-ring speeds.
 
     Parameters
@@ -233,6 +233,7 @@ def skf_moments(case, speeds) -> dict[str, np.ndarray]:
         ``friction.static_load_rating``, ``boundary_coefficient``,
         ``ehl_coefficient``, ``skf_reading``, ``skf_drag_variable``.
     speeds : inner-ring speeds [rad/s] (array).
+    reading : G_sl reading (``"catalogue"``, ``"seed003"``); None = ``[friction] skf_reading``.
 
     Returns
     -------
@@ -257,7 +258,7 @@ def skf_moments(case, speeds) -> dict[str, np.ndarray]:
     w = np.asarray(speeds, dtype=float)
     n = np.abs(w) * 60.0 / (2.0 * math.pi)  # rad/s -> r/min
     G_rr = rolling_variable_G_rr(Fr, Fa, dm, C0, consts)
-    G_sl = sliding_variable_G_sl(Fr, Fa, dm, C0, consts, reading=fr.skf_reading)
+    G_sl = sliding_variable_G_sl(Fr, Fa, dm, C0, consts, reading=reading or fr.skf_reading)
     mu_sl = sliding_coefficient_mu_sl(n, nu, dm, fr.boundary_coefficient, fr.ehl_coefficient)
     phi_ish = inlet_shear_factor_phi_ish(n, nu, dm)
     phi_rs = replenishment_factor_phi_rs(n, nu, d, D, K_rs=K_RS[lub.lubrication])
