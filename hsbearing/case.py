@@ -601,6 +601,13 @@ def _check_physical(case: Case, source: str) -> None:
             close = difflib.get_close_matches(oil, list(traction.OILS), n=1)
             hint = f"; did you mean {close[0]!r}?" if close else ""
             raise CaseError(source, "lubricant.oil", f"unknown oil {oil!r}{hint} (known: {', '.join(traction.OILS)})")
+        law = case.lubricant.traction_law
+        if law not in traction.KNOWN_LAWS[oil]:
+            raise CaseError(source, "lubricant.traction_law",
+                            f"unknown traction law {law!r} for oil {oil} (known: {', '.join(traction.KNOWN_LAWS[oil])})")
+        if case.system == "angular_contact" and case.lubricant.temperature <= 273.15:
+            raise CaseError(source, "lubricant.temperature",
+                            "the seed 004 traction laws are fitted in degC and undefined at or below 0 degC")
 
 
 # ----------------------------------------------------------------------------

@@ -364,3 +364,19 @@ def test_numba_kernel_survives_zero_load_and_speed():
         if traction.law_id("4050", "printed") != lid:
             assert all(math.isfinite(x) for x in c)
             assert math.isfinite(zhang2016.mu_nb(*c, 0.1))
+
+
+# ----------------------------------------------------------------------------
+# case-file vocabulary (lubricant.traction_law is checked at load time)
+
+
+def test_case_traction_law_closed_vocabulary():
+    from hsbearing.case import CaseError, load_case
+
+    assert load_case("zhang2016", **{"lubricant.traction_law": "printed"}).lubricant.traction_law == "printed"
+    with pytest.raises(CaseError) as e:
+        load_case("zhang2016", **{"lubricant.oil": "4050", "lubricant.traction_law": "bounded"})
+    assert e.value.key == "lubricant.traction_law" and "analogue_4106" in str(e.value)
+    with pytest.raises(CaseError) as e:
+        load_case("zhang2016", **{"lubricant.temperature": "-20 degC"})
+    assert e.value.key == "lubricant.temperature"
