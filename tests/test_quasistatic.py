@@ -256,6 +256,32 @@ def test_equilibrium_recomputed_from_dataset(case7206):
     assert abs(float(ds.inner_ring_tilt_y)) > 0
 
 
+def test_ball_equations_in_harris_form(case7206, fast7206):
+    """Harris & Kotzalas Vol. 2 Eqs. 3.14-3.15 with Harris' signed quantities.
+
+    Harris writes Q_i sin a_i - Q_o sin a_o - (M_g/D)(lambda_i cos a_i - lambda_o cos a_o) = 0 and
+    Q_i cos a_i - Q_o cos a_o + (M_g/D)(lambda_i sin a_i - lambda_o sin a_o) + F_c = 0 with
+    M_g = J omega_R omega_m sin beta and omega_R < 0 from his Ch. 8 speed ratio (inner ring turning
+    forward).  Our M_g = dH/dt . e_t is the same torque with the opposite sign convention.
+    """
+    ds = fast7206
+    D = case7206.bearing.ball_diameter
+    m = case7206.materials.ball.density * math.pi * D**3 / 6
+    J = 0.1 * m * D**2
+    wR = -ds.ball_spin_speed.values  # Harris' omega_R is negative for a forward-turning inner ring
+    Mg_h = J * wR * ds.ball_orbit_speed.values * np.sin(ds.ball_pitch_angle.values)
+    np.testing.assert_allclose(Mg_h, -ds.ball_gyroscopic_moment.values, rtol=1e-9)
+    Qi, Qo = ds.inner_contact_load.values, ds.outer_contact_load.values
+    ai, ao = ds.inner_contact_angle.values, ds.outer_contact_angle.values
+    li, lo = 0.0, 2.0
+    Fc = m * ds.ball_center_radial.values * ds.ball_orbit_speed.values ** 2
+    e1 = Qi * np.sin(ai) - Qo * np.sin(ao) - Mg_h / D * (li * np.cos(ai) - lo * np.cos(ao))
+    e2 = Qi * np.cos(ai) - Qo * np.cos(ao) + Mg_h / D * (li * np.sin(ai) - lo * np.sin(ao)) + Fc
+    assert np.max(np.abs(e1)) < 1e-8 * 1000 and np.max(np.abs(e2)) < 1e-8 * 1000
+    # and the gyroscopic moment matters: its friction force is a few N against ~200 N contact loads
+    assert 1.0 < np.max(np.abs(2 * Mg_h / D)) < 20.0
+
+
 def test_zero_speed_is_the_static_case(case7206, static7206):
     """Speed 0 and 'centrifugal and gyroscopic off' give the same equilibrium."""
     off = qs.solve_case(case7206, inner_speed=14000 * RPM, centrifugal=False, gyroscopic=False)

@@ -27,6 +27,7 @@ Speed sweeps continue from the previous solution (``initial=``).
 
 from __future__ import annotations
 
+import functools
 import math
 import time
 from dataclasses import dataclass, field, replace
@@ -79,7 +80,8 @@ for _n, _d, _u, _l in [
     ("ball_center_axial", ("time", "ball"), "m", "ball-centre axial position from the plane of the unloaded ball centres"),
     ("ball_center_radial", ("time", "ball"), "m", "ball-centre distance from the bearing axis"),
     ("ball_centrifugal_force", ("time", "ball"), "N", "ball centrifugal force F_c = m R_b omega_m^2"),
-    ("ball_gyroscopic_moment", ("time", "ball"), "N*m", "gyroscopic moment M_g on the ball about the circumferential axis"),
+    ("ball_gyroscopic_moment", ("time", "ball"), "N*m",
+     "gyroscopic moment M_g = dH/dt . e_t the contact friction supplies to the ball (magnitude J omega_R omega_m sin beta)"),
     ("inner_ring_radial_displacement_y", ("time",), "m", "inner-ring displacement along Y"),
     ("inner_ring_radial_displacement_z", ("time",), "m", "inner-ring displacement along Z"),
     ("inner_ring_tilt_y", ("time",), "rad", "inner-ring tilt (small rotation) about Y"),
@@ -148,6 +150,12 @@ class Problem:
         return self.omega_i != 0.0 or self.omega_o != 0.0
 
 
+@functools.lru_cache(maxsize=64)
+def _contact_stiffness(D, dm, fi, fo, E1, nu1, E2, nu2) -> qp.ContactStiffness:
+    """The K(alpha) table of a bearing, built once per geometry and materials (speed sweeps, studies)."""
+    return qp.ContactStiffness.build(D, dm, fi, fo, E1, nu1, E2, nu2)
+
+
 def build_problem(case, *, inner_speed=None, centrifugal=True, gyroscopic=True, control=None,
                   fixed_tilt=False) -> Problem:
     """A :class:`Problem` from a case (``inner_speed`` [rad/s] overrides ``[operating] inner_speed``).
@@ -166,8 +174,8 @@ def build_problem(case, *, inner_speed=None, centrifugal=True, gyroscopic=True, 
     if control not in qp.LAMBDA_SPLIT:
         raise CaseError(case.source, "simulation.kinematics",
                         f"{control!r} is not available in the quasi-static model (use outer_race_control or inner_race_control)")
-    stiff = qp.ContactStiffness.build(g.D, g.dm, g.fi, g.fo, b.elastic_modulus, b.poisson_ratio,
-                                      r.elastic_modulus, r.poisson_ratio)
+    stiff = _contact_stiffness(g.D, g.dm, g.fi, g.fo, b.elastic_modulus, b.poisson_ratio,
+                               r.elastic_modulus, r.poisson_ratio)
     op = case.operating
     loads = np.array([op.axial_load, op.radial_load, op.radial_load_z, op.moment_y, op.moment_z], dtype=float)
     wi = op.inner_speed if inner_speed is None else float(inner_speed)
