@@ -42,6 +42,7 @@ MODEL_DEFAULTS = {
     "land_length": None,  # m, guide-land film length (None: cage width)
     "land_eps_max": 0.95,  # saturation of the guide-land eccentricity ratio
     "land_contact_K": 6e9,  # N/m^1.5, elastic rub of the cage on the land beyond the clearance
+    "gravity": 9.81,  # m/s^2 along -Y (horizontal shaft); 0 switches it off
 }
 
 for _n, _d, _u, _l in [
@@ -206,7 +207,7 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
         m_i=g.inner_ring_mass, Ip_i=g.inner_ring_axial_inertia, Id_i=g.inner_ring_diametral_inertia,
         F_x=op.axial_load, F_y=op.radial_load, F_z=op.radial_load_z, M_y=op.moment_y, M_z=op.moment_z,
         ehl=1.0 if (ehl_rolling and damping) else 0.0, drag=1.0 if (drag and friction) else 0.0,
-        e_eps=opt["pocket_eps"],
+        e_eps=opt["pocket_eps"], grav=opt["gravity"],
     )
     for name, v in vals.items():
         p[K.P_INDEX[name]] = v
@@ -296,6 +297,8 @@ def mechanical_energy(model: DynamicModel, y) -> np.ndarray:
     E += 0.5 * P[K.P_IDI] * (u["betadot_y"] ** 2 + u["betadot_z"] ** 2)
     E -= P[K.P_FX] * u["x_i"] + P[K.P_FY] * u["y_i"] + P[K.P_FZ] * u["z_i"]
     E -= P[K.P_MY] * u["beta_y"] + P[K.P_MZ] * u["beta_z"]
+    gr = P[K.P_GRAV]  # potential of gravity along -Y
+    E += gr * (mb * (u["r_b"] * np.cos(u["theta_b"])).sum(-1) + P[K.P_MC] * u["y_c"] + P[K.P_MI] * u["y_i"])
     # elastic energies 2/5 K delta^2.5 from the kernel's geometry
     for k in range(y.shape[0]):
         aux, _ = model.outputs(y[k])

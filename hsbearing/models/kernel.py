@@ -34,13 +34,14 @@ from hsbearing.models.traction.zhang2016 import coefficients_nb, mu_nb
 _names = """Z D m_b I_b rho_i g_i off_i rho_o g_o off_o K_i K_o cd_i cd_o acoef_i acoef_o
 omega_i omega_o Ep Rx_i Rx_o k_i k_o eta_in alpha T_K law_id U_eps s_eps friction damping dm
 c_p K_c eta_film Rsq_c h_min mu_c v0_c rho_e C_D v0_D m_c Ip_c Id_c R_land L_land c_land eps_max
-K_land m_i Ip_i Id_i F_x F_y F_z M_y M_z ehl drag e_eps""".split()
+K_land m_i Ip_i Id_i F_x F_y F_z M_y M_z ehl drag e_eps grav""".split()
 P_INDEX = {n: i for i, n in enumerate(_names)}
 N_PARAMS = len(_names)
 (P_Z, P_D, P_MB, P_IB, P_RHOI, P_GI, P_OFFI, P_RHOO, P_GO, P_OFFO, P_KI, P_KO, P_CDI, P_CDO, P_ACI, P_ACO,
  P_WI, P_WO, P_EP, P_RXI, P_RXO, P_KEI, P_KEO, P_ETAIN, P_ALPHA, P_TK, P_LAW, P_UEPS, P_SEPS, P_FRIC, P_DAMP, P_DM,
  P_CP, P_KC, P_ETAF, P_RSQC, P_HMIN, P_MUC, P_V0C, P_RHOE, P_CDRAG, P_V0D, P_MC, P_IPC, P_IDC, P_RLAND, P_LLAND,
- P_CLAND, P_EPSMAX, P_KLAND, P_MI, P_IPI, P_IDI, P_FX, P_FY, P_FZ, P_MY, P_MZ, P_EHL, P_DRAG, P_EEPS) = range(N_PARAMS)
+ P_CLAND, P_EPSMAX, P_KLAND, P_MI, P_IPI, P_IDI, P_FX, P_FY, P_FZ, P_MY, P_MZ, P_EHL, P_DRAG, P_EEPS,
+ P_GRAV) = range(N_PARAMS)
 
 # contribution columns: forces/moments on the inner ring (inertial X, Y, Z; moments about its centre)
 # and on the cage (inertial; moments about the cage centre)
@@ -172,7 +173,10 @@ def ball_loop(y, P, qu, qw, ydot, contrib, aux, want_aux):
         vx, vr, thd = y[3 * Z + j], y[4 * Z + j], y[5 * Z + j]
         wx, wy, wz = y[6 * Z + j], y[7 * Z + j], y[8 * Z + j]
         c, s = math.cos(th), math.sin(th)
-        Fx = Fr = Ft = 0.0
+        # gravity along -Y (horizontal shaft): (0, -g, 0) in the ball frame is (0, -g cos th, g sin th)
+        Fx = 0.0
+        Fr = -m * P[P_GRAV] * c
+        Ft = m * P[P_GRAV] * s
         Mx = Mr = Mt = 0.0
         # ---------------- inner race contact (Eqs. 5-10, Q_i, T_i, F_R,i)
         cx, cr, cxd, crd = inner_groove_centre(th, P[P_RHOI], P[P_GI], xi, yi, zi, by, bz, vxi, vyi, vzi, byd, bzd, thd)
@@ -359,12 +363,12 @@ def global_rows(y, P, csum, ydot, gaux):
     gaux[1] = Flz
     gaux[2] = Mlx
     gaux[3] = csum[C_RMX]
-    a = cage_equations_of_motion(csum[C_CFX], csum[C_CFY] + Fly, csum[C_CFZ] + Flz, csum[C_CMX] + Mlx,
+    a = cage_equations_of_motion(csum[C_CFX], csum[C_CFY] + Fly - P[P_MC] * P[P_GRAV], csum[C_CFZ] + Flz, csum[C_CMX] + Mlx,
                                  csum[C_CMY], csum[C_CMZ], phd, psyd, pszd, P[P_MC], P[P_IPC], P[P_IDC])
     for k in range(6):
         ydot[cg + k] = y[cg + 6 + k]
         ydot[cg + 6 + k] = a[k]
-    b = ring_equations_of_motion(P[P_FX] + csum[C_RFX], P[P_FY] + csum[C_RFY], P[P_FZ] + csum[C_RFZ],
+    b = ring_equations_of_motion(P[P_FX] + csum[C_RFX], P[P_FY] + csum[C_RFY] - P[P_MI] * P[P_GRAV], P[P_FZ] + csum[C_RFZ],
                                  P[P_MY] + csum[C_RMY], P[P_MZ] + csum[C_RMZ], P[P_WI], y[rg + 8], y[rg + 9],
                                  P[P_MI], P[P_IPI], P[P_IDI])
     for k in range(5):

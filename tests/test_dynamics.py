@@ -1,0 +1,277 @@
+"""Dynamic model (seed 004, Eqs. 5-21): unit tests of the force functions, the compiled
+Jacobian, and the physics invariants (energy, symmetry, quasi-static agreement, tolerance).
+
+The long validations are marked ``slow``.  Literature checks name their source;
+everything else is a physical invariant or an independent cross-check.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+import hsbearing as h
+from hsbearing import dynamics as dy
+from hsbearing.models import ball, cage, drag, ring
+from hsbearing.solvers.state import StateLayout
+
+
+@pytest.fixture(scope="module")
+def case():
+    return h.load_case("zhang2016")
+
+
+@pytest.fixture(scope="module")
+def model(case):
+    return dy.build_model(case)
+
+
+# ----------------------------------------------------------------------------- state layout
+
+
+def test_state_layout_roundtrip():
+    L = StateLayout(11)
+    assert L.size == 121 and len(L.state_names) == 121 and len(set(L.state_names)) == 121
+    rng = np.random.default_rng(0)
+    y = rng.normal(size=L.size)
+    u = L.unpack(y)
+    y2 = L.pack({k: u[k] for k in ("x_b", "r_b", "theta_b", "xdot_b", "rdot_b", "thetadot_b",
+                                   "omega_x", "omega_y", "omega_z")},
+                {k: u[k] for k in ("x_c", "y_c", "z_c", "phi_c", "psi_y", "psi_z",
+                                   "xdot_c", "ydot_c", "zdot_c", "phidot_c", "psidot_y", "psidot_z")},
+                {k: u[k] for k in ("x_i", "y_i", "z_i", "beta_y", "beta_z",
+                                   "xdot_i", "ydot_i", "zdot_i", "betadot_y", "betadot_z")})
+    assert np.array_equal(y, y2)
+    assert L.state_names[L.cage0] == "x_c" and L.state_names[L.ring0] == "x_i"
+    assert np.all(L.atol(1e-8) > 0)
+
+
+# ----------------------------------------------------------------------------- force functions
+
+
+def test_groove_contact_zero_at_nominal_and_sign():
+    off = 0.02 * 9.525e-3
+    a = math.radians(25)
+    d, nx, nr = ball.groove_contact(off * math.sin(a), off * math.cos(a), off)
+    assert abs(d) < 1e-15 and math.isclose(math.atan2(nx, nr), a)
+    d2, _, _ = ball.groove_contact(1.001 * off * math.sin(a), 1.001 * off * math.cos(a), off)
+    assert d2 > 0  # groove centre moving away from the ball = compression
+
+
+def test_hertz_normal_load():
+    K = 1e10
+    assert ball.hertz_normal_load(0.0, 1.0, K, 1e3) == 0.0
+    assert ball.hertz_normal_load(-1e-6, -1.0, K, 1e3) == 0.0
+    assert math.isclose(ball.hertz_normal_load(4e-6, 0.0, K, 0.0), K * 4e-6**1.5)
+    # continuous (C1) at onset: force and slope vanish
+    assert ball.hertz_normal_load(1e-12, 0.0, K, 0.0) < 1e-7
+    # damping adds while approaching, never pulls
+    assert ball.hertz_normal_load(4e-6, 0.1, K, 1e3) > ball.hertz_normal_load(4e-6, 0.0, K, 1e3)
+    assert ball.hertz_normal_load(4e-6, -1e3, K, 1e3) == 0.0
+
+
+def test_strip_weights_are_the_hertz_load_distribution():
+    u, w = ball.strip_load_weights(5)
+    assert math.isclose(w.sum(), 1.0)
+    assert np.allclose(w, w[::-1]) and np.allclose(u, -u[::-1])
+    # second moment of the strip load (3/4)(1 - u^2): int u^2 (3/4)(1-u^2) du over (-1, 1) = 1/5
+    assert math.isclose((w * u * u).sum(), 0.2, rel_tol=1e-12)
+
+
+def test_ehl_rolling_force_scaling():
+    args = dict(Rx=3.9e-3, k=8.0, Ep=2.28e11, eta0=3e-3, alpha=1.28e-8)
+    assert ball.ehl_rolling_force(10.0, 0.0, **args) == 0.0
+    f1 = ball.ehl_rolling_force(10.0, 200.0, **args)
+    f2 = ball.ehl_rolling_force(20.0, 200.0, **args)
+    f3 = ball.ehl_rolling_force(10.0, 400.0, **args)
+    assert 0 < f1 < 1.0  # a small fraction of the load (order 0.01-0.1 N at 200 N)
+    assert math.isclose(f2 / f1, 2**0.66) and math.isclose(f3 / f1, 2**0.47)
+    assert math.isclose(ball.ehl_rolling_force(-10.0, 200.0, **args), f1)
+
+
+def test_ball_equations_gyroscopic_terms_conserve_spin_magnitude():
+    # no moments: d|w|^2/dt = 2 w . w' = 0 (the frame-rotation terms only turn w)
+    _, _, _, wxd, wyd, wzd = ball.ball_equations_of_motion(0, 0, 0, 0, 0, 0, 0.023, 0.0, 600.0, 1200.0, -300.0, 3.5e-3, 3e-8)
+    assert abs(-2650.0 * wxd + 1200.0 * wyd + -300.0 * wzd) < 1e-6
+    xdd, rdd, thdd, *_ = ball.ball_equations_of_motion(0, 0, 0, 0, 0, 0, 0.023, 0.0, 600.0, 0, 0, 3.5e-3, 3e-8)
+    assert math.isclose(rdd, 0.023 * 600.0**2)  # centrifugal
+    assert xdd == 0 and thdd == 0
+
+
+def test_pocket_force():
+    c, K, eta, R2, hmin = 50e-6, 1e9, 3e-3, 2.3e-5, 0.5e-6
+    assert cage.pocket_normal_force(20e-6, 0.0, c, K, eta, R2, hmin) == 0.0
+    assert cage.pocket_normal_force(20e-6, -1.0, c, K, eta, R2, hmin) == 0.0  # separating film cavitates
+    assert cage.pocket_normal_force(20e-6, 0.1, c, K, eta, R2, hmin) > 0.0  # squeeze resists approach
+    assert math.isclose(cage.pocket_normal_force(c + 1e-6, 0.0, c, K, 0.0, R2, hmin), K * 1e-6**1.5)
+    # continuous through contact onset
+    f_a = cage.pocket_normal_force(c - 1e-12, 0.01, c, K, eta, R2, hmin)
+    f_b = cage.pocket_normal_force(c + 1e-12, 0.01, c, K, eta, R2, hmin)
+    assert abs(f_a - f_b) < 1e-5 * max(f_a, 1e-9)
+    assert cage.pocket_friction_factor(0.0, 0.1, 0.01) == pytest.approx(10.0)
+
+
+def test_guide_land_short_bearing_matches_ocvirk_load_capacity():
+    # Ocvirk short bearing, steady (no whirl, no squeeze): W = eta w R L^3 eps sqrt(16 eps^2 + pi^2 (1-eps^2)) / (4 c^2 (1-eps^2)^2)
+    # (Hamrock, Schmid & Jacobson, Fundamentals of Fluid Film Lubrication, short-width journal bearing)
+    eta, w, R, L, c = 3e-3, 600.0, 0.026, 0.011, 0.2e-3
+    for eps in (0.1, 0.5, 0.8):
+        Fr, Ft = cage.guide_land_forces(eps, 0.0, w, 0.0, eta, R, L, c)
+        W = eta * w * R * L**3 * eps * math.sqrt(16 * eps**2 + math.pi**2 * (1 - eps**2)) / (4 * c**2 * (1 - eps**2) ** 2)
+        assert math.hypot(Fr, Ft) == pytest.approx(W, rel=1e-12)
+        assert Fr < 0 < Ft  # restoring along the line of centres, cross-coupled force ahead
+    # half-frequency whirl carries no load (w - 2 whirl = 0), squeeze resists approach
+    assert cage.guide_land_forces(0.5, 0.0, w, w / 2, eta, R, L, c) == (0.0, 0.0)
+    assert cage.guide_land_forces(0.5, 10.0, 0.0, 0.0, eta, R, L, c)[0] < 0
+    # Petroff torque at zero eccentricity
+    assert cage.guide_land_torque(0.0, w, eta, R, L, c) == pytest.approx(-2 * math.pi * eta * R**3 * L * w / c)
+    assert cage.smooth_eccentricity(0.5, 0.95) == pytest.approx(0.5, rel=1e-3)
+    assert cage.smooth_eccentricity(5.0, 0.95) < 0.95
+
+
+def test_drag_force():
+    D, rho, C = 9.525e-3, 50.0, 0.5
+    f = drag.ball_drag_force(14.0, D, rho, C, 0.0)
+    assert f == pytest.approx(-0.5 * C * rho * math.pi * D**2 / 4 * 14.0**1.95)
+    assert drag.ball_drag_force(-14.0, D, rho, C, 0.0) == pytest.approx(-f)
+    assert drag.ball_drag_force(0.0, D, rho, C, 0.01) == 0.0
+    assert drag.mixture_density(960.0, 0.05) == pytest.approx(0.05 * 960 + 0.95 * 1.1)
+
+
+def test_inner_groove_centre_rates_are_derivatives():
+    th, rho, g, xi, yi, zi, by, bz = 0.7, 0.02345, 1.2e-4, 1e-5, 2e-6, -3e-6, 1e-4, -2e-4
+    v = (0.01, -0.02, 0.03, 0.5, -0.4)
+    thd = 600.0
+    c0 = ring.inner_groove_centre(th, rho, g, xi, yi, zi, by, bz, *v, thd)
+    dt = 1e-7
+
+    def at(s):
+        return ring.inner_groove_centre(th + thd * s, rho, g, xi + v[0] * s, yi + v[1] * s, zi + v[2] * s,
+                                        by + v[3] * s, bz + v[4] * s, *v, thd)
+
+    c1, cm = at(dt), at(-dt)
+    assert (c1[0] - cm[0]) / (2 * dt) == pytest.approx(c0[2], rel=1e-5)
+    assert (c1[1] - cm[1]) / (2 * dt) == pytest.approx(c0[3], rel=1e-5)
+
+
+# ----------------------------------------------------------------------------- assembled model
+
+
+def test_model_start_matches_quasistatic_loads(model):
+    qs = model.info["quasistatic"]
+    aux, _ = model.outputs(model.y0)
+    # same geometry, Hertz constants and positions as the quasi-static solver: loads agree closely
+    assert np.allclose(aux[:, 0], qs["inner_contact_load"].values, rtol=5e-3)
+    assert np.allclose(aux[:, 1], qs["outer_contact_load"].values, rtol=5e-3)
+    assert np.allclose(aux[:, 2], qs["inner_contact_angle"].values, atol=1e-4)
+    assert np.allclose(aux[:, 3], qs["outer_contact_angle"].values, atol=1e-4)
+    assert np.all(np.isfinite(model.f(model.y0)))
+
+
+def test_arrowhead_jacobian_matches_full_finite_differences(model):
+    y = model.y0.copy()
+    rng = np.random.default_rng(1)
+    L = model.layout
+    y[L.ball("theta_b")] += rng.normal(scale=1e-3, size=L.Z)  # break the symmetry
+    y[L.cage("y_c")] = 20e-6
+    y[L.cage("phi_c")] = 0.002
+    N = y.size
+    J = np.zeros((N, N))
+    model.jac(0.0, y, None, J)
+    Jn = np.zeros((N, N))
+    for k in range(N):
+        hk = 1e-6 * max(abs(y[k]), model.hscale[k])
+        yp, ym = y.copy(), y.copy()
+        yp[k] += hk
+        ym[k] -= hk
+        Jn[:, k] = (model.f(yp) - model.f(ym)) / (2 * hk)
+    scale = np.abs(Jn).max(axis=1, keepdims=True) + 1e-30
+    err = np.abs(J - Jn) / scale
+    assert np.max(err) < 2e-3, np.unravel_index(np.argmax(err), err.shape)
+
+
+def test_energy_is_conserved_without_friction_and_damping(case):
+    """Done-when (c): friction and damping off -> total mechanical energy constant to the solver tolerance."""
+    m = dy.build_model(case, friction=False, damping=False, gravity=9.81)
+    from hsbearing.solvers.cvode import integrate
+
+    t = np.linspace(0.0, 2e-3, 21)
+    res = integrate(m.rhs, m.y0, t, rtol=1e-9, atol=m.layout.atol(1e-12), jacfn=m.jac)
+    assert res.success, res.status
+    E = dy.mechanical_energy(m, res.y)
+    # the energy exchanged between kinetic and elastic forms (the scale of what could go wrong):
+    aux, _ = m.outputs(m.y0)
+    elastic = (0.4 * aux[:, 0] * (aux[:, 0] / m.P[dy.K.P_KI]) ** (2 / 3)).sum()
+    assert np.ptp(E) < 1e-4 * elastic, (np.ptp(E), elastic)
+    # and the motion is not trivial (the start is out of dynamic equilibrium without friction)
+    assert np.ptp(res.y[:, m.layout.ring("x_i")]) > 1e-9
+
+
+def test_short_run_is_symmetric_and_finite(case):
+    """Done-when (b), short span: pure axial load keeps the balls identical and the cage inside its clearance."""
+    ds = dy.simulate(case, duration=2e-3, annotate=False, gravity=0.0)
+    assert ds.attrs["status"] == "ok"
+    for v in ("inner_contact_load", "outer_contact_load", "ball_orbit_speed"):
+        a = ds[v].values[-1]
+        assert np.ptp(a) <= 0.01 * np.abs(a).mean(), v
+    r = np.hypot(ds.cage_center_y.values, ds.cage_center_z.values)
+    assert r.max() < ds.attrs["guide_clearance"]
+    assert ds.attrs["solver_steps"] > 0 and ds.attrs["solver_rhs_evals"] > 0
+
+
+def test_bad_input_is_a_case_error():
+    bad = h.load_case("zhang2016", **{"bearing.outer_land_diameter": "51 mm"})
+    with pytest.raises(h.CaseError, match="outer_land_diameter"):
+        dy.build_model(bad)
+
+
+def test_solver_failure_keeps_partial(case):
+    with pytest.raises(h.SolverError) as exc:
+        dy.simulate(case, duration=5e-3, wall_limit=1e-6, annotate=False)
+    part = exc.value.partial
+    assert part is not None and part.attrs["status"].startswith("failed at t = ")
+
+
+# ----------------------------------------------------------------------------- long validations
+
+
+@pytest.fixture(scope="module")
+def steady_run(case):
+    return dy.simulate(case, duration=0.05, annotate=False, gravity=0.0)
+
+
+@pytest.mark.slow
+def test_pure_axial_steady_state_matches_quasistatic(case, steady_run):
+    """Done-when (a): after start-up, loads and angles within 2 % of the quasi-static solution, cage speed 1 %."""
+    qs = h.quasi_static(case)
+    ds = steady_run
+    late = ds.time > 0.6 * float(ds.time[-1])
+    for v in ("inner_contact_load", "outer_contact_load", "inner_contact_angle", "outer_contact_angle"):
+        dyn = ds[v].sel(time=late).mean("time").values
+        assert np.allclose(dyn, qs[v].values, rtol=0.02), (v, dyn, qs[v].values)
+    wc = float(ds.cage_speed.sel(time=late).mean())
+    assert wc == pytest.approx(float(qs["cage_speed"]), rel=0.01)
+
+
+@pytest.mark.slow
+def test_pure_axial_symmetry_long(steady_run):
+    """Done-when (b): balls identical within 1 %, cage centre inside the guide clearance."""
+    ds = steady_run
+    for v in ("inner_contact_load", "outer_contact_load", "ball_orbit_speed"):
+        a = ds[v].values[-50:]
+        assert np.all(np.ptp(a, axis=1) <= 0.01 * np.abs(a).mean(axis=1)), v
+    r = np.hypot(ds.cage_center_y.values, ds.cage_center_z.values)
+    assert r.max() < ds.attrs["guide_clearance"]
+
+
+@pytest.mark.slow
+def test_halving_rtol_changes_cage_slip_by_less_than_1_percent(case, steady_run):
+    """Done-when (d)."""
+    ds2 = dy.simulate(case, duration=0.05, rtol=0.5 * case.simulation.rtol, annotate=False, gravity=0.0)
+    late = ds2.time > 0.6 * float(ds2.time[-1])
+    s1 = float(steady_run.cage_speed.sel(time=late).mean())
+    s2 = float(ds2.cage_speed.sel(time=late).mean())
+    th = float(steady_run.attrs["theoretical_cage_speed_nominal"])
+    slip1, slip2 = 1 - s1 / th, 1 - s2 / th
+    # "less than 1 %" of the slip ratio, with a floor of 1e-4 absolute when the slip itself is tiny
+    assert abs(slip1 - slip2) < max(0.01 * abs(slip1), 1e-4)
