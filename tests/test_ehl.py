@@ -112,3 +112,16 @@ def test_bad_radius_convention_and_missing_thermal_inputs():
         ehl.film_thickness(1.0, 1.0, 1e-3, 1e-2, 2e11, 0.01, 2e-8, radius="Ry")
     with pytest.raises(ValueError, match="thermal"):
         ehl.film_thickness(1.0, 1.0, 1e-3, 1e-2, 2e11, 0.01, 2e-8, thermal=True)
+
+
+def test_lubricant_parameters_from_case_and_overrides():
+    from hsbearing.case import load_case
+
+    c = load_case("zhang2016")
+    p = ehl.lubricant_parameters(c)
+    assert p["eta"] == pytest.approx(0.033 * math.exp(-0.0215 * (130.0 - 27.0)), rel=1e-12)
+    assert p["alpha"] == 1.28e-8 and p["T"] == pytest.approx(403.15)
+    p = ehl.lubricant_parameters(load_case("zhang2016", **{"lubricant.kinematic_viscosity": "5 mm^2/s"}))
+    assert p["eta"] == pytest.approx(5e-6 * 960.0)
+    p = ehl.lubricant_parameters(load_case("zhang2016", **{"lubricant.oil": "4050", "lubricant.temperature": "27 degC"}))
+    assert p["eta"] == pytest.approx(0.060) and p["alpha"] == 2.02e-8

@@ -54,6 +54,7 @@ __all__ = [
     "thermal_loading_parameter",
     "thermal_reduction_factor",
     "film_thickness",
+    "lubricant_parameters",
 ]
 
 #: Reference temperature [K] of Table 1's "ambient" eta0 (seed 004): 27 degC,
@@ -201,3 +202,34 @@ def film_thickness(Q, u, Rx, Ry, Ep, eta0, alpha, *, k=None, radius="Rx", beta=N
         phi = thermal_reduction_factor(thermal_loading_parameter(eta0, beta, u, K), p_max, Ep, slide_roll)
         h_c, h_min = h_c * phi, h_min * phi
     return h_c, h_min
+
+
+def lubricant_parameters(case):
+    """Inlet viscosity and thermal data of a case's lubricant, SI.
+
+    Precedence for the inlet viscosity eta [Pa s] at the case temperature T:
+
+    1. ``lubricant.kinematic_viscosity`` nu (an operating value) -> eta = nu rho;
+    2. otherwise eta0 exp(-beta (T - T_ref)), :func:`viscosity_at_temperature`, with eta0 from
+       ``lubricant.dynamic_viscosity`` if given (it replaces Table 1's ambient value) or from the
+       oil's Table 1 entry (seed 004), T_ref = :data:`REFERENCE_TEMPERATURE`.
+
+    alpha [1/Pa] is ``lubricant.pressure_viscosity_coefficient`` or the oil's; beta [1/K] and
+    K [W/(m K)] are the oil's (Table 1).
+
+    Returns
+    -------
+    dict with eta, alpha, beta, K, T
+    """
+    from hsbearing.models.traction import OILS
+
+    lub = case.lubricant
+    oil = OILS[lub.oil]
+    T = lub.temperature
+    if lub.kinematic_viscosity is not None:
+        eta = lub.kinematic_viscosity * lub.density
+    else:
+        eta0 = lub.dynamic_viscosity if lub.dynamic_viscosity is not None else oil.eta0
+        eta = float(viscosity_at_temperature(eta0, oil.beta, T))
+    alpha = lub.pressure_viscosity_coefficient if lub.pressure_viscosity_coefficient is not None else oil.alpha
+    return {"eta": float(eta), "alpha": float(alpha), "beta": oil.beta, "K": oil.K, "T": T}
