@@ -729,7 +729,7 @@ def build_model(case, *, creep_speed: float = 2e-5, cage_slip_speed: float = 1e-
             raise CaseError(case.source, key, "missing required key for the gyro ribbon-cage model")
     D, dm, Z = b.ball_diameter, b.pitch_diameter, b.ball_count
     Dp, k = c.pocket_diameter, c.pocket_depth
-    if not (0.5 * D < k <= 0.5 * Dp):
+    if not (0.5 * D < k <= 0.5 * Dp * (1.0 + 1e-9)):
         raise CaseError(case.source, "cage.pocket_depth",
                         f"pocket depth k = {k*1e3:g} mm must lie between D/2 = {D*500:g} mm and D_p/2 = {Dp*500:g} mm (seed 000 Sec. 3.2)")
     st = static_friction(case)

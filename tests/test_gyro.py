@@ -1,0 +1,265 @@
+"""Gyroscope mini bearing with ribbon cage (seed 000, Jiang et al. 2014): friction sources and cage dynamics.
+
+Literature values come from tests/data/seed000_friction_moments.csv (seed 000 Table 2, calculated values)
+and seed000_gyro_bearing.csv (Table 1).  Runs here are short (<= 0.15 s simulated); see
+docs/validation/gyro.md for the full comparison.
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import hsbearing
+from hsbearing.case import CaseError
+from hsbearing.models.friction import gyro
+
+DATA = Path(__file__).parent / "data"
+
+
+def _table2():
+    with open(DATA / "seed000_friction_moments.csv") as fh:
+        rows = [r for r in csv.DictReader(line for line in fh if not line.startswith("#"))]
+    return [{k: float(v) for k, v in r.items()} for r in rows]
+
+
+def _case(**kw):
+    return hsbearing.load_case("jiang2014_gyro", **kw)
+
+
+# --------------------------------------------------------------------------- case vs Table 1
+
+
+def test_case_matches_table1():
+    """The bundled case carries Table 1 of seed 000 (seed000_gyro_bearing.csv)."""
+    with open(DATA / "seed000_gyro_bearing.csv") as fh:
+        rows = {r["parameter"]: float(r["value"]) for r in csv.DictReader(line for line in fh if not line.startswith("#"))}
+    c = _case()
+    mm = 1e-3
+    assert c.bearing.ball_diameter == pytest.approx(rows["ball_diameter_Dw"] * mm)
+    assert c.bearing.ball_count == rows["number_of_balls_z"]
+    assert c.bearing.pitch_diameter == pytest.approx(0.5 * (rows["inner_diameter_of_inner_race_d"] + rows["outer_diameter_of_outer_race_D"]) * mm)
+    assert c.bearing.inner_conformity == rows["inner_race_conformity_fi"]
+    assert c.cage.pocket_depth == pytest.approx(rows["depth_of_ribbon_cage_pocket_k"] * mm)
+    assert c.cage.pocket_diameter == pytest.approx(rows["diameter_of_cage_pocket_dp"] * mm)
+    assert c.cage.thickness == pytest.approx(rows["thickness_of_cage_s"] * mm)
+    A = c.cage.pocket_depth - c.bearing.ball_diameter / 2  # seed Sec. 3.2: A = k - D_w/2
+    assert A == pytest.approx(rows["clearance_between_cage_pocket_and_ball_A"] * mm)
+    assert c.friction.coefficient == 0.08 and c.friction.hysteresis_loss == 0.008
+
+
+# --------------------------------------------------------------------------- friction sources (Eq. 2)
+
+
+def test_heathcote_pure_rolling_lines():
+    """Symmetric PRLs from the strip force balance: +/-0.347 a (Heathcote 1921)."""
+    X1, X2 = gyro.pure_rolling_lines(0.0)
+    assert X2 == pytest.approx(0.347, abs=5e-4) and X1 == pytest.approx(-X2)
+    # band carries half the strip load for any shift that keeps it inside
+    for s in (0.2, 0.6, 1.0):
+        X1, X2 = gyro.pure_rolling_lines(s)
+        assert X1 + X2 == pytest.approx(-s)
+        assert (X2 - X1) - (X2**3 - X1**3) / 3 == pytest.approx(2 / 3)
+
+
+def test_differential_sliding_factor_readings():
+    """The physical reading of Eq. 2's M_D bracket stays below the bound 1/10; the printed signs with cubes do not."""
+    X1, X2 = gyro.pure_rolling_lines(0.0)
+    phys = gyro.differential_sliding_factor(X1, X2, "physical")
+    assert 0.0 < phys < 0.1
+    # independent quadrature of the strip model: load (1 - Y^2), arm Y^2/2, sign reversing at the PRLs
+    Y = np.linspace(-1, 1, 400001)
+    sgn = np.where((Y > X1) & (Y < X2), -1.0, 1.0)
+    quad = np.trapezoid(0.75 * (1 - Y**2) * sgn * Y**2 / 2, Y)
+    assert phys == pytest.approx(quad, rel=1e-5)
+    assert gyro.differential_sliding_factor(X1, X2, "seed_cubes") > 0.1
+
+
+def test_pivoting_moment_strip_quadrature():
+    """dM_S of Eq. 2 equals the strip-model moment about the normal; zero for symmetric PRLs."""
+    X1, X2 = gyro.pure_rolling_lines(0.5)
+    Y = np.linspace(-1, 1, 400001)
+    sgn = np.where((Y > X1) & (Y < X2), 1.0, -1.0)
+    quad = abs(np.trapezoid(0.75 * (1 - Y**2) * sgn * Y, Y))  # per mu Q a
+    assert gyro.pivoting_moment(1.0, 1.0, 1.0, X1, X2) == pytest.approx(quad, rel=1e-5)
+    X1, X2 = gyro.pure_rolling_lines(0.0)
+    assert gyro.pivoting_moment(0.08, 1.0, 5e-5, X1, X2) == pytest.approx(0.0, abs=1e-18)
+
+
+def test_hysteresis_and_viscous_formulas():
+    """Eq. 2: dM_E = 3/16 Q b alpha_r; M_L = 160e-7 f0 dm^3 [N mm, dm in mm]."""
+    assert gyro.hysteresis_moment(2.0, 1e-5, 0.008) == pytest.approx(3 / 16 * 2.0 * 1e-5 * 0.008)
+    assert gyro.viscous_moment(1.0, 6.5e-3) == pytest.approx(160e-7 * 6.5**3 * 1e-3)
+
+
+@pytest.mark.parametrize("load", [1.0, 2.0, 3.0])
+def test_rfmc_table2(load):
+    """RFMC = M_E + M_D + M_S + M_L vs seed 000 Table 2 / Table 3 (calculated): 2.81 / 6.21 / 10.11 uN m, within 10 %."""
+    ref = {r["load_N"]: r["RFMC_uNm"] for r in _table2()}[load]
+    st = gyro.static_friction(_case(**{"operating.axial_load": f"{load} N"}))
+    assert st.rfmc * 1e6 == pytest.approx(ref, rel=0.10)
+    # every source present and positive; M_E, M_D, M_S grow with the load
+    assert st.M_E > 0 and st.M_D > 0 and st.M_S > 0
+
+
+def test_static_sources_grow_with_load():
+    """Seed Sec. 4: M_E, M_D and M_S increase with the thrust load."""
+    s = [gyro.static_friction(_case(**{"operating.axial_load": f"{F} N"})) for F in (1, 2, 3)]
+    for name in ("M_E", "M_D", "M_S"):
+        v = [getattr(x, name) for x in s]
+        assert v[0] < v[1] < v[2], name
+    assert s[0].beta < s[1].beta < s[2].beta  # thrust opens the contact angle of a zero-clearance bearing
+
+
+# --------------------------------------------------------------------------- frames and pocket (Eqs. 5, 6, 15, Sec. 3.2)
+
+
+def test_transform_orthogonal_and_euler_rates():
+    """A_Ic (Eq. 5, sign-corrected) is a rotation; Eq. 15 inverts phi of Eq. 6."""
+    A = np.empty((3, 3))
+    P = np.empty((3, 3))
+    for th in [(0.3, 0.2, -0.1), (2.0, -0.05, 0.03)]:
+        gyro.transform_Ic(*th, A)
+        assert np.allclose(A @ A.T, np.eye(3), atol=1e-14)
+        assert np.linalg.det(A) == pytest.approx(1.0)
+        gyro.euler_rate_matrix(*th, P)
+        tx, ty, tz = th
+        phi = np.array([[math.cos(ty) * math.cos(tz), math.sin(tz), 0],
+                        [-math.cos(ty) * math.sin(tz), math.cos(tz), 0],
+                        [math.sin(ty), 0, 1]])  # seed Eq. 6
+        assert np.allclose(P @ phi, np.eye(3), atol=1e-13)
+
+
+def test_pocket_contact_states():
+    """Seed Sec. 3.2: no contact at the centre, two points for dx = 0, one point for dx != 0."""
+    c = _case()
+    e, nabla = gyro.pocket_geometry(c.bearing.ball_diameter, c.cage.pocket_diameter, c.cage.pocket_depth)
+    assert e == pytest.approx(0.03e-3) and nabla == pytest.approx(0.05e-3)
+    dp, dm_ = gyro.pocket_penetration(0.0, 0.0, 0.0, e, nabla)
+    assert dp < 0 and dm_ < 0  # no contact
+    dz = 0.0401e-3  # circumferential play sqrt(nabla^2 - e^2) = 0.04 mm
+    dp, dm_ = gyro.pocket_penetration(0.0, 0.0, dz, e, nabla)
+    assert dp > 0 and dm_ > 0 and dp == pytest.approx(dm_)  # two points
+    dp, dm_ = gyro.pocket_penetration(0.005e-3, 0.0, dz, e, nabla)
+    assert dp > 0 and dm_ < 0  # one point (far cup)
+    # axial play equals the seed's clearance A = k - D/2
+    dp, _ = gyro.pocket_penetration(0.02e-3, 0.0, 0.0, e, nabla)
+    assert dp == pytest.approx(0.0, abs=1e-12)
+
+
+def test_speed_profile():
+    """Start at constant acceleration; oscillation reverses every period through a ramp of the same slope."""
+    w = 5 * 2 * math.pi / 60
+    assert gyro.outer_race_speed(0.005, w, 0.01)[0] == pytest.approx(0.5 * w)
+    assert gyro.outer_race_speed(1.0, w, 0.01)[0] == pytest.approx(w)
+    assert gyro.outer_race_speed(2.01, w, 0.01, "oscillation", 2.0)[0] == pytest.approx(0.0, abs=1e-9)
+    assert gyro.outer_race_speed(2.5, w, 0.01, "oscillation", 2.0) == pytest.approx((-w, -1.0))
+    assert gyro.outer_race_speed(4.5, w, 0.01, "oscillation", 2.0) == pytest.approx((w, 1.0))
+
+
+def test_bad_pocket_depth_is_case_error():
+    with pytest.raises(CaseError, match="cage.pocket_depth"):
+        gyro.build_model(_case(**{"cage.pocket_depth": "0.6 mm"}))
+
+
+def test_starting_moments_windows():
+    t = np.linspace(0, 6, 6001)
+    M = np.ones_like(t)
+    M[100] = 5.0  # window 0
+    M[2100] = 7.0  # window 1
+    M[4100] = 9.0  # window 2
+    sfmc, sfmo, mx = gyro.starting_moments(t, M, "oscillation", 2.0, 0.01)
+    assert sfmc == 5.0 and sfmo == pytest.approx(8.0) and list(mx) == [5.0, 7.0, 9.0]
+
+
+# --------------------------------------------------------------------------- dynamics (short runs)
+
+
+@pytest.fixture(scope="module")
+def start_runs():
+    out = {}
+    for n in ("2 rpm", "5 rpm"):
+        out[n] = gyro.simulate(_case(**{"operating.outer_speed": n}), duration=0.12)
+    return out
+
+
+def test_start_run_integrates_and_archives(start_runs, tmp_path):
+    ds = start_runs["5 rpm"]
+    assert ds.attrs["status"] == "ok" and ds.attrs["model"] == "gyro_ribbon_cage"
+    assert ds.attrs["solver_steps"] > 0 and ds.attrs["solver_rhs_evals"] > 0
+    for v in ("friction_moment_total", "friction_moment_cage", "friction_moment_hysteresis", "cage_speed",
+              "cage_angle", "ball_orbit_speed", "sfmc", "rfmc"):
+        assert v in ds and ds[v].attrs["units"]
+    # the balls reach the kinematic orbit speed (1 + gamma)/2 omega_o of Eq. 3
+    st = gyro.static_friction(_case())
+    gamma = _case().bearing.ball_diameter * math.cos(st.beta) / _case().bearing.pitch_diameter
+    w_o = 5 * 2 * math.pi / 60
+    assert ds["ball_orbit_speed"].values[-1].mean() == pytest.approx(0.5 * (1 + gamma) * w_o, rel=2e-3)
+    from hsbearing.results import open_run, write_netcdf
+
+    p = write_netcdf(ds, tmp_path / "g.nc")
+    back = open_run(p)
+    assert float(back["sfmc"]) == pytest.approx(float(ds["sfmc"]))
+    png = gyro.plot_run(back, tmp_path / "g.png")
+    assert png.exists() and png.stat().st_size > 10000
+
+
+def test_cage_is_struck_and_mc_grows_with_speed(start_runs):
+    """Seed Sec. 4 / Table 2: M_C (SFMC - RFMC) grows with the input speed and SFMC > RFMC."""
+    mc = {n: float(ds["sfmc"] - ds["rfmc"]) for n, ds in start_runs.items()}
+    assert mc["2 rpm"] > 0
+    assert mc["5 rpm"] > 2.0 * mc["2 rpm"]  # Table 2: 7.5 vs 2.4 uN m (ratio 3.1); Hertz impact ~ v^1.2
+
+
+def test_momentum_exchange_conserves_axial_momentum():
+    """Physical invariant: with race traction and damping off, ball/cage impacts conserve angular momentum about the axis."""
+    c = _case(**{"friction.coefficient": 0.0, "friction.cage_coefficient": 0.0, "friction.cage_restitution": 1.0})
+    m = gyro.build_model(c)
+    y = m.y0()
+    Z = m.Z
+    y[12 + Z:12 + 2 * Z] = 0.3  # balls orbit, cage at rest -> impact
+    from hsbearing.solvers.cvode import integrate
+
+    m.p[gyro._P_NO] = 0.0
+    res = integrate(m.rhs, y, np.linspace(0, 0.1, 201), rtol=1e-9, atol=m.atol * 1e-2)
+    assert res.success
+
+    def L(yy):
+        rm = 0.5 * c.bearing.pitch_diameter
+        return m.p[gyro._P_JX] * yy[9] + m.p[gyro._P_MB] * rm**2 * yy[12 + Z:12 + 2 * Z].sum()
+
+    assert abs(res.y[-1, 9]) > 0.1  # the cage was struck
+    assert L(res.y[-1]) == pytest.approx(L(res.y[0]), rel=1e-4)
+
+
+def test_thickness_raises_starting_moment():
+    """Seed Sec. 4, Fig. 10: M increases with the cage thickness s (heavier cage)."""
+    vals = [float(gyro.simulate(_case(**{"cage.thickness": s}), duration=0.1)["sfmc"]) for s in ("0.15 mm", "0.30 mm")]
+    assert vals[1] > vals[0]
+
+
+def test_clearance_raises_starting_moment_small_A():
+    """Seed Sec. 4, Fig. 11: M increases with the pocket clearance A (checked for A = 0.01 -> 0.03 mm;
+    above 0.03 mm our model does not follow the paper, see docs/validation/gyro.md)."""
+    r = gyro.study(_case(), "pocket_clearance", [0.01e-3, 0.03e-3], duration=0.12)
+    assert float(r[0.03e-3]["sfmc"]) > float(r[0.01e-3]["sfmc"])
+
+
+@pytest.mark.xfail(strict=True, reason="seed 000 Table 2 SFMC not reproduced: our steel ribbon cage (75 mg, "
+                   "Hertz ball/cup contact) gives a first-impact M_C ~5x the paper's; see docs/validation/gyro.md")
+def test_sfmc_table2_5rpm(start_runs):
+    """SFMC at 1 N, 5 r/min vs seed 000 Table 2 (10.06 uN m) within 20 %."""
+    assert float(start_runs["5 rpm"]["sfmc"]) * 1e6 == pytest.approx(10.06, rel=0.20)
+
+
+@pytest.mark.slow
+@pytest.mark.xfail(strict=True, reason="our model gives SFMO < SFMC: the reversal impact is weaker than the start "
+                   "impact (cage already moving with the balls); see docs/validation/gyro.md")
+def test_sfmo_exceeds_sfmc_table2():
+    """Seed 000 Table 2: SFMO exceeds SFMC by >= 15 % (1 N, 5 r/min)."""
+    ds = gyro.simulate(_case(**{"operating.mode": "oscillation"}), duration=2.3)
+    assert float(ds["sfmo"]) > 1.15 * float(ds["sfmc"])
