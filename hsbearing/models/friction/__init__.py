@@ -88,14 +88,17 @@ def _require_dgbb(case):
         raise CaseError(case.source, "operating.axial_load", "give the axial load as a magnitude (>= 0)")
 
 
-def contact_states(case, speed=None, source: str = "static"):
+def contact_states(case, speed=None, source: str = "static", tilt: bool = True, centrifugal: bool = True):
     """Per-ball contact loads, angles, ellipses and deformed radii.
 
     ``source="static"``: rigid-ring static load distribution (no centrifugal
     force, no gyroscopic moment; :func:`sliding_prl.static_load_distribution`)
-    -- the seed's Tables 2-4 show no speed effect, so this is the reading used.
+    -- the seed's Tables 2-4 show no speed effect, so this is the reading used;
+    ``tilt=True`` lets the inner ring tilt under the given moment
+    (``operating.moment_z``, about the axis normal to the radial load F_y),
+    the seed's 5-DOF loading {F_x, F_y, F_z, M_x, M_y}; False holds it square.
     ``source="quasistatic"``: :func:`hsbearing.solvers.quasistatic.solve_case`
-    at ``speed`` with centrifugal and gyroscopic effects.
+    at ``speed`` with (``centrifugal=True``) or without ball inertia effects.
 
     Returns (psi, Q, alpha, [ContactState per ball]).
     """
@@ -109,14 +112,20 @@ def contact_states(case, speed=None, source: str = "static"):
     Fr = math.hypot(case.operating.radial_load, case.operating.radial_load_z)
     Ri, Ro = sp.deformed_radius(g.ri, g.D), sp.deformed_radius(g.ro, g.D)
     if source == "static":
+        op = case.operating
+        if op.radial_load_z or op.moment_y:
+            raise CaseError(case.source, "operating.radial_load_z" if op.radial_load_z else "operating.moment_y",
+                            "the friction model's static load distribution is planar (radial_load along Y, moment_z); "
+                            "use contacts='quasistatic' for general 5-DOF loads")
         psi, Q, al = sp.static_load_distribution(g.Z, g.D, g.dm, g.fi, g.fo, g.Pd, mb.elastic_modulus, mb.poisson_ratio,
-                                                 mr.elastic_modulus, mr.poisson_ratio, Fa, Fr)
+                                                 mr.elastic_modulus, mr.poisson_ratio, Fa, abs(op.radial_load),
+                                                 M=op.moment_z * (1.0 if op.radial_load >= 0 else -1.0), tilt=tilt)
         Qi = Qo = Q
         ai = ao = al
     elif source == "quasistatic":
         from hsbearing.solvers import quasistatic
 
-        ds = quasistatic.solve_case(case, inner_speed=speed, centrifugal=True, gyroscopic=True)
+        ds = quasistatic.solve_case(case, inner_speed=speed, centrifugal=centrifugal, gyroscopic=centrifugal)
         Qi, Qo = ds["inner_contact_load"].values, ds["outer_contact_load"].values
         ai, ao = ds["inner_contact_angle"].values, ds["outer_contact_angle"].values
         psi = 2 * math.pi * np.arange(g.Z) / g.Z
@@ -134,7 +143,8 @@ def contact_states(case, speed=None, source: str = "static"):
     return psi, np.asarray(Q), np.asarray(al), states
 
 
-def friction_torque(case, speeds="500,5000,15000rpm", *, traction: str = "strip", contacts: str = "static"):
+def friction_torque(case, speeds="500,5000,15000rpm", *, traction: str = "strip", contacts: str = "static",
+                    tilt: bool = True):
     """Sliding friction torque (seed 003 method) and SKF 2004 moments over inner-ring speeds.
 
     Parameters
@@ -144,6 +154,8 @@ def friction_torque(case, speeds="500,5000,15000rpm", *, traction: str = "strip"
         or the CLI form ``"500,5000,15000rpm"``.
     traction : ``"strip"`` (seed 003 / Harris strip theory) or ``"full"`` (2-D slip direction).
     contacts : ``"static"`` (no centrifugal/gyroscopic, the seed's reading) or ``"quasistatic"``.
+    tilt : static contacts: inner ring free to tilt under the given moment (True, the
+        seed's 5-DOF loading) or held square (False).
 
     Returns
     -------
@@ -172,7 +184,7 @@ def friction_torque(case, speeds="500,5000,15000rpm", *, traction: str = "strip"
         if contacts == "static" and cache is not None:
             per_mu = cache
         else:
-            psi, Q, al, states = contact_states(case, wi, source=contacts)
+            psi, Q, al, states = contact_states(case, wi, source=contacts, tilt=tilt)
             balls = [sp.solve_ball(st, g.D, g.dm, outer_speed_ratio=speed_ratio, traction=traction) for st in states]
             if fr.spin_torque_reading == "projection":
                 # [S] Eq. 8 read as Tong & Hong: M_s = sum_j (|m_s,i| sin a_i + |m_s,e| sin a_e)
@@ -199,7 +211,7 @@ def friction_torque(case, speeds="500,5000,15000rpm", *, traction: str = "strip"
     data.update({k: v for k, v in skf.items()})
     attrs = standard_attrs(
         case, "ok", title="hsbearing friction torque (seed 003 sliding method, SKF 2004 model)",
-        friction_law=fr.law, traction_model=traction, contact_source=contacts,
+        friction_law=fr.law, traction_model=traction, contact_source=contacts, ring_tilt_free=bool(tilt),
         kinematic_viscosity_mm2_s=lub.kinematic_viscosity * 1e6 if lub.kinematic_viscosity else None,
         skf_reading=fr.skf_reading, spin_torque_reading=fr.spin_torque_reading,
         note="ball data (contact_load/angle, PRLs) at the first speed; torques in N m",

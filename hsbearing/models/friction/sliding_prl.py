@@ -456,15 +456,21 @@ def _initial_guess(live, A0):
 # --------------------------------------------------------------------------- static load distribution
 
 
-def static_load_distribution(Z, D, dm, fi, fo, Pd, E_ball, nu_ball, E_race, nu_race, Fa, Fr):
+def static_load_distribution(Z, D, dm, fi, fo, Pd, E_ball, nu_ball, E_race, nu_race, Fa, Fr, M=0.0, tilt=True):
     """Rigid-ring static load distribution of a radial ball bearing (no centrifugal force).
 
-    Harris & Kotzalas Vol. 1, Ch. 7 ([H] Eqs. 7.x): inner ring displaced by
-    (delta_a, delta_r); ball j at psi_j = 2 pi j / Z has the groove-centre
-    distance s_j = |(delta_a, A - P_d/2 + delta_r cos psi_j)|, contact angle
-    alpha_j = atan2(delta_a, A - P_d/2 + delta_r cos psi_j) and load
-    Q_j = K_j (s_j - A)^1.5 (K_j from the inner and outer Hertz constants in
-    series); delta_a, delta_r solve sum Q sin(alpha) = F_a, sum Q cos(alpha) cos(psi) = F_r.
+    Harris & Kotzalas Vol. 1, Ch. 7 ([H], combined radial, axial and moment
+    loading): the inner ring is displaced by (delta_a, delta_r) and tilted by
+    theta about the axis normal to the radial load; the groove curvature
+    centres of ball j at psi_j = 2 pi j / Z are separated by
+    (delta_a + theta Rc_i cos psi_j, A - P_d/2 + delta_r cos psi_j) with
+    Rc_i = d_m/2 + (f_i - 1/2) D cos(alpha_0) the locus of the inner groove
+    curvature centres; contact angle alpha_j = atan2 of that vector,
+    Q_j = K_j (s_j - A)^1.5 (K_j: inner and outer Hertz constants in series).
+    Equilibrium: sum Q sin(alpha) = F_a, sum Q cos(alpha) cos(psi) = F_r and,
+    with ``tilt=True``, sum Q sin(alpha) Rc_i cos(psi) = M (the seed's 5-DOF
+    loading with the given moment, 0 by default); ``tilt=False`` holds the ring
+    square (theta = 0, moment reacted elsewhere).
 
     Returns psi, Q, alpha (arrays over balls).
     """
@@ -473,7 +479,10 @@ def static_load_distribution(Z, D, dm, fi, fo, Pd, E_ball, nu_ball, E_race, nu_r
 
     A = (fi + fo - 1.0) * D
     h0 = A - 0.5 * Pd
+    alpha0 = math.acos(max(-1.0, min(1.0, h0 / A)))
+    Rc = 0.5 * dm + (fi - 0.5) * D * math.cos(alpha0)
     psi = 2.0 * math.pi * np.arange(Z) / Z
+    cpsi = np.cos(psi)
 
     def K_of(alpha):
         Rxi, Ryi, Rxo, Ryo = curvature_radii(D, dm, alpha, fi, fo)
@@ -482,26 +491,31 @@ def static_load_distribution(Z, D, dm, fi, fo, Pd, E_ball, nu_ball, E_race, nu_r
         return (Ki ** (-2.0 / 3.0) + Ko ** (-2.0 / 3.0)) ** -1.5
 
     def loads(x):
-        da, dr = x
-        zc = h0 + dr * np.cos(psi)
-        s = np.hypot(da, zc)
-        al = np.arctan2(da, zc)
+        da, dr, th = x[0], x[1], (x[2] if tilt else 0.0)
+        xa = da + th * Rc * cpsi
+        zc = h0 + dr * cpsi
+        s = np.hypot(xa, zc)
+        al = np.arctan2(xa, zc)
         d = np.clip(s - A, 0.0, None)
         return K_of(al) * d**1.5, al
 
     def eqs(x):
         Q, al = loads(x)
-        scale = max(Fa, Fr, 1.0)
-        return [(np.sum(Q * np.sin(al)) - Fa) / scale, (np.sum(Q * np.cos(al) * np.cos(psi)) - Fr) / scale]
+        scale = max(Fa, Fr, abs(M) / Rc, 1.0)
+        out = [(np.sum(Q * np.sin(al)) - Fa) / scale, (np.sum(Q * np.cos(al) * cpsi) - Fr) / scale]
+        if tilt:
+            out.append((np.sum(Q * np.sin(al) * Rc * cpsi) - M) / (scale * Rc))
+        return out
 
-    # initial guess from a Stribeck-type estimate
+    # initial guesses: rigid axial / radial estimates, then a few scalings
     K0 = float(np.mean(K_of(np.zeros(1))))
     Qa = max(Fa, 1e-9) / Z
     da0 = math.sqrt(max((A + (Qa / K0) ** (2 / 3)) ** 2 - h0**2, 0.0)) if Fa > 0 else 0.0
     dr0 = (5.0 * max(Fr, 1e-9) / Z / K0) ** (2 / 3) + 0.5 * Pd if Fr > 0 else 0.0
     best = None
     for scale in (1.0, 0.5, 2.0, 1.5, 0.8):
-        sol, info, ier, msg = fsolve(eqs, [da0 * scale, dr0 * scale], full_output=True, xtol=1e-13)
+        x0 = [da0 * scale, dr0 * scale] + ([0.0] if tilt else [])
+        sol, info, ier, msg = fsolve(eqs, x0, full_output=True, xtol=1e-13)
         r = np.max(np.abs(eqs(sol)))
         if best is None or r < best[1]:
             best = (sol, r)
