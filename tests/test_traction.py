@@ -172,11 +172,13 @@ def test_printed_4109_4106_start_at_zero(oil):
 
 @pytest.mark.parametrize("oil", ["4109", "4106", "4050"])
 def test_default_laws_bounded_over_operating_grid(oil):
+    """|mu| < 0.2 for W in [0, 5000] N, U in [2, 40] m/s, T in [20, 200] degC, inner and outer contacts."""
     mu = traction.get(oil)
     S = np.linspace(-1.0, 1.0, 401)[:, None]
     worst = 0.0
-    for W, U, Tc in itertools.product(W_GRID, U_GRID, T_GRID_C):
-        m = mu(S, W, U, Tc + 273.15, EP, RX)
+    rx_outer = float(curvature_radii(D, DM, ALPHA, 0.52, 0.53)[2])
+    for W, U, Tc, R in itertools.product(W_GRID, U_GRID, T_GRID_C, (RX, rx_outer)):
+        m = mu(S, W, U, Tc + 273.15, EP, R)
         assert np.all(np.isfinite(m))
         worst = max(worst, float(np.abs(m).max()))
     assert worst < 0.2, worst
