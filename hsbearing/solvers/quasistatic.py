@@ -691,26 +691,14 @@ def _film(case, P, st, Rxi, Ryi, Rxo, Ryo):
 
 
 def _oil_properties(case):
-    """(eta [Pa s] at the case temperature, alpha [1/Pa]) of the case lubricant, or None.
+    """(eta [Pa s] at the case temperature, alpha [1/Pa]) via :func:`hsbearing.models.ehl.lubricant_parameters`."""
+    from hsbearing.models import ehl
 
-    ``[lubricant] kinematic_viscosity`` (operating value) wins; otherwise the
-    oil's Table 1 data (seed 004) with ``dynamic_viscosity`` /
-    ``pressure_viscosity_coefficient`` overriding eta0 / alpha, brought to the
-    case temperature by :func:`hsbearing.models.ehl.viscosity_at_temperature`.
-    """
-    from hsbearing.models import ehl, traction
-
-    lub = case.lubricant
-    oil = traction.OILS.get(lub.oil)
-    alpha_p = lub.pressure_viscosity_coefficient or (oil.alpha if oil else None)
-    if alpha_p is None:
+    try:
+        lp = ehl.lubricant_parameters(case)
+    except (KeyError, AttributeError):  # oil without data (e.g. a friction-only case)
         return None
-    if lub.kinematic_viscosity is not None:
-        return float(lub.kinematic_viscosity * lub.density), float(alpha_p)
-    eta0 = lub.dynamic_viscosity or (oil.eta0 if oil else None)
-    if eta0 is None or oil is None:
-        return (float(eta0), float(alpha_p)) if eta0 is not None else None
-    return float(ehl.viscosity_at_temperature(eta0, oil.beta, lub.temperature)), float(alpha_p)
+    return lp["eta"], lp["alpha"]
 
 
 def solve_case(case, *, inner_speed=None, centrifugal=True, gyroscopic=True, initial=None) -> xr.Dataset:
