@@ -41,7 +41,6 @@ from __future__ import annotations
 
 import math
 
-import numba
 import numpy as np
 
 __all__ = [
@@ -234,49 +233,12 @@ def traction_coefficient(A, B, C, D, S):
 
 
 # ----------------------------------------------------------------------------
-# numba kernels for the dynamics hot path (scalar, allocation-free)
-
-_P = PARAMS  # captured as a compile-time constant array
+# numba kernels (defined in _kernels.py, imported lazily so that loading a case does not import numba)
 
 
-@numba.njit(cache=True, nogil=True)
-def coefficients_nb(law_id, W, U, T_K, E, R):
-    """Scalar numba twin of :func:`coefficients`: returns (A, B, C, D) [-] (SI, T in K)."""
-    p = _P[law_id]
-    W = max(W, W_FLOOR)
-    U = max(abs(U), U_FLOOR)
-    T_C = max(T_K - 273.15, T_FLOOR_C)
-    eta0, beta, K = p[0], p[1], p[2]
-    ER = E * R
-    Wb = W / (ER * R)
-    Ub = eta0 * U / ER
-    if p[3] == 0.0:
-        Tb = T_C * math.sqrt(K * eta0 * beta) / ER
-    else:
-        Tb = T_C * K / (eta0 * U * U)
-    f = 1.0
-    if p[4] != 0.0:
-        Wc = p[5] * Tb * Tb + p[6] * Tb + p[7]
-        f = abs(Wc / Wb - 1.0)
-        fmax = p[8]
-        if fmax > 0.0:
-            r = f / fmax
-            if r > 1e6:
-                f = fmax
-            else:
-                f = f / (1.0 + r**LOAD_FACTOR_SHARPNESS) ** (1.0 / LOAD_FACTOR_SHARPNESS)
-    lW, lU, lT = math.log(Wb), math.log(Ub), math.log(Tb)
-    A = p[9] * f * math.exp(p[10] * lW + p[11] * lU + p[12] * lT)
-    B = p[13] * f * math.exp(p[14] * lW + p[15] * lU + p[16] * lT)
-    C = p[17] * f * math.exp(p[18] * lW + p[19] * lU + p[20] * lT)
-    D = p[21] * f * math.exp(p[22] * lW + p[23] * lU + p[24] * lT)
-    return A, B, C, D
+def __getattr__(name):
+    if name in ("coefficients_nb", "mu_nb"):
+        from hsbearing.models.traction import _kernels
 
-
-@numba.njit(cache=True, nogil=True)
-def mu_nb(A, B, C, D, S):
-    """Scalar numba twin of :func:`traction_coefficient` (odd in S) [-]."""
-    s = abs(S)
-    mu0 = A + D
-    sg = 1.0 if S > 0.0 else (-1.0 if S < 0.0 else 0.0)
-    return sg * (A * math.expm1(-C * s) + B * s * math.exp(-C * s)) + mu0 * math.tanh(S / S_EPS)
+        return getattr(_kernels, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
