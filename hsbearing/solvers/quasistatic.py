@@ -740,10 +740,14 @@ def print_summary(ds: xr.Dataset) -> None:
     loads = ds.attrs.get("applied_loads")
     if loads is not None:
         print("applied loads: F_x, F_y, F_z [N], M_y, M_z [N m] = " + ", ".join(f"{x:.6g}" for x in np.ravel(loads)))
-    print(f"inner ring: delta_x = {float(ds.inner_ring_axial_displacement) * 1e6:.5f} um, "
-          f"delta_y = {float(ds.inner_ring_radial_displacement_y) * 1e6:.5f} um, "
-          f"delta_z = {float(ds.inner_ring_radial_displacement_z) * 1e6:.5f} um, "
-          f"theta_y = {float(ds.inner_ring_tilt_y) * 1e3:.5f} mrad, theta_z = {float(ds.inner_ring_tilt_z) * 1e3:.5f} mrad")
+    def z(name, f):  # no "-0.00000" for round-off
+        v = float(ds[name]) * f
+        return 0.0 if abs(v) < 5e-6 else v
+
+    print(f"inner ring: delta_x = {z('inner_ring_axial_displacement', 1e6):.5f} um, "
+          f"delta_y = {z('inner_ring_radial_displacement_y', 1e6):.5f} um, "
+          f"delta_z = {z('inner_ring_radial_displacement_z', 1e6):.5f} um, "
+          f"theta_y = {z('inner_ring_tilt_y', 1e3):.5f} mrad, theta_z = {z('inner_ring_tilt_z', 1e3):.5f} mrad")
     print(f"cage speed: {float(ds.cage_speed) * rpm:.6g} r/min")
     print(f"{'ball':>4} {'psi':>7} {'Q_i/N':>10} {'Q_o/N':>10} {'a_i/deg':>8} {'a_o/deg':>8} "
           f"{'p_i/GPa':>8} {'p_o/GPa':>8} {'beta/deg':>8} {'wR/rpm':>9} {'s/r_i':>7} {'s/r_o':>7}")
@@ -753,7 +757,7 @@ def print_summary(ds: xr.Dataset) -> None:
               f"{float(s.outer_contact_load):10.3f} {float(s.inner_contact_angle) * deg:8.3f} "
               f"{float(s.outer_contact_angle) * deg:8.3f} {float(s.inner_contact_pressure) / 1e9:8.4f} "
               f"{float(s.outer_contact_pressure) / 1e9:8.4f} {float(s.ball_pitch_angle) * deg:8.3f} "
-              f"{float(s.ball_spin_speed) * rpm:9.1f} {float(s.inner_spin_to_roll):7.4f} {float(s.outer_spin_to_roll):7.4f}")
+              f"{float(s.ball_spin_speed) * rpm:9.1f} {float(s.inner_spin_to_roll) + 0.0:7.4f} {float(s.outer_spin_to_roll) + 0.0:7.4f}")
     if "inner_film_thickness_central" in ds:
         print(f"central film thickness: inner {np.nanmin(ds.inner_film_thickness_central.values) * 1e9:.1f}-"
               f"{np.nanmax(ds.inner_film_thickness_central.values) * 1e9:.1f} nm, outer "
