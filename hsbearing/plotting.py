@@ -141,8 +141,10 @@ def _plot_dynamic(ds, path: Path) -> Path:
             ds.attrs["classification"] = "undetermined"
             ds.attrs["classification_reason"] = f"analysis failed: {exc}"
     t = np.asarray(ds["time"].values, float)
-    tf = float(ds.attrs.get("transient_fraction", poincare.DEFAULT_TRANSIENT_FRACTION))
-    mask, t_tr = poincare.steady_mask(t, tf)
+    try:
+        mask, t_tr = poincare.after_transient(ds)
+    except Exception:
+        mask, t_tr = poincare.steady_mask(t, poincare.DEFAULT_TRANSIENT_FRACTION)
     t_ms = (t - t[0]) * 1e3 if t.size else t
 
     fig = _figure((12.5, 9.5))
@@ -194,7 +196,7 @@ def _plot_dynamic(ds, path: Path) -> Path:
     # (b) Poincare map
     ax = axs[0, 1]
     try:
-        pts = poincare.poincare_points(ds, ds.attrs.get("poincare_section_kind", "cage_revolution"), tf)
+        pts = poincare.poincare_points(ds, ds.attrs.get("poincare_section_kind", "cage_revolution"))
     except Exception:
         pts = np.zeros((0, 2))
     vy = poincare.cage_velocity(ds, "y") if "cage_center_y" in ds else np.zeros(0)

@@ -25,7 +25,7 @@ from scipy.integrate import solve_ivp
 import hsbearing
 from hsbearing.analysis import annotate, cage_slip_ratio, classify, poincare_points, summary, theoretical_cage_speed
 from hsbearing.analysis.classify import correlation_dimension, lyapunov_exponent, zero_one_test
-from hsbearing.analysis.poincare import crossing_times, poincare_section, steady_mask
+from hsbearing.analysis.poincare import crossing_times, poincare_section, steady_mask, transient_cut
 from hsbearing.models.geometry import derive
 from hsbearing.results import make_dataset, standard_attrs
 
@@ -314,6 +314,37 @@ def test_section_without_angle_or_velocity_agrees(case):
     assert ok.sum() >= len(t1) - 1 and len(t1) >= 18
     ext = np.ptp(P1, axis=0)
     assert np.all(np.abs(P1[ok] - P2[j[ok]]) <= 2e-3 * ext)
+
+
+def test_auto_transient_waits_for_the_drift_to_end(case):
+    """A whirl growing until t = 0.45 T (like a cage spiralling out to its guide land) and a cage-speed step."""
+    ds = cage_run("period", case, n_rev=60, transient=False)
+    t = ds.time.values
+    T = t[-1]
+    grow = np.clip(t / (0.45 * T), 0.05, 1.0)
+    ph = ds.cage_angle.values + 0.3
+    wc = float(ds.cage_speed[0])
+    ds = ds.assign(cage_center_y=("time", 20e-6 * grow * np.cos(ph)), cage_center_z=("time", 20e-6 * grow * np.sin(ph)),
+                   cage_velocity_y=("time", -20e-6 * grow * wc * np.sin(ph)))
+    cut = transient_cut(ds, "auto")
+    rev = 2 * np.pi / wc
+    assert 0.45 * T - 2 * rev <= cut <= 0.45 * T + 2 * rev  # within 2 % of the final radius: +-2 revolutions
+    out = annotate(ds, case)
+    assert out.attrs["transient_discarded"] == pytest.approx(cut)
+    assert float(out["whirl_amplitude"]) == pytest.approx(20e-6, rel=1e-3)
+    assert out.attrs["classification"] == "1 period"
+    # fixed fraction on request
+    assert transient_cut(ds, 0.1) == pytest.approx(0.1 * T)
+    assert annotate(ds, case, transient=0.1).attrs["transient_discarded"] == pytest.approx(0.1 * T)
+    # a cage-speed drop at 0.5 T (a new regime): the cut follows, capped at 60 % of the span
+    w = np.where(t < 0.5 * T, wc * 1.01, wc)
+    assert 0.5 * T - rev <= transient_cut(ds.assign(cage_speed=("time", w)), "auto") <= 0.5 * T + 2 * rev
+    w = np.where(t < 0.7 * T, wc * 1.01, wc)  # (a change inside the last 25 %, the reference, is not detected)
+    assert transient_cut(ds.assign(cage_speed=("time", w)), "auto") == pytest.approx(0.6 * T)
+    # stationary synthetic runs keep the 30 % floor
+    for kind in ("k", "quasi", "chaos"):
+        run = cage_run(kind, case)
+        assert transient_cut(run, "auto") == pytest.approx(0.3 * float(run.time[-1]))
 
 
 def test_steady_mask():

@@ -5,8 +5,9 @@ the scalar summaries (mean slip ratio, whirl amplitude and frequency), the
 Poincare section points and the period classification with its confidence.
 :func:`summary` returns the scalars a sweep tabulates.
 
-Whirl quantities are computed after the start-up transient (the first
-``transient_fraction`` of the simulated span, 30 % by default):
+Whirl quantities are computed after the start-up transient (automatic
+detection, at least the first 30 % and at most 60 % of the simulated span;
+rule in :mod:`hsbearing.analysis.poincare`):
 
 - ``whirl_amplitude``: RMS radius sqrt(D_Y^2 + D_Z^2) of the cage mass centre
   about the bearing axis; ``whirl_radius_max``: its peak value;
@@ -100,10 +101,13 @@ def whirl_frequency(t, y, z) -> float:
     return float(f[k] + delta / (n * h))
 
 
-def whirl_metrics(ds, transient_fraction: float = _pc.DEFAULT_TRANSIENT_FRACTION) -> dict[str, float]:
-    """Whirl amplitude [m], peak radius [m], frequency [Hz] and frequency ratio after the transient."""
+def whirl_metrics(ds, transient=None) -> dict[str, float]:
+    """Whirl amplitude [m], peak radius [m], frequency [Hz] and frequency ratio after the transient.
+
+    ``transient``: see :func:`hsbearing.analysis.poincare.after_transient`.
+    """
     t = np.asarray(ds["time"].values, float)
-    mask, _ = _pc.steady_mask(t, transient_fraction)
+    mask, _ = _pc.after_transient(ds, transient)
     y = np.asarray(ds["cage_center_y"].values, float)[mask]
     z = np.asarray(ds["cage_center_z"].values, float)[mask]
     w = np.asarray(ds["cage_speed"].values, float)[mask]
@@ -126,7 +130,7 @@ def whirl_metrics(ds, transient_fraction: float = _pc.DEFAULT_TRANSIENT_FRACTION
 
 
 def annotate(ds: xr.Dataset, case=None, *, alpha=None, section: str = "cage_revolution",
-             transient_fraction: float = _pc.DEFAULT_TRANSIENT_FRACTION, **classify_kw) -> xr.Dataset:
+             transient="auto", **classify_kw) -> xr.Dataset:
     """Add slip ratio, whirl summaries, Poincare section and period classification to a dynamic run.
 
     Parameters
@@ -143,8 +147,9 @@ def annotate(ds: xr.Dataset, case=None, *, alpha=None, section: str = "cage_revo
         nominal contact angle of the case).
     section : str
         Poincare section, one of :data:`hsbearing.analysis.poincare.SECTIONS`.
-    transient_fraction : float
-        Leading fraction of the simulated span discarded as transient (0.3).
+    transient : "auto" or float
+        Start-up transient to discard: ``"auto"`` (drift detection, between
+        30 % and 60 % of the span) or a fixed fraction of the span.
     **classify_kw
         Thresholds passed to :func:`hsbearing.analysis.classify.classify`.
 
@@ -160,7 +165,9 @@ def annotate(ds: xr.Dataset, case=None, *, alpha=None, section: str = "cage_revo
     if case is None:
         case = _case_from_attrs(ds)
     t = np.asarray(ds["time"].values, float)
-    mask, t_discard = _pc.steady_mask(t, transient_fraction)
+    t_discard = _pc.transient_cut(ds, transient)
+    ds.attrs["transient_discarded"] = float(t_discard)
+    mask, _ = _pc.after_transient(ds)
     span = t[mask][-1] - t[mask][0] if mask.sum() > 1 else 0.0
 
     # --- cage slip ratio (slip.py; nominal contact angle unless alpha is given)
@@ -189,11 +196,11 @@ def annotate(ds: xr.Dataset, case=None, *, alpha=None, section: str = "cage_revo
         ds["mean_cage_slip_ratio"] = _var("mean_cage_slip_ratio", float(np.mean(s)))
 
     # --- whirl orbit
-    for k, v in whirl_metrics(ds, transient_fraction).items():
+    for k, v in whirl_metrics(ds).items():
         ds[k] = _var(k, v)
 
     # --- Poincare section and classification
-    tc, pts = _pc.poincare_section(ds, section, transient_fraction)
+    tc, pts = _pc.poincare_section(ds, section)
     ds = ds.drop_vars([v for v in ("poincare_time", "poincare_y", "poincare_vy") if v in ds.variables])
     ds["poincare_time"] = _var("poincare_time", tc)
     ds["poincare_y"] = _var("poincare_y", pts[:, 0])
@@ -209,7 +216,8 @@ def annotate(ds: xr.Dataset, case=None, *, alpha=None, section: str = "cage_revo
         poincare_section=_pc.section_description(section),
         poincare_section_kind=section,
         transient_discarded=float(t_discard),
-        transient_fraction=float(transient_fraction),
+        transient_rule=("auto: max(30 % of the span, end of drift of the per-revolution mean radius and cage speed), "
+                        "at most 60 %" if transient == "auto" else f"fixed: first {100 * float(transient):g} % of the span"),
     )
     return ds
 
@@ -238,7 +246,7 @@ def summary(ds: xr.Dataset, case=None) -> dict[str, Any]:
     if dynamic and "classification" not in ds.attrs and all(v in ds.variables for v in REQUIRED):
         ds = annotate(ds, case)
     if dynamic:
-        mask, _ = _pc.steady_mask(ds["time"].values, float(ds.attrs.get("transient_fraction", _pc.DEFAULT_TRANSIENT_FRACTION)))
+        mask, _ = _pc.after_transient(ds)
         sel = {"time": np.nonzero(mask)[0]}
     else:
         sel = {}

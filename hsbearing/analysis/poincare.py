@@ -21,6 +21,20 @@ classifier tolerance.  If ``cage_angle`` is absent it is the time integral of
 ``cage_speed`` (trapezoidal rule); if ``cage_velocity_y`` is absent V_Y is
 the time derivative of D_Y (second-order central differences,
 ``numpy.gradient``).
+
+Transient (``transient="auto"``, the default of :func:`hsbearing.analysis.annotate`):
+the discarded start is the later of 30 % of the simulated span and the end of
+the detected drift, capped at 60 % of the span.  The drift test works on
+per-revolution means of the cage-centre radius sqrt(D_Y^2 + D_Z^2) and of the
+cage speed: the reference is the last 25 % of the complete revolutions (at
+least 3); a revolution drifts if its mean lies outside [min(ref) - tol,
+max(ref) + tol] with tol = 0.5 ptp(ref) + rel |median(ref)| (rel = 0.02 for
+the radius, 0.001 for the speed); the transient ends at the start of the
+revolution after the last drifting one.  Runs of fewer than 8 complete cage
+revolutions use the 30 % rule alone.  A change of regime inside the
+reference (the last 25 %) is not detected: such a run is too short to
+classify anyway.  A float ``transient`` in [0, 1) is a
+fixed fraction of the span instead.
 """
 
 from __future__ import annotations
@@ -34,6 +48,8 @@ __all__ = [
     "cage_rotation_angle",
     "cage_velocity",
     "steady_mask",
+    "transient_cut",
+    "after_transient",
     "crossing_times",
     "poincare_section",
     "poincare_points",
@@ -42,8 +58,10 @@ __all__ = [
 #: Closed vocabulary of the Poincare sections.
 SECTIONS = ("cage_revolution", "plane")
 
-#: Leading fraction of the simulated time discarded as start-up transient.
+#: Leading fraction of the simulated span always discarded as start-up transient.
 DEFAULT_TRANSIENT_FRACTION = 0.3
+#: Largest fraction the automatic transient detection may discard.
+MAX_TRANSIENT_FRACTION = 0.6
 
 
 def section_description(section: str = "cage_revolution") -> str:
@@ -99,6 +117,68 @@ def steady_mask(t, transient_fraction: float = DEFAULT_TRANSIENT_FRACTION) -> tu
     return t >= t_cut, float(t_cut - t[0])
 
 
+def _revolution_index(ds) -> np.ndarray:
+    """Index of the cage revolution each output sample belongs to (0 = the first, from the run start)."""
+    ang = cage_rotation_angle(ds)
+    if ang.size > 1 and np.nanmean(np.diff(ang)) < 0:
+        ang = -ang
+    k = np.floor(np.maximum.accumulate(np.nan_to_num(ang, nan=-np.inf)) / (2 * np.pi))
+    k = np.where(np.isfinite(k), k, 0).astype(int)
+    return k - k[0] if k.size else k
+
+
+def transient_cut(ds, transient="auto") -> float:
+    """Duration [s] of the start-up transient to discard (rule in the module docstring).
+
+    ``transient`` is ``"auto"`` (drift detection, at least 30 %, at most 60 %
+    of the span) or a float fraction of the span in [0, 1).
+    """
+    t = _time(ds)
+    if t.size < 2:
+        return 0.0
+    span = float(t[-1] - t[0])
+    if not isinstance(transient, str):
+        return steady_mask(t, float(transient))[1]
+    if transient != "auto":
+        raise ValueError(f"transient must be 'auto' or a fraction in [0, 1), not {transient!r}")
+    lo, hi = DEFAULT_TRANSIENT_FRACTION * span, MAX_TRANSIENT_FRACTION * span
+    k = _revolution_index(ds)
+    nrev = int(k[-1])  # complete revolutions 0 .. nrev-1
+    if nrev < 8:
+        return lo
+    sel = k < nrev
+    cnt = np.bincount(k[sel], minlength=nrev)
+    r = np.hypot(np.asarray(ds["cage_center_y"].values, float), np.asarray(ds["cage_center_z"].values, float))
+    w = np.asarray(ds["cage_speed"].values, float)
+    j0 = 0
+    for x, rel in ((r, 0.02), (w, 1e-3)):
+        xm = np.bincount(k[sel], np.nan_to_num(x[sel]), minlength=nrev) / np.maximum(cnt, 1)
+        ref = xm[-max(3, int(0.25 * nrev)):]
+        tol = 0.5 * np.ptp(ref) + rel * abs(np.median(ref))
+        bad = np.nonzero((xm < ref.min() - tol) | (xm > ref.max() + tol))[0]
+        if bad.size:
+            j0 = max(j0, int(bad[-1]) + 1)
+    t_drift = float(t[int(np.argmax(k >= j0))] - t[0])
+    return float(min(max(t_drift, lo), hi))
+
+
+def after_transient(ds, transient=None) -> tuple[np.ndarray, float]:
+    """Mask of the output samples after the transient, and the discarded duration [s].
+
+    ``transient=None`` uses ``ds.attrs["transient_discarded"]`` (written by
+    :func:`hsbearing.analysis.annotate`) when present, else ``"auto"``.
+    """
+    t = _time(ds)
+    if transient is None:
+        cut = ds.attrs.get("transient_discarded")
+        cut = transient_cut(ds, "auto") if cut is None else float(cut)
+    else:
+        cut = transient_cut(ds, transient)
+    if t.size == 0:
+        return np.zeros(0, bool), 0.0
+    return t >= t[0] + cut * (1 - 1e-12), cut
+
+
 def crossing_times(t, phase, period: float = 2.0 * np.pi) -> np.ndarray:
     """Times at which a (mostly increasing) ``phase`` first crosses each multiple of ``period``.
 
@@ -124,9 +204,10 @@ def crossing_times(t, phase, period: float = 2.0 * np.pi) -> np.ndarray:
     return t[idx] + frac * (t[idx + 1] - t[idx])
 
 
-def poincare_section(ds, section: str = "cage_revolution",
-                     transient_fraction: float = DEFAULT_TRANSIENT_FRACTION):
+def poincare_section(ds, section: str = "cage_revolution", transient=None):
     """Section crossing times [s] and points (D_Y [m], V_Y [m/s]) after the transient.
+
+    ``transient``: see :func:`after_transient` (None = the run's stored cut, else automatic).
 
     Returns
     -------
@@ -136,7 +217,7 @@ def poincare_section(ds, section: str = "cage_revolution",
     """
     section_description(section)  # validates the name
     t = _time(ds)
-    mask, _ = steady_mask(t, transient_fraction)
+    mask, _ = after_transient(ds, transient)
     ts = t[mask]
     if ts.size < 2:
         return np.zeros(0), np.zeros((0, 2))
@@ -157,15 +238,15 @@ def poincare_section(ds, section: str = "cage_revolution",
     return tc, pts
 
 
-def poincare_points(ds, section: str = "cage_revolution",
-                    transient_fraction: float = DEFAULT_TRANSIENT_FRACTION) -> np.ndarray:
+def poincare_points(ds, section: str = "cage_revolution", transient=None) -> np.ndarray:
     """The (n, 2) Poincare points (D_Y [m], V_Y [m/s]) of a dynamic run (see module docstring).
 
     If the Dataset already carries ``poincare_y``/``poincare_vy`` (written by
-    :func:`hsbearing.analysis.annotate`) and no non-default option is asked,
-    those are returned, so the figure and the stored classification agree.
+    :func:`hsbearing.analysis.annotate`) for the same section and no other
+    transient is asked, those are returned, so the figure and the stored
+    classification agree.
     """
-    if ("poincare_y" in ds and "poincare_vy" in ds and section == ds.attrs.get("poincare_section_kind", section)
-            and transient_fraction == ds.attrs.get("transient_fraction", transient_fraction)):
+    if ("poincare_y" in ds and "poincare_vy" in ds and transient is None
+            and section == ds.attrs.get("poincare_section_kind", section)):
         return np.column_stack([np.asarray(ds["poincare_y"].values, float), np.asarray(ds["poincare_vy"].values, float)])
-    return poincare_section(ds, section, transient_fraction)[1]
+    return poincare_section(ds, section, transient)[1]
