@@ -337,7 +337,7 @@ def test_dataset_contract(case):
     for q, u in units.items():
         for j in (1, 2, 3, 4):
             assert ds[f"{q}{j}"].dims == ("preload",) and ds[f"{q}{j}"].attrs["units"] == u
-    assert ds["torque"].attrs["units"] == "N m"
+    assert ds["torque"].attrs["units"] == "N*m"
     assert ds.attrs["case_system"] == "wire_race" and ds.attrs["status"] == "ok"
     assert "shan2010_wire_race" in ds.attrs["case_toml"]
 
@@ -395,3 +395,24 @@ def test_cli_bad_input_exit_2_nothing_written(tmp_path, args, word):
 def test_cli_wrong_system_exit_2(tmp_path):
     r = run_cli("preload", "zhang2016", "-o", str(tmp_path / "x.nc"))
     assert r.returncode == 2 and "case.system" in r.stderr and not list(tmp_path.iterdir())
+
+
+# ----------------------------------------------------------------------------- property tests
+
+hypothesis = pytest.importorskip("hypothesis")
+from hypothesis import given, settings, strategies as st  # noqa: E402
+
+
+@settings(max_examples=60, deadline=None)
+@given(delta=st.one_of(st.just(0.0), st.floats(1e-12, 1e-3)), K_i=st.floats(1e8, 1e11), K_o=st.floats(1e8, 1e11),
+       G_o=st.floats(0.0, 1e5), alpha_deg=st.floats(10.0, 80.0), Z=st.integers(3, 200))
+def test_eq10_inversion_property(delta, K_i, K_o, G_o, alpha_deg, Z):
+    """For any parameters: F2 - F1 from Eq. 7, F1 >= 0, and Eq. 10 of the returned forces gives the preload
+    back whenever the 1-3 diagonal is loaded."""
+    a = math.radians(alpha_deg)
+    F1, F2 = wr.contact_forces_from_preload(delta, Z, a, G_o, K_i, K_o)
+    assert F1 >= 0 and F2 - F1 == pytest.approx(G_o / (Z * math.sin(a)), rel=1e-9, abs=1e-9)
+    if F1 > 0:
+        assert wr.preload_from_forces(F1, F2, K_i, K_o, a) == pytest.approx(delta, rel=1e-7, abs=1e-13)
+    else:
+        assert wr.preload_from_forces(0.0, F2, K_i, K_o, a) >= delta * (1 - 1e-9)

@@ -106,10 +106,10 @@ for _j, _where in ((1, "inner wire, diagonal 1-3"), (2, "inner wire, diagonal 2-
     register(f"F{_j}", ("preload",), "N", f"ball-wire normal contact force F_{_j} ({_where}), seed 001 Eqs. 7-10")
     register(f"delta{_j}", ("preload",), "m", f"ball-wire Hertz contact deformation delta_{_j} ({_where})")
     register(f"p_max{_j}", ("preload",), "Pa", f"maximum Hertz pressure P_0{_j} at contact {_j} ({_where})")
-register("torque", ("preload",), "N m", "starting torque M_s = rolling torque + M_u (seed 001 Eqs. 4 and 11)")
-register("rolling_torque", ("preload",), "N m", "rolling-resistance bearing torque M_sc = zeta Z sum F_j cos(alpha) (seed 001 Eq. 4)")
-register("contact_stiffness_inner", (), "N m-1.5", "ball-inner wire load-deflection constant K_i, F = K_i delta^1.5 (seed 001 Eq. 5)")
-register("contact_stiffness_outer", (), "N m-1.5", "ball-outer wire load-deflection constant K_o, F = K_o delta^1.5 (seed 001 Eq. 6)")
+register("torque", ("preload",), "N*m", "starting torque M_s = rolling torque + M_u (seed 001 Eqs. 4 and 11)")
+register("rolling_torque", ("preload",), "N*m", "rolling-resistance bearing torque M_sc = zeta Z sum F_j cos(alpha) (seed 001 Eq. 4)")
+register("contact_stiffness_inner", (), "N*m**-1.5", "ball-inner wire load-deflection constant K_i, F = K_i delta^1.5 (seed 001 Eq. 5)")
+register("contact_stiffness_outer", (), "N*m**-1.5", "ball-outer wire load-deflection constant K_o, F = K_o delta^1.5 (seed 001 Eq. 6)")
 
 
 # ----------------------------------------------------------------------------- Eqs. 1-4: torque
@@ -303,8 +303,11 @@ def contact_forces_from_preload(delta, Z, alpha, G_o, K_i, K_o):
         if eq10(0.0, d) >= 0.0:
             flat[n] = 0.0  # 1-3 diagonal unloaded
             continue
-        hi = (d / c) ** 1.5  # F1^(2/3) <= d/c
-        flat[n] = brentq(eq10, 0.0, hi, args=(d,), xtol=1e-12, rtol=1e-13)
+        if G_o == 0.0:
+            flat[n] = (0.5 * d / c) ** 1.5  # Eq. 10 with F1 = F2, closed form
+            continue
+        hi = (d / c) ** 1.5 * (1.0 + 1e-9)  # F1^(2/3) <= d/c
+        flat[n] = hi if eq10(hi, d) <= 0.0 else brentq(eq10, 0.0, hi, args=(d,), xtol=1e-300, rtol=1e-13)
     F2 = framework_equilibrium_F2(F1, Z, alpha, G_o)
     return F1, F2
 
