@@ -413,3 +413,29 @@ def test_brute_force_no_reading_makes_eq4_physical():
     res = {r.split("|")[1].strip(): (int(r.split("|")[3]), int(r.split("|")[4].split()[0])) for r in rows}
     assert res["4050"] == (0, 0)
     assert res["4106"][0] == 8 and res["4109"][1] == 39
+
+
+# ----------------------------------------------------------------------------
+# property-based checks over the operating range
+
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+_oil = st.sampled_from(["4109", "4106", "4050"])
+_S = st.floats(-1.0, 1.0, allow_nan=False)
+_W = st.floats(0.0, 5000.0, allow_nan=False)
+_U = st.floats(2.0, 40.0, allow_nan=False)
+_T = st.floats(293.15, 473.15, allow_nan=False)
+_R = st.floats(2e-3, 8e-3, allow_nan=False)
+
+
+@settings(max_examples=300, deadline=None)
+@given(oil=_oil, S=_S, W=_W, U=_U, T=_T, R=_R)
+def test_property_default_laws_odd_bounded_and_kernel_equal(oil, S, W, U, T, R):
+    mu = traction.get(oil)
+    m = float(mu(S, W, U, T, EP, R))
+    assert abs(m) < 0.2
+    assert float(mu(-S, W, U, T, EP, R)) == -m
+    assert m * S >= 0.0  # traction has the sign of the slip
+    c = zhang2016.coefficients_nb(traction.law_id(oil), W, U, T, EP, R)
+    assert zhang2016.mu_nb(*c, S) == pytest.approx(m, rel=1e-12, abs=1e-15)
