@@ -165,9 +165,10 @@ def build_problem(case, *, inner_speed=None, centrifugal=True, gyroscopic=True, 
     ``fixed_tilt=True`` holds the ring tilts at zero (3 DOF; the moments the
     balls apply are then reactions, reported in the residual).
     """
-    if case.system not in ("angular_contact", "deep_groove"):
+    if case.system not in ("angular_contact", "deep_groove", "gyro_ribbon_cage"):
         raise CaseError(case.source, "case.system",
-                        f"the quasi-static model covers angular_contact and deep_groove bearings, not {case.system!r}")
+                        f"the quasi-static model covers angular_contact, deep_groove and gyro_ribbon_cage bearings, "
+                        f"not {case.system!r}")
     g = _geometry.derive(case)
     b, r = case.materials.ball, case.materials.races
     control = control or case.simulation.kinematics
@@ -736,7 +737,8 @@ def print_summary(ds: xr.Dataset) -> None:
     print(f"status: {ds.attrs.get('status', '?')}")
     if "case_name" in ds.attrs:
         print(f"case: {ds.attrs['case_name']}  kinematics: {ds.attrs.get('kinematics', '?')}"
-              f"  inner speed: {float(ds.attrs.get('inner_speed', 0.0)) * rpm:.6g} r/min")
+              f"  inner speed: {float(ds.attrs.get('inner_speed', 0.0)) * rpm:.6g} r/min"
+              + (f"  outer speed: {float(ds.attrs['outer_speed']) * rpm:.6g} r/min" if ds.attrs.get("outer_speed") else ""))
     loads = ds.attrs.get("applied_loads")
     if loads is not None:
         print("applied loads: F_x, F_y, F_z [N], M_y, M_z [N m] = " + ", ".join(f"{x:.6g}" for x in np.ravel(loads)))
