@@ -309,12 +309,12 @@ def solve_ball(state: ContactState, D: float, dm: float, outer_speed_ratio: floa
         contacts.append(dict(Q=Q, n=n, cpt=0.5 * D * n, t=t, P=P, normals=normals, w=w, s0=s0, cols=cols,
                              s0l=s0l, colsl=colsl, xl=xl, race_speed=race_speeds[k], a=state.a[k]))
     live = [c for c in contacts if c is not None]
-    if not live:
+    if len(live) < 2:
+        # unloaded ball (or pressed on the outer race by its centrifugal force only): it is carried
+        # by the cage and transmits no friction torque to the inner ring in this model
         zero2 = (0.0, 0.0)
         return BallFriction(0.0, 0.0, 0.0, np.zeros(3), float("nan"), zero2, zero2, zero2,
                             ((float("nan"),) * 2,) * 2, 0.0, 0.0)
-    if len(live) == 1:
-        raise SolverError("a ball loaded on one race only cannot be in equilibrium")
 
     def traction_on_ball(c, u):
         vref = vref_box[0]
