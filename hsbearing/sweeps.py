@@ -400,8 +400,9 @@ def _compute_point(case: Case, kind: str, duration, point_fn) -> tuple[dict, xr.
         try:
             summ = quasistatic_summary(ds) if kind == "quasistatic" else dynamic_summary(ds)
             rec["summary"] = {k: _scalar(v) for k, v in summ.items()}
-        except Exception as exc:  # summary of a partial/odd dataset: keep the archive, note why
-            rec["summary_error"] = f"{type(exc).__name__}: {exc}"
+        except Exception as exc:  # summary of a partial/odd dataset: keep the archive, say why
+            rec["summary_error"] = f"summary failed: {type(exc).__name__}: {exc}"
+            rec["error"] = "; ".join(e for e in (rec["error"], rec["summary_error"]) if e)
     rec["wall_time"] = time.perf_counter() - t0
     return rec, ds
 
@@ -438,12 +439,20 @@ def _read_record(path: Path) -> dict | None:
             if "status" not in ds.attrs:
                 return None
             rec = json.loads(ds.attrs["sweep_record"]) if "sweep_record" in ds.attrs else None
-            if rec is None:  # an archive written by something else: summarise it again
+            if rec is None:  # an archive written by something else
+                rec = {"status": str(ds.attrs["status"]), "error": str(ds.attrs.get("error", "")),
+                       "wall_time": float("nan"), "summary_error": "no summary stored"}
+            if rec.get("summary_error"):  # summarise again (the analysis may have been fixed since)
                 ds = ds.load()
-                rec = {"status": str(ds.attrs["status"]), "error": str(ds.attrs.get("error", "")), "wall_time": float("nan")}
                 kind = ds.attrs.get("sweep_kind", "run")
-                with contextlib.suppress(Exception):
-                    rec["summary"] = quasistatic_summary(ds) if kind == "quasistatic" else dynamic_summary(ds)
+                try:
+                    summ = quasistatic_summary(ds) if kind == "quasistatic" else dynamic_summary(ds)
+                    rec["summary"] = {k: _scalar(v) for k, v in summ.items()}
+                    rec["error"] = "; ".join(e for e in rec.get("error", "").split("; ")
+                                             if e and not e.startswith("summary failed") and e != rec["summary_error"])
+                    rec.pop("summary_error")
+                except Exception as exc:
+                    rec["summary_error"] = f"summary failed: {type(exc).__name__}: {exc}"
             return rec
     except Exception:
         return None
@@ -519,7 +528,7 @@ class _LocalPool:
 
     def __init__(self, jobs: int):
         self.jobs = jobs
-        self.ctx = multiprocessing.get_context("spawn")
+        self.ctx = _mp_context()
         self.ex: ProcessPoolExecutor | None = None
 
     def _new(self, n):
@@ -584,6 +593,17 @@ class _LocalPool:
         self.ex.shutdown(wait=True)
         self.ex = None
         return suspects
+
+
+def _mp_context():
+    """``forkserver`` where available (workers fork from a server that has imported hsbearing once:
+    cheap start, no inherited threads), else ``spawn``.  ``HSBEARING_MP_START`` overrides."""
+    method = os.environ.get("HSBEARING_MP_START") or (
+        "forkserver" if "forkserver" in multiprocessing.get_all_start_methods() else "spawn")
+    ctx = multiprocessing.get_context(method)
+    if method == "forkserver":
+        ctx.set_forkserver_preload(["hsbearing.sweeps"])
+    return ctx
 
 
 def _terminate(ex: ProcessPoolExecutor) -> None:

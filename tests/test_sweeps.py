@@ -245,6 +245,22 @@ def test_failing_points_are_recorded_and_the_rest_go_on(tmp_path):
     assert ds.attrs["status"].startswith("partial: 5 of 6")
 
 
+def test_summary_failure_is_reported_and_recomputed_on_resume(tmp_path, monkeypatch):
+    def broken(ds):
+        raise KeyError("cage_center_y")
+
+    real = sweeps.quasistatic_summary
+    monkeypatch.setattr(sweeps, "quasistatic_summary", broken)
+    ds = _qs_sweep(tmp_path, {"axial_load": "100,500N"})
+    assert list(ds["status"].values) == ["ok", "ok"]  # the run itself is fine and archived
+    assert all(e.startswith("summary failed: KeyError") for e in ds["error"].values)
+    assert "mean_inner_contact_load" not in ds
+    monkeypatch.setattr(sweeps, "quasistatic_summary", real)
+    again = _qs_sweep(tmp_path, {"axial_load": "100,500N"})
+    assert list(again["resumed"].values) == [1, 1] and list(again["error"].values) == ["", ""]
+    assert np.isfinite(again["mean_inner_contact_load"].values).all()
+
+
 def test_crashed_worker_is_isolated(tmp_path):
     ds = _qs_sweep(tmp_path, {"axial_load": "100,500,1000,2000N"}, fn=crashing_qs, jobs=2)
     assert list(ds["status"].values) == ["ok", "crashed", "ok", "ok"]
@@ -345,3 +361,35 @@ def test_second_sweep_in_same_directory_is_refused(tmp_path):
     with sweeps._dir_lock(tmp_path):
         with pytest.raises(CaseError, match="another hsbearing sweep"):
             _qs_sweep(tmp_path, {"axial_load": "100,500N"})
+
+
+# ----------------------------------------------------------------------------- the real quasi-static solver
+
+
+def test_quasistatic_sweep_equals_direct_solves(tmp_path, capsys):
+    from hsbearing import cli
+
+    rc = cli.main(["sweep", "zhang2016", "--vary", "axial_load=500,2000N", "--vary", "inner_speed=0,14000rpm",
+                   "--kind", "quasistatic", "-j", "1", "-o", str(tmp_path)])
+    assert rc == 0
+    out = capsys.readouterr().out
+    assert "4 of 4 points ok" in out and "axial_load=2000 N  inner_speed=14000 rpm  status=ok" in out
+    ds = open_run(tmp_path / "sweep.nc")
+    assert ds["status"].dims == ("axial_load", "inner_speed")
+    np.testing.assert_allclose(ds["inner_speed"].values, [0.0, 14000 * 2 * np.pi / 60])
+    for fa in ("500 N", "2000 N"):
+        for n in ("0 rpm", "14000 rpm"):
+            ref = hsbearing.quasi_static(hsbearing.load_case("zhang2016", axial_load=fa, inner_speed=n))
+            pt = ds.sel(axial_load=float(fa.split()[0]), inner_speed=float(ds["inner_speed"].sel(
+                inner_speed=0.0 if n == "0 rpm" else 14000 * 2 * np.pi / 60, method="nearest")))
+            assert pt["mean_inner_contact_load"].item() == pytest.approx(float(ref["inner_contact_load"].mean()), rel=1e-9)
+            assert pt["mean_outer_contact_load"].item() == pytest.approx(float(ref["outer_contact_load"].mean()), rel=1e-9)
+            assert pt["inner_ring_axial_displacement"].item() == pytest.approx(float(ref["inner_ring_axial_displacement"]), rel=1e-9)
+            # and the point archive is that solve, with its case
+            arch = open_run(tmp_path / pt["archive"].item())
+            np.testing.assert_allclose(arch["inner_contact_load"].values, ref["inner_contact_load"].values, rtol=1e-9)
+    # physics sanity through the sweep: at speed the outer loads exceed the inner (centrifugal force)
+    fast = ds.sel(inner_speed=ds["inner_speed"].values[1])
+    assert (fast["mean_outer_contact_load"] > fast["mean_inner_contact_load"]).all()
+    static = ds.sel(inner_speed=0.0)
+    np.testing.assert_allclose(static["mean_outer_contact_load"], static["mean_inner_contact_load"], rtol=1e-6)
