@@ -53,6 +53,11 @@ Conventions and decisions (details in docs/validation/wire_race.md)
 * K_i, K_o come from the exact elliptic-integral Hertz solution
   (:func:`hsbearing.models.hertz.point_contact`) instead of Johnson's
   F_2(e) chart fit; the two differ by 0.4 % here (tests/test_wire_race.py).
+  They are 15-16 % above the K implied by Table 2 of [1]; no reading of
+  Table 1 reproduces both its deformation and its pressure columns (docs).
+* zeta is only defined together with a force model: measured torques fix
+  zeta * (F1 + F2).  Fit it (Eqs. 12-13, :func:`fit_rolling_resistance`) with
+  the forces of the same stiffness you predict with; the bundled case does.
 """
 
 from __future__ import annotations
