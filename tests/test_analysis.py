@@ -432,6 +432,8 @@ def test_summary(case):
     assert math.isnan(s["mean_outer_contact_load"])
     assert s["mean_cage_slip_ratio"] == pytest.approx(0.03, rel=1e-6)
     assert s["status"] == "ok"
+    assert s["transient_discarded"] == pytest.approx(0.3 * float(ds.time[-1]))
+    assert s["guide_clearance_used"] == pytest.approx(s["whirl_radius_max"] / 0.2e-3)
     for key in ("whirl_amplitude", "whirl_frequency", "classification_confidence", "mean_cage_speed"):
         assert isinstance(s[key], float)
 
@@ -442,3 +444,18 @@ def test_summary_of_quasi_static_dataset(case):
     s = summary(ds)
     assert s["classification"] == "static"
     assert s["mean_outer_contact_load"] == pytest.approx(450.0)
+
+
+@pytest.mark.slow
+def test_real_dynamic_run_is_annotated(case, tmp_path):
+    """Integration with the dynamic model (hsbearing.dynamics): a 0.15 s run carries every analysis output."""
+    from hsbearing.plotting import plot_run
+
+    ds = hsbearing.simulate(case, duration=0.15)
+    for name in ("cage_slip_ratio", "mean_cage_slip_ratio", "whirl_amplitude", "whirl_frequency", "poincare_y"):
+        assert name in ds
+    assert ds.attrs["classification"] in ("undetermined", "quasi-periodic", "chaos") or "period" in ds.attrs["classification"]
+    assert np.isfinite(float(ds["mean_cage_slip_ratio"])) and abs(float(ds["mean_cage_slip_ratio"])) < 0.5
+    assert ds["poincare_y"].size >= 5  # ~14 cage revolutions, at most 60 % discarded
+    assert np.all(np.hypot(ds.cage_center_y, ds.cage_center_z) <= 1.05 * ds.attrs["guide_clearance"])
+    assert plot_run(ds, tmp_path / "run.png").exists()

@@ -266,4 +266,8 @@ def summary(ds: xr.Dataset, case=None) -> dict[str, Any]:
         else:
             out[f"mean_{name}"] = out[f"max_{name}"] = float("nan")
     out["n_poincare_points"] = int(ds["poincare_y"].size) if "poincare_y" in ds else 0
+    out["transient_discarded"] = float(ds.attrs.get("transient_discarded", float("nan")))
+    gc = ds.attrs.get("guide_clearance")
+    gc = float(gc) if gc is not None else float("nan")
+    out["guide_clearance_used"] = out["whirl_radius_max"] / gc if np.isfinite(gc) and gc > 0 else float("nan")
     return out
