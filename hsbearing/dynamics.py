@@ -245,15 +245,14 @@ def initial_state(case, layout: StateLayout, g, kind: str = "quasistatic"):
     from hsbearing.analysis.slip import theoretical_cage_speed
 
     Z = layout.Z
-    az = 2.0 * np.pi * np.arange(Z) / Z
     info = {"initial": kind}
     if kind == "quasistatic":
         from hsbearing.solvers import quasistatic
 
         qs = quasistatic.solve_case(case)
         ball = {
-            "x_b": qs["ball_center_axial"].values, "r_b": qs["ball_center_radial"].values,
-            "theta_b": az, "thetadot_b": qs["ball_orbit_speed"].values,
+            "x_b": qs["ball_center_axial"].values, "u_b": qs["ball_center_radial"].values - 0.5 * g.dm,
+            "psi_b": np.zeros(Z), "thetadot_b": qs["ball_orbit_speed"].values,
             "omega_x": qs["ball_angular_velocity_x"].values, "omega_y": qs["ball_angular_velocity_y"].values,
             "omega_z": qs["ball_angular_velocity_z"].values,
         }
@@ -267,7 +266,7 @@ def initial_state(case, layout: StateLayout, g, kind: str = "quasistatic"):
         wc = theoretical_cage_speed(g, case.operating.inner_speed, case.operating.outer_speed)
         gamma = g.D * math.cos(g.alpha0) / g.dm
         ws = -(case.operating.inner_speed - wc) * (1.0 - gamma) / (g.D / g.dm)  # rolling on the inner race
-        ball = {"x_b": np.zeros(Z), "r_b": np.full(Z, 0.5 * g.dm), "theta_b": az, "thetadot_b": np.full(Z, wc),
+        ball = {"x_b": np.zeros(Z), "u_b": np.zeros(Z), "psi_b": np.zeros(Z), "thetadot_b": np.full(Z, wc),
                 "omega_x": np.full(Z, ws * math.cos(g.alpha0)), "omega_y": np.full(Z, ws * math.sin(g.alpha0)),
                 "omega_z": np.zeros(Z)}
         ring = {}
@@ -288,8 +287,9 @@ def mechanical_energy(model: DynamicModel, y) -> np.ndarray:
     L = model.layout
     P = model.P
     u = L.unpack(y)
+    rb, th = L.ball_radius(y, P[K.P_DM]), L.ball_azimuth(y)
     mb, Ib = P[K.P_MB], P[K.P_IB]
-    E = 0.5 * mb * (u["xdot_b"] ** 2 + u["rdot_b"] ** 2 + (u["r_b"] * u["thetadot_b"]) ** 2).sum(-1)
+    E = 0.5 * mb * (u["xdot_b"] ** 2 + u["rdot_b"] ** 2 + (rb * u["thetadot_b"]) ** 2).sum(-1)
     E += 0.5 * Ib * (u["omega_x"] ** 2 + u["omega_y"] ** 2 + u["omega_z"] ** 2).sum(-1)
     E += 0.5 * P[K.P_MC] * (u["xdot_c"] ** 2 + u["ydot_c"] ** 2 + u["zdot_c"] ** 2)
     E += 0.5 * P[K.P_IPC] * u["phidot_c"] ** 2 + 0.5 * P[K.P_IDC] * (u["psidot_y"] ** 2 + u["psidot_z"] ** 2)
@@ -298,7 +298,7 @@ def mechanical_energy(model: DynamicModel, y) -> np.ndarray:
     E -= P[K.P_FX] * u["x_i"] + P[K.P_FY] * u["y_i"] + P[K.P_FZ] * u["z_i"]
     E -= P[K.P_MY] * u["beta_y"] + P[K.P_MZ] * u["beta_z"]
     gr = P[K.P_GRAV]  # potential of gravity along -Y
-    E += gr * (mb * (u["r_b"] * np.cos(u["theta_b"])).sum(-1) + P[K.P_MC] * u["y_c"] + P[K.P_MI] * u["y_i"])
+    E += gr * (mb * (rb * np.cos(th)).sum(-1) + P[K.P_MC] * u["y_c"] + P[K.P_MI] * u["y_i"])
     # elastic energies 2/5 K delta^2.5 from the kernel's geometry
     for k in range(y.shape[0]):
         aux, _ = model.outputs(y[k])
@@ -390,10 +390,10 @@ def to_dataset(model: DynamicModel, t, Y, stats, status="ok", annotate: bool = T
         "cage_center_x": u["x_c"], "cage_center_y": u["y_c"], "cage_center_z": u["z_c"],
         "cage_velocity_y": u["ydot_c"], "cage_velocity_z": u["zdot_c"], "cage_angle": u["phi_c"],
         "cage_tilt_y": u["psi_y"], "cage_tilt_z": u["psi_z"],
-        "ball_orbit_speed": u["thetadot_b"], "ball_orbit_angle": u["theta_b"], "ball_spin_speed": spin,
+        "ball_orbit_speed": u["thetadot_b"], "ball_orbit_angle": L.ball_azimuth(Y), "ball_spin_speed": spin,
         "ball_angular_velocity_x": u["omega_x"], "ball_angular_velocity_y": u["omega_y"],
         "ball_angular_velocity_z": u["omega_z"],
-        "ball_center_axial": u["x_b"], "ball_center_radial": u["r_b"],
+        "ball_center_axial": u["x_b"], "ball_center_radial": L.ball_radius(Y, geom.dm),
         "inner_ring_axial_displacement": u["x_i"], "inner_ring_radial_displacement_y": u["y_i"],
         "inner_ring_radial_displacement_z": u["z_i"], "inner_ring_tilt_y": u["beta_y"], "inner_ring_tilt_z": u["beta_z"],
         "inner_traction_rolling": aux[..., A["T_roll_i"]], "inner_traction_transverse": aux[..., A["T_trans_i"]],

@@ -35,7 +35,7 @@ def test_state_layout_roundtrip():
     rng = np.random.default_rng(0)
     y = rng.normal(size=L.size)
     u = L.unpack(y)
-    y2 = L.pack({k: u[k] for k in ("x_b", "r_b", "theta_b", "xdot_b", "rdot_b", "thetadot_b",
+    y2 = L.pack({k: u[k] for k in ("x_b", "u_b", "psi_b", "xdot_b", "rdot_b", "thetadot_b",
                                    "omega_x", "omega_y", "omega_z")},
                 {k: u[k] for k in ("x_c", "y_c", "z_c", "phi_c", "psi_y", "psi_z",
                                    "xdot_c", "ydot_c", "zdot_c", "phidot_c", "psidot_y", "psidot_z")},
@@ -172,7 +172,7 @@ def test_arrowhead_jacobian_matches_full_finite_differences(model):
     y = model.y0.copy()
     rng = np.random.default_rng(1)
     L = model.layout
-    y[L.ball("theta_b")] += rng.normal(scale=1e-3, size=L.Z)  # break the symmetry
+    y[L.ball("psi_b")] += rng.normal(scale=1e-3, size=L.Z)  # break the symmetry
     y[L.cage("y_c")] = 20e-6
     y[L.cage("phi_c")] = 0.002
     N = y.size
@@ -242,8 +242,19 @@ def steady_run(case):
 
 @pytest.mark.slow
 def test_pure_axial_steady_state_matches_quasistatic(case, steady_run):
-    """Done-when (a): after start-up, loads and angles within 2 % of the quasi-static solution, cage speed 1 %."""
-    qs = h.quasi_static(case)
+    """Done-when (a): after start-up, loads and angles within 2 % of the quasi-static solution, cage speed 1 %.
+
+    The reference is the quasi-static solution *without* the gyroscopic couple
+    (``solve_case(case, gyroscopic=False)``): with oil 4109 at 130 degC the
+    traction law gives mu <= 0.007, far less than the ~0.025 needed to hold the
+    gyroscopic moment of outer-race control, so the dynamic ball pitch settles
+    near zero (checked below) and the gyroscopic couple with it.  The
+    race-control solution (gyroscopic=True) differs from the dynamic one by
+    2.5 % on Q_i for that reason (docs/dynamics.md).
+    """
+    from hsbearing.solvers import quasistatic
+
+    qs = quasistatic.solve_case(case, gyroscopic=False)
     ds = steady_run
     late = ds.time > 0.6 * float(ds.time[-1])
     for v in ("inner_contact_load", "outer_contact_load", "inner_contact_angle", "outer_contact_angle"):
@@ -251,6 +262,9 @@ def test_pure_axial_steady_state_matches_quasistatic(case, steady_run):
         assert np.allclose(dyn, qs[v].values, rtol=0.02), (v, dyn, qs[v].values)
     wc = float(ds.cage_speed.sel(time=late).mean())
     assert wc == pytest.approx(float(qs["cage_speed"]), rel=0.01)
+    wx = ds.ball_angular_velocity_x.sel(time=late).mean("time").values
+    wy = ds.ball_angular_velocity_y.sel(time=late).mean("time").values
+    assert np.all(np.abs(wy / wx) < 0.05)  # ball pitch ~ 0: the gyroscopic couple is not held by traction
 
 
 @pytest.mark.slow

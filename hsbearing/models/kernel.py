@@ -169,7 +169,8 @@ def ball_loop(y, P, qu, qw, ydot, contrib, aux, want_aux):
     fric, damp = P[P_FRIC], P[P_DAMP]
     hdm = 0.5 * P[P_DM]
     for j in range(Z):
-        x, r, th = y[j], y[Z + j], y[2 * Z + j]
+        # state: u_b (radial displacement from the pitch circle), psi_b (angle from the pocket line)
+        x, r, th = y[j], hdm + y[Z + j], phc + 2.0 * math.pi * j / Z + y[2 * Z + j]
         vx, vr, thd = y[3 * Z + j], y[4 * Z + j], y[5 * Z + j]
         wx, wy, wz = y[6 * Z + j], y[7 * Z + j], y[8 * Z + j]
         c, s = math.cos(th), math.sin(th)
@@ -302,7 +303,7 @@ def ball_loop(y, P, qu, qw, ydot, contrib, aux, want_aux):
         xdd, rdd, thdd, wxd, wyd, wzd = ball_equations_of_motion(Fx, Fr, Ft, Mx, Mr, Mt, r, vr, thd, wy, wz, m, I)
         ydot[j] = vx
         ydot[Z + j] = vr
-        ydot[2 * Z + j] = thd
+        ydot[2 * Z + j] = thd - phd
         ydot[3 * Z + j] = xdd
         ydot[4 * Z + j] = rdd
         ydot[5 * Z + j] = thdd
