@@ -130,7 +130,7 @@ def _field(key: str, source: str):
     return table, leaf, SCHEMA[table][leaf]
 
 
-def parse_values(key: str, spec: str | Sequence[Any], *, source: str = "--vary") -> tuple[list, list]:
+def parse_values(key: str, spec: str | Sequence[Any], *, source: str = "--vary", unique: bool = True) -> tuple[list, list]:
     """Values of one varied key -> (override values in case-file form, coordinate values).
 
     ``spec`` is a list (``["100 N", "1 kN"]``, ``["4109", "4106"]``,
@@ -193,7 +193,7 @@ def parse_values(key: str, spec: str | Sequence[Any], *, source: str = "--vary")
         else:  # str, choice
             values.append(str(item))
             coords.append(str(item))
-    if len(set(coords)) != len(coords):
+    if unique and len(set(coords)) != len(coords):
         raise CaseError(source, full, f"repeated value in {items!r}")
     return values, coords
 
@@ -289,7 +289,7 @@ def plan_sweep(
         full = f"{table}.{leaf}"
         if full in seen:
             raise CaseError(source, full, "varied twice")
-        values, coords = parse_values(full, spec, source=source)
+        values, coords = parse_values(full, spec, source=source, unique=not zip)
         seen[full] = leaf
         axes.append(Axis(full, leaf, fld.kind, tuple(values), tuple(coords)))
     leaves = [a.dim for a in axes]
@@ -302,6 +302,12 @@ def plan_sweep(
             raise CaseError(source, None, "--zip needs lists of equal length: " + ", ".join(f"{a.key} has {len(a.values)}" for a in axes))
         combos = [tuple((i,) * len(axes)) for i in range(n.pop())]
         indices = [(c[0],) for c in combos]
+        seen_rows: dict[tuple, int] = {}
+        for i in range(len(combos)):
+            row = tuple(a.coords[i] for a in axes)
+            if row in seen_rows:
+                raise CaseError(source, None, f"--zip points {seen_rows[row]} and {i} are the same: {row}")
+            seen_rows[row] = i
     else:
         combos = list(itertools.product(*[range(len(a.values)) for a in axes]))
         indices = combos
@@ -577,6 +583,9 @@ class _LocalPool:
                         suspects.append((key, args))
                         broken = True
                         continue
+                    except Exception as exc:  # e.g. a point function that cannot be pickled
+                        rec, ds = {"status": "error", "error": f"{type(exc).__name__}: {exc}", "summary": {},
+                                   "wall_time": float("nan")}, None
                     on_done(key, rec, ds)
                 if broken:
                     # every other in-flight point died with the pool: suspects too

@@ -171,6 +171,11 @@ def test_zip_sweep_one_point_dim(tmp_path):
     assert list(ds["radial_load"].values) == [0.0, 50.0, 200.0]
     assert ds.attrs["sweep_mode"] == "zip"
     assert np.isclose(ds["max_inner_contact_load"].values[2] - ds["mean_inner_contact_load"].values[2], 2 * 200.0 / 11)
+    # zipped lists may repeat a value; identical points are refused
+    ds = _qs_sweep(tmp_path / "rep", {"axial_load": "500,500,1000N", "oil": "4109,4050,4050"}, zip=True)
+    assert list(ds["oil"].values) == ["4109", "4050", "4050"] and (ds["status"] == "ok").all()
+    with pytest.raises(CaseError, match="are the same"):
+        _qs_sweep(tmp_path / "rep", {"axial_load": "500,500N", "oil": "4109,4109"}, zip=True)
     with pytest.raises(CaseError, match="equal length"):
         _qs_sweep(tmp_path, {"axial_load": "100,500N", "oil": "4109,4106,4050"}, zip=True)
 
@@ -259,6 +264,12 @@ def test_summary_failure_is_reported_and_recomputed_on_resume(tmp_path, monkeypa
     again = _qs_sweep(tmp_path, {"axial_load": "100,500N"})
     assert list(again["resumed"].values) == [1, 1] and list(again["error"].values) == ["", ""]
     assert np.isfinite(again["mean_inner_contact_load"].values).all()
+
+
+def test_unpicklable_point_function_is_an_error_not_a_crash(tmp_path):
+    ds = _qs_sweep(tmp_path, {"axial_load": "100,500N"}, fn=lambda case, duration: fake_qs(case, duration), jobs=2)
+    assert list(ds["status"].values) == ["error", "error"]
+    assert all("pickle" in e.lower() for e in ds["error"].values)
 
 
 def test_crashed_worker_is_isolated(tmp_path):
