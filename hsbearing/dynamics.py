@@ -252,7 +252,7 @@ def initial_state(case, layout: StateLayout, g, kind: str = "quasistatic"):
         qs = quasistatic.solve_case(case)
         ball = {
             "x_b": qs["ball_center_axial"].values, "u_b": qs["ball_center_radial"].values - 0.5 * g.dm,
-            "psi_b": np.zeros(Z), "thetadot_b": qs["ball_orbit_speed"].values,
+            "theta_rel_b": np.zeros(Z), "thetadot_b": qs["ball_orbit_speed"].values,
             "omega_x": qs["ball_angular_velocity_x"].values, "omega_y": qs["ball_angular_velocity_y"].values,
             "omega_z": qs["ball_angular_velocity_z"].values,
         }
@@ -260,13 +260,13 @@ def initial_state(case, layout: StateLayout, g, kind: str = "quasistatic"):
         ring = {"x_i": float(qs["inner_ring_axial_displacement"]),
                 "y_i": float(qs["inner_ring_radial_displacement_y"]),
                 "z_i": float(qs["inner_ring_radial_displacement_z"]),
-                "beta_y": float(qs["inner_ring_tilt_y"]), "beta_z": float(qs["inner_ring_tilt_z"])}
+                "tilt_y_i": float(qs["inner_ring_tilt_y"]), "tilt_z_i": float(qs["inner_ring_tilt_z"])}
         info["quasistatic"] = qs
     elif kind == "nominal":
         wc = theoretical_cage_speed(g, case.operating.inner_speed, case.operating.outer_speed)
         gamma = g.D * math.cos(g.alpha0) / g.dm
         ws = -(case.operating.inner_speed - wc) * (1.0 - gamma) / (g.D / g.dm)  # rolling on the inner race
-        ball = {"x_b": np.zeros(Z), "u_b": np.zeros(Z), "psi_b": np.zeros(Z), "thetadot_b": np.full(Z, wc),
+        ball = {"x_b": np.zeros(Z), "u_b": np.zeros(Z), "theta_rel_b": np.zeros(Z), "thetadot_b": np.full(Z, wc),
                 "omega_x": np.full(Z, ws * math.cos(g.alpha0)), "omega_y": np.full(Z, ws * math.sin(g.alpha0)),
                 "omega_z": np.zeros(Z)}
         ring = {}
@@ -289,14 +289,14 @@ def mechanical_energy(model: DynamicModel, y) -> np.ndarray:
     u = L.unpack(y)
     rb, th = L.ball_radius(y, P[K.P_DM]), L.ball_azimuth(y)
     mb, Ib = P[K.P_MB], P[K.P_IB]
-    E = 0.5 * mb * (u["xdot_b"] ** 2 + u["rdot_b"] ** 2 + (rb * u["thetadot_b"]) ** 2).sum(-1)
+    E = 0.5 * mb * (u["xdot_b"] ** 2 + u["udot_b"] ** 2 + (rb * u["thetadot_b"]) ** 2).sum(-1)
     E += 0.5 * Ib * (u["omega_x"] ** 2 + u["omega_y"] ** 2 + u["omega_z"] ** 2).sum(-1)
     E += 0.5 * P[K.P_MC] * (u["xdot_c"] ** 2 + u["ydot_c"] ** 2 + u["zdot_c"] ** 2)
-    E += 0.5 * P[K.P_IPC] * u["phidot_c"] ** 2 + 0.5 * P[K.P_IDC] * (u["psidot_y"] ** 2 + u["psidot_z"] ** 2)
+    E += 0.5 * P[K.P_IPC] * u["phidot_c"] ** 2 + 0.5 * P[K.P_IDC] * (u["tiltdot_y_c"] ** 2 + u["tiltdot_z_c"] ** 2)
     E += 0.5 * P[K.P_MI] * (u["xdot_i"] ** 2 + u["ydot_i"] ** 2 + u["zdot_i"] ** 2)
-    E += 0.5 * P[K.P_IDI] * (u["betadot_y"] ** 2 + u["betadot_z"] ** 2)
+    E += 0.5 * P[K.P_IDI] * (u["tiltdot_y_i"] ** 2 + u["tiltdot_z_i"] ** 2)
     E -= P[K.P_FX] * u["x_i"] + P[K.P_FY] * u["y_i"] + P[K.P_FZ] * u["z_i"]
-    E -= P[K.P_MY] * u["beta_y"] + P[K.P_MZ] * u["beta_z"]
+    E -= P[K.P_MY] * u["tilt_y_i"] + P[K.P_MZ] * u["tilt_z_i"]
     gr = P[K.P_GRAV]  # potential of gravity along -Y
     E += gr * (mb * (rb * np.cos(th)).sum(-1) + P[K.P_MC] * u["y_c"] + P[K.P_MI] * u["y_i"])
     # elastic energies 2/5 K delta^2.5 from the kernel's geometry
@@ -389,13 +389,13 @@ def to_dataset(model: DynamicModel, t, Y, stats, status="ok", annotate: bool = T
         "cage_speed": u["phidot_c"], "cage_slip_ratio": cage_slip_ratio(u["phidot_c"], wth),
         "cage_center_x": u["x_c"], "cage_center_y": u["y_c"], "cage_center_z": u["z_c"],
         "cage_velocity_y": u["ydot_c"], "cage_velocity_z": u["zdot_c"], "cage_angle": u["phi_c"],
-        "cage_tilt_y": u["psi_y"], "cage_tilt_z": u["psi_z"],
+        "cage_tilt_y": u["tilt_y_c"], "cage_tilt_z": u["tilt_z_c"],
         "ball_orbit_speed": u["thetadot_b"], "ball_orbit_angle": L.ball_azimuth(Y), "ball_spin_speed": spin,
         "ball_angular_velocity_x": u["omega_x"], "ball_angular_velocity_y": u["omega_y"],
         "ball_angular_velocity_z": u["omega_z"],
         "ball_center_axial": u["x_b"], "ball_center_radial": L.ball_radius(Y, geom.dm),
         "inner_ring_axial_displacement": u["x_i"], "inner_ring_radial_displacement_y": u["y_i"],
-        "inner_ring_radial_displacement_z": u["z_i"], "inner_ring_tilt_y": u["beta_y"], "inner_ring_tilt_z": u["beta_z"],
+        "inner_ring_radial_displacement_z": u["z_i"], "inner_ring_tilt_y": u["tilt_y_i"], "inner_ring_tilt_z": u["tilt_z_i"],
         "inner_traction_rolling": aux[..., A["T_roll_i"]], "inner_traction_transverse": aux[..., A["T_trans_i"]],
         "outer_traction_rolling": aux[..., A["T_roll_o"]], "outer_traction_transverse": aux[..., A["T_trans_o"]],
         "inner_slide_roll_ratio": aux[..., A["S_i"]], "outer_slide_roll_ratio": aux[..., A["S_o"]],

@@ -35,12 +35,12 @@ def test_state_layout_roundtrip():
     rng = np.random.default_rng(0)
     y = rng.normal(size=L.size)
     u = L.unpack(y)
-    y2 = L.pack({k: u[k] for k in ("x_b", "u_b", "psi_b", "xdot_b", "rdot_b", "thetadot_b",
+    y2 = L.pack({k: u[k] for k in ("x_b", "u_b", "theta_rel_b", "xdot_b", "udot_b", "thetadot_b",
                                    "omega_x", "omega_y", "omega_z")},
-                {k: u[k] for k in ("x_c", "y_c", "z_c", "phi_c", "psi_y", "psi_z",
-                                   "xdot_c", "ydot_c", "zdot_c", "phidot_c", "psidot_y", "psidot_z")},
-                {k: u[k] for k in ("x_i", "y_i", "z_i", "beta_y", "beta_z",
-                                   "xdot_i", "ydot_i", "zdot_i", "betadot_y", "betadot_z")})
+                {k: u[k] for k in ("x_c", "y_c", "z_c", "phi_c", "tilt_y_c", "tilt_z_c",
+                                   "xdot_c", "ydot_c", "zdot_c", "phidot_c", "tiltdot_y_c", "tiltdot_z_c")},
+                {k: u[k] for k in ("x_i", "y_i", "z_i", "tilt_y_i", "tilt_z_i",
+                                   "xdot_i", "ydot_i", "zdot_i", "tiltdot_y_i", "tiltdot_z_i")})
     assert np.array_equal(y, y2)
     assert L.state_names[L.cage0] == "x_c" and L.state_names[L.ring0] == "x_i"
     assert np.all(L.atol(1e-8) > 0)
@@ -172,7 +172,7 @@ def test_arrowhead_jacobian_matches_full_finite_differences(model):
     y = model.y0.copy()
     rng = np.random.default_rng(1)
     L = model.layout
-    y[L.ball("psi_b")] += rng.normal(scale=1e-3, size=L.Z)  # break the symmetry
+    y[L.ball("theta_rel_b")] += rng.normal(scale=1e-3, size=L.Z)  # break the symmetry
     y[L.cage("y_c")] = 20e-6
     y[L.cage("phi_c")] = 0.002
     N = y.size

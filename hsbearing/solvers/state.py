@@ -16,20 +16,21 @@ ball 0       ``[0, Z)``                  x_b: ball centre axial position (X)    
 ball 1       ``[Z, 2Z)``                 u_b: radial displacement of the ball       m
                                          centre from the pitch circle,
                                          r_b = d_m/2 + u_b
-ball 2       ``[2Z, 3Z)``                psi_b: orbital angle of ball j relative    rad
-                                         to its pocket's nominal line,
-                                         theta_b = phi_c + 2 pi j / Z + psi_b
+ball 2       ``[2Z, 3Z)``                theta_rel_b: orbital angle of ball j       rad
+                                         relative to its pocket's nominal line,
+                                         theta_b = phi_c + 2 pi j / Z + theta_rel_b
 ball 3       ``[3Z, 4Z)``                dx_b/dt                                    m/s
-ball 4       ``[4Z, 5Z)``                dr_b/dt = du_b/dt                          m/s
+ball 4       ``[4Z, 5Z)``                udot_b = du_b/dt = dr_b/dt                 m/s
 ball 5       ``[5Z, 6Z)``                dtheta_b/dt: absolute orbital speed        rad/s
-                                         (d psi_b/dt = dtheta_b/dt - dphi_c/dt)
+                                         (d theta_rel_b/dt = dtheta_b/dt - dphi_c/dt)
 ball 6       ``[6Z, 7Z)``                omega_x: ball angular velocity, axial      rad/s
 ball 7       ``[7Z, 8Z)``                omega_y: idem, radial (ball frame)         rad/s
 ball 8       ``[8Z, 9Z)``                omega_z: idem, circumferential             rad/s
 cage         ``9Z + 0 .. 5``             x_c, y_c, z_c [m], phi_c (rotation about   m, rad
-                                         X) [rad], psi_y, psi_z (tilts) [rad]
+                                         X) [rad], tilt_y_c, tilt_z_c [rad]
 cage rates   ``9Z + 6 .. 11``            their time derivatives                     m/s, rad/s
-ring         ``9Z + 12 .. 16``           x_i, y_i, z_i [m], beta_y, beta_z [rad]    m, rad
+ring         ``9Z + 12 .. 16``           x_i, y_i, z_i [m], tilt_y_i, tilt_z_i      m, rad
+                                         [rad]
 ring rates   ``9Z + 17 .. 21``           their time derivatives                     m/s, rad/s
 ===========  ==========================  =========================================  ========
 
@@ -42,14 +43,14 @@ prescribed by the case (``operating.inner_speed``) and is not a state; the
 outer ring is fixed (its speed ``operating.outer_speed`` enters the contact
 kinematics only).
 
-Why u_b and psi_b rather than r_b and theta_b: CVODE weighs the error of
+Why u_b and theta_rel_b rather than r_b and theta_b: CVODE weighs the error of
 state i by 1/(rtol |y_i| + atol_i).  With r_b ~ d_m/2 the relative part
 (rtol r_b ~ 0.2 um at rtol 1e-5) would allow errors of several percent of the
 contact deflections (~ 4 um); with an absolute orbit angle that grows
 without bound the allowed error would grow with time (at 0.1 s, 6e-4 rad, a
 quarter of the pocket clearance).  The displacement from the pitch circle and
 the angle relative to the pocket are small numbers, controlled by atol, and
-the ball/pocket geometry uses psi_b directly.
+the ball/pocket geometry uses theta_rel_b directly.
 
 Absolute tolerances: :meth:`StateLayout.atol` returns a per-state array,
 ``atol * scale`` with the scales of :data:`ATOL_SCALE` (the case ``atol`` is
@@ -66,12 +67,12 @@ import numpy as np
 __all__ = ["StateLayout", "BALL_STATES", "CAGE_STATES", "RING_STATES", "ATOL_SCALE"]
 
 #: Per-ball quantities in block order.
-BALL_STATES = ("x_b", "u_b", "psi_b", "xdot_b", "rdot_b", "thetadot_b", "omega_x", "omega_y", "omega_z")
+BALL_STATES = ("x_b", "u_b", "theta_rel_b", "xdot_b", "udot_b", "thetadot_b", "omega_x", "omega_y", "omega_z")
 #: Cage states in order.
-CAGE_STATES = ("x_c", "y_c", "z_c", "phi_c", "psi_y", "psi_z",
-               "xdot_c", "ydot_c", "zdot_c", "phidot_c", "psidot_y", "psidot_z")
+CAGE_STATES = ("x_c", "y_c", "z_c", "phi_c", "tilt_y_c", "tilt_z_c",
+               "xdot_c", "ydot_c", "zdot_c", "phidot_c", "tiltdot_y_c", "tiltdot_z_c")
 #: Inner-ring states in order.
-RING_STATES = ("x_i", "y_i", "z_i", "beta_y", "beta_z", "xdot_i", "ydot_i", "zdot_i", "betadot_y", "betadot_z")
+RING_STATES = ("x_i", "y_i", "z_i", "tilt_y_i", "tilt_z_i", "xdot_i", "ydot_i", "zdot_i", "tiltdot_y_i", "tiltdot_z_i")
 
 #: atol multiplier per kind of state (see module docstring).
 ATOL_SCALE = {
@@ -157,9 +158,9 @@ class StateLayout:
         return 0.5 * dm + np.asarray(y)[..., self.ball("u_b")]
 
     def ball_azimuth(self, y):
-        """theta_b = phi_c + 2 pi j/Z + psi_b (..., Z) [rad]."""
+        """theta_b = phi_c + 2 pi j/Z + theta_rel_b (..., Z) [rad]."""
         y = np.asarray(y)
-        return y[..., self.cage("phi_c"), None] + 2.0 * np.pi * np.arange(self.Z) / self.Z + y[..., self.ball("psi_b")]
+        return y[..., self.cage("phi_c"), None] + 2.0 * np.pi * np.arange(self.Z) / self.Z + y[..., self.ball("theta_rel_b")]
 
     def atol(self, atol: float) -> np.ndarray:
         """Per-state absolute tolerance ``atol * scale`` (:data:`ATOL_SCALE`)."""
