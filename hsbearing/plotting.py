@@ -246,7 +246,11 @@ def _plot_dynamic(ds, path: Path) -> Path:
         ax.plot(t_ms, w, color="C0", lw=0.8, label="cage speed")
         if "theoretical_cage_speed" in ds:
             wth = float(ds["theoretical_cage_speed"]) * _RPM
-            ax.axhline(wth, color="k", ls="--", lw=0.9, label=f"pure rolling {wth:.0f} r/min")
+            ax.axhline(wth, color="k", ls="--", lw=0.9, label=f"pure rolling at \u03b1$_0$: {wth:.0f} r/min")
+        if "raceway_control_cage_speed" in ds and np.isfinite(float(ds["raceway_control_cage_speed"])):
+            wrc = float(ds["raceway_control_cage_speed"]) * _RPM
+            ax.axhline(wrc, color="C2", ls=":", lw=1.1,
+                       label=f"outer-raceway control at loaded \u03b1: {wrc:.0f} r/min")
         _shade(ax, t_tr * 1e3)
         ax.legend(fontsize=8, loc="best")
     ax.set_xlabel("time [ms]")
@@ -262,6 +266,9 @@ def _plot_dynamic(ds, path: Path) -> Path:
         if "mean_cage_slip_ratio" in ds and np.isfinite(float(ds["mean_cage_slip_ratio"])):
             ms = 100 * float(ds["mean_cage_slip_ratio"])
             ax.axhline(ms, color="k", ls=":", lw=0.9, label=f"mean after transient {ms:.2f} %")
+        if "mean_cage_slip_ratio_raceway_control" in ds and np.isfinite(float(ds["mean_cage_slip_ratio_raceway_control"])):
+            rc = 100 * float(ds["mean_cage_slip_ratio_raceway_control"])
+            ax.plot([], [], " ", label=f"against outer-raceway control at loaded \u03b1: {rc:.2f} %")
         _shade(ax, t_tr * 1e3)
         ax.legend(fontsize=8, loc="best")
     else:

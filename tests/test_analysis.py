@@ -147,6 +147,27 @@ def test_theoretical_cage_speed_vectorised_and_contact_angle(case):
     assert theoretical_cage_speed(g, 1000.0, 0.0, alpha=a).shape == (3,)
 
 
+def test_raceway_control_cage_speed(case):
+    """Jones (1959) outer-raceway control: closed form for a fixed outer ring; equal angles -> pure rolling."""
+    from hsbearing.analysis.slip import raceway_control_cage_speed
+
+    g = derive(case)
+    wi = 14000 * RPM
+    for ai, ao in [(29.12, 25.25), (40.0, 10.0), (25.0, 25.0)]:
+        ai, ao = math.radians(ai), math.radians(ao)
+        closed = wi * (1 - g.D / g.dm * math.cos(ai)) / (1 + math.cos(ai - ao))  # Harris & Kotzalas Vol. 2 Ch. 3
+        assert raceway_control_cage_speed(g, wi, 0.0, ai, ao) == pytest.approx(closed, rel=1e-12)
+    a = math.radians(20)
+    for wo in (0.0, 3000 * RPM):
+        pure = theoretical_cage_speed(g, wi, wo, alpha=a)
+        assert raceway_control_cage_speed(g, wi, wo, a, a) == pytest.approx(pure, rel=1e-12)
+        assert raceway_control_cage_speed(g, wi, wo, a, a, control="inner") == pytest.approx(pure, rel=1e-12)
+    w = raceway_control_cage_speed(g, wi, 0.0, np.radians([30.0, 35.0]), np.radians([25.0, 20.0]))
+    assert w.shape == (2,) and np.all(w > theoretical_cage_speed(g, wi, 0.0))  # inner angle > alpha_0 -> faster cage
+    with pytest.raises(ValueError):
+        raceway_control_cage_speed(g, wi, 0.0, a, a, control="both")
+
+
 def test_cage_slip_ratio_definition():
     assert cage_slip_ratio(97.0, 100.0) == pytest.approx(0.03)
     assert cage_slip_ratio(100.0, 100.0) == 0.0
@@ -383,6 +404,16 @@ def test_annotate_scalars(case):
     assert float(ds["whirl_frequency"]) == pytest.approx(wc / (2 * np.pi), rel=2e-3)  # forward, synchronous
     assert float(ds["whirl_frequency_ratio"]) == pytest.approx(1.0, rel=2e-3)
     assert ds.attrs["guide_clearance"] == pytest.approx(0.2e-3)
+    # no contact angles in the synthetic run: no raceway-control cross-check
+    assert "raceway_control_cage_speed" not in ds
+    ang = ds.assign(inner_contact_angle=(("time", "ball"), np.full((ds.time.size, 11), math.radians(29.0))),
+                    outer_contact_angle=(("time", "ball"), np.full((ds.time.size, 11), math.radians(25.0))))
+    out = annotate(ang, case)
+    from hsbearing.analysis.slip import raceway_control_cage_speed
+
+    w_rc = raceway_control_cage_speed(case, 14000 * RPM, 0.0, math.radians(29.0), math.radians(25.0))
+    assert float(out["raceway_control_cage_speed"]) == pytest.approx(w_rc)
+    assert float(out["mean_cage_slip_ratio_raceway_control"]) == pytest.approx(1 - wc / w_rc)
     # backward whirl has a negative frequency
     bw = cage_run("period", case).assign(cage_center_z=lambda d: -d.cage_center_z)
     assert float(annotate(bw, case)["whirl_frequency_ratio"]) == pytest.approx(-1.0, rel=2e-3)

@@ -30,7 +30,7 @@ import xarray as xr
 
 from hsbearing.analysis import poincare as _pc
 from hsbearing.analysis.classify import classify as _classify
-from hsbearing.analysis.slip import cage_slip_ratio, theoretical_cage_speed
+from hsbearing.analysis.slip import cage_slip_ratio, raceway_control_cage_speed, theoretical_cage_speed
 from hsbearing.results import VARIABLES, register
 
 _trapz = getattr(np, "trapezoid", None) or np.trapz  # numpy < 2 has only trapz
@@ -44,6 +44,10 @@ for _n, _d, _u, _l in [
     ("theoretical_cage_speed", (), "rad/s",
      "epicyclic cage speed for rolling without slip omega_c,th = (omega_i (1 - gamma) + omega_o (1 + gamma))/2"),
     ("mean_cage_speed", (), "rad/s", "time-mean cage speed after the transient"),
+    ("raceway_control_cage_speed", (), "rad/s",
+     "cage speed of outer-raceway-control kinematics at the mean loaded contact angles after the transient (Jones 1959)"),
+    ("mean_cage_slip_ratio_raceway_control", (), "1",
+     "(raceway_control_cage_speed - mean cage speed) / raceway_control_cage_speed"),
     ("mean_cage_slip_ratio", (), "1", "time-mean cage slip ratio (omega_c,th - omega_c)/omega_c,th after the transient"),
     ("whirl_amplitude", (), "m", "RMS radius of the cage mass-centre orbit about the bearing axis after the transient"),
     ("whirl_radius_max", (), "m", "peak radius of the cage mass-centre orbit about the bearing axis after the transient"),
@@ -199,6 +203,18 @@ def annotate(ds: xr.Dataset, case=None, *, alpha=None, section: str = "cage_revo
     for k, v in whirl_metrics(ds).items():
         ds[k] = _var(k, v)
 
+    # --- kinematic cross-check: outer-raceway control at the mean loaded contact angles
+    if (case is not None and "inner_contact_angle" in ds and "outer_contact_angle" in ds
+            and "time" in ds["inner_contact_angle"].dims and mask.any()):
+        sel = {"time": np.nonzero(mask)[0]}
+        ai = float(ds["inner_contact_angle"].isel(sel).mean())
+        ao = float(ds["outer_contact_angle"].isel(sel).mean())
+        if np.isfinite(ai) and np.isfinite(ao):
+            w_rc = raceway_control_cage_speed(geom, case.operating.inner_speed, case.operating.outer_speed, ai, ao)
+            ds["raceway_control_cage_speed"] = _var("raceway_control_cage_speed", w_rc)
+            ds["mean_cage_slip_ratio_raceway_control"] = _var(
+                "mean_cage_slip_ratio_raceway_control", cage_slip_ratio(float(ds["mean_cage_speed"]), w_rc))
+
     # --- Poincare section and classification
     tc, pts = _pc.poincare_section(ds, section)
     ds = ds.drop_vars([v for v in ("poincare_time", "poincare_y", "poincare_vy") if v in ds.variables])
@@ -252,8 +268,8 @@ def summary(ds: xr.Dataset, case=None) -> dict[str, Any]:
         sel = {}
     out["classification"] = ds.attrs.get("classification", "static" if not dynamic else "undetermined")
     out["classification_confidence"] = float(ds.attrs.get("classification_confidence", float("nan")))
-    for name in ("mean_cage_slip_ratio", "mean_cage_speed", "whirl_amplitude", "whirl_radius_max",
-                 "whirl_frequency", "whirl_frequency_ratio"):
+    for name in ("mean_cage_slip_ratio", "mean_cage_slip_ratio_raceway_control", "mean_cage_speed",
+                 "whirl_amplitude", "whirl_radius_max", "whirl_frequency", "whirl_frequency_ratio"):
         out[name] = _scalar(ds, name)
     if not dynamic and "cage_speed" in ds:
         out["mean_cage_speed"] = float(np.mean(ds["cage_speed"].values))

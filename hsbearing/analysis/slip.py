@@ -16,6 +16,13 @@ References
     S_c = (omega_c,th - omega_c) / omega_c,th (e.g. Gupta, *Advanced Dynamics of
     Rolling Elements*, 1984, Ch. 6 cage slip) is used here.
 
+[3] Jones A. B., "Ball motion and sliding friction in ball bearings", J. Basic
+    Eng. 81 (1959) 1-12: raceway control hypothesis (the ball rolls without
+    spinning on the controlling race); Harris & Kotzalas, 5th ed., Vol. 2
+    (Advanced Concepts), Ch. 3 (ball speeds under outer-raceway control,
+    omega_c / omega_i = (1 - (D/d_m) cos alpha_i) / (1 + cos(alpha_i - alpha_o))
+    for a fixed outer ring).
+
 The contact angle used for gamma is the nominal (free) contact angle
 ``geom.alpha0`` unless ``alpha`` is given (e.g. the loaded mean contact angle
 of a quasi-static solution); see docs/analysis.md.
@@ -25,7 +32,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["theoretical_cage_speed", "cage_slip_ratio"]
+__all__ = ["theoretical_cage_speed", "cage_slip_ratio", "raceway_control_cage_speed"]
 
 
 def theoretical_cage_speed(geom, inner_speed, outer_speed=0.0, alpha=None):
@@ -82,3 +89,59 @@ def cage_slip_ratio(cage_speed, theoretical):
     with np.errstate(divide="ignore", invalid="ignore"):
         s = np.where(th != 0.0, (th - wc) / np.where(th != 0.0, th, 1.0), np.nan)  # [2] Sec. 5, slip definition
     return s.item() if np.ndim(s) == 0 else s
+
+
+def raceway_control_cage_speed(geom, inner_speed, outer_speed, alpha_i, alpha_o, control: str = "outer"):
+    """Cage (ball orbital) speed under raceway control with the loaded contact angles [rad/s].
+
+    Kinematics of one ball in the cage frame, meridian plane (x axial, r
+    radial), contact points (D/2)(sin alpha_o, cos alpha_o) at the outer race
+    and -(D/2)(sin alpha_i, cos alpha_i) at the inner race, ball angular
+    velocity (w_x, w_r): rolling without slip in the rolling direction at both
+    contacts and no spin at the controlling contact ([3], Jones 1959) give
+    three linear equations in (omega_c, w_x, w_r), solved here.  For a fixed
+    outer ring and outer control the solution is the closed form
+    omega_c / omega_i = (1 - (D/d_m) cos alpha_i) / (1 + cos(alpha_i - alpha_o))
+    ([3], Harris & Kotzalas Vol. 2 Ch. 3), and for alpha_i = alpha_o it is the
+    pure-rolling speed of :func:`theoretical_cage_speed`.
+
+    Parameters
+    ----------
+    geom : Geometry or Case
+    inner_speed, outer_speed : float
+        Ring speeds about the bearing axis [rad/s].
+    alpha_i, alpha_o : float or array_like
+        Loaded inner and outer contact angles [rad] (broadcast together).
+    control : {"outer", "inner"}
+        The race at which the ball does not spin.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        omega_c [rad/s].
+    """
+    if not hasattr(geom, "dm"):
+        from hsbearing.models.geometry import derive
+
+        geom = derive(geom)
+    if control not in ("outer", "inner"):
+        raise ValueError(f"control must be 'outer' or 'inner', not {control!r}")
+    ai, ao = np.broadcast_arrays(np.asarray(alpha_i, float), np.asarray(alpha_o, float))
+    h, R = 0.5 * geom.D, 0.5 * geom.dm
+    wi, wo = float(inner_speed), float(outer_speed)
+    ci, si, co, so = np.cos(ai), np.sin(ai), np.cos(ao), np.sin(ao)
+    A = np.zeros(ai.shape + (3, 3))
+    b = np.zeros(ai.shape + (3,))
+    # unknowns (omega_c, w_x, w_r); circumferential surface speed of the ball = w_x c_r - w_r c_x
+    A[..., 0, :] = np.stack([R + h * co, h * co, -h * so], -1)  # rolling at the outer contact [3]
+    b[..., 0] = wo * (R + h * co)
+    A[..., 1, :] = np.stack([R - h * ci, -h * ci, h * si], -1)  # rolling at the inner contact [3]
+    b[..., 1] = wi * (R - h * ci)
+    if control == "outer":  # no spin at the outer contact: (w_ball - w_ring_o) . n_o = 0  [3]
+        A[..., 2, :] = np.stack([so, so, co], -1)
+        b[..., 2] = wo * so
+    else:  # no spin at the inner contact
+        A[..., 2, :] = np.stack([si, si, ci], -1)
+        b[..., 2] = wi * si
+    wc = np.linalg.solve(A, b[..., None])[..., 0, 0]
+    return wc.item() if np.ndim(wc) == 0 else wc
