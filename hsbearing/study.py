@@ -237,7 +237,7 @@ def write_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, info:
               f"the others resumed from `{RUNS}/`)",
               f"- **wall time of the whole study (this invocation): {info['wall_time']:.1f} s**",
               f"- sum of the per-point wall times: {_sum_wall(datasets):.1f} s", ""]
-    totals = [0, 0]
+    totals = [0, 0, 0]  # agree, classified, undetermined
     disagreements: list[str] = []
     for t in study.tables:
         ds = datasets.get(t["id"])
@@ -255,10 +255,13 @@ def write_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, info:
                 ours = _ours(pt)
                 ok = paper and ours == paper
                 if paper and pt["status"].item() == sweeps.STATUS_OK:
-                    totals[0] += int(bool(ok))
-                    totals[1] += 1
+                    if ours == "undetermined":
+                        totals[2] += 1
+                    else:
+                        totals[0] += int(bool(ok))
+                        totals[1] += 1
                 if paper and not ok:
-                    disagreements.append(f"{t['id']}, oil {o}, {row[0]}: paper {paper}, ours {ours}")
+                    disagreements.append(f"{t['id']}, oil {o}, {row[0]}: paper {paper}, ours {ours}{_details(pt)}")
                 row += [paper or "-", f"{ours} {'(=)' if ok else '(x)'}" if paper else ours]
             lines.append("| " + " | ".join(row) + " |")
         lines += ["", "Cage slip ratio (time mean after the transient; ours) -- "
@@ -274,8 +277,12 @@ def write_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, info:
         if png:
             lines += ["", f"![cage slip ratio, {t['id']}]({FIGURES}/{png.name})"]
         lines.append("")
+    n_cells = sum(len(t["values"]) * len(study.oils) for t in study.tables if t["id"] in datasets)
     lines += ["## Agreement", "",
-              f"Classification agrees with the paper in **{totals[0]} of {totals[1]}** cells computed without failure.", ""]
+              f"Classification agrees with the paper in **{totals[0]} of {totals[1]}** cells that completed and "
+              f"were classified; {totals[2]} completed cells are *undetermined* (too few Poincare points or an "
+              f"inconclusive test: simulate longer); {n_cells - totals[1] - totals[2]} of {n_cells} cells did not "
+              "complete.", ""]
     if disagreements:
         lines += ["Cells where ours differs:", ""] + [f"- {d}" for d in disagreements] + [""]
     lines += [
@@ -321,6 +328,15 @@ def _ours(pt: xr.Dataset) -> str:
     if "classification" not in pt:
         return "-"
     return normalise_label(pt["classification"].item()) or "-"
+
+
+def _details(pt: xr.Dataset) -> str:
+    bits = []
+    if "classification_confidence" in pt and np.isfinite(float(pt["classification_confidence"].item())):
+        bits.append(f"confidence {float(pt['classification_confidence'].item()):.2f}")
+    if "n_poincare_points" in pt and np.isfinite(float(pt["n_poincare_points"].item())):
+        bits.append(f"{int(pt['n_poincare_points'].item())} section points")
+    return f" ({', '.join(bits)})" if bits else ""
 
 
 def _sum_wall(datasets) -> float:
@@ -419,7 +435,15 @@ def _plot_cells(study: Study, datasets: dict, figspec: dict, path: Path) -> Path
         y = np.asarray(run["cage_center_y"].values, float) * 1e6
         z = np.asarray(run["cage_center_z"].values, float) * 1e6
         ax = axes[0, j]
-        ax.plot(y, z, lw=0.4)
+        t = np.asarray(run["time"].values, float)
+        t_tr = float(run.attrs.get("transient_discarded", t[0]))
+        early = t <= t_tr
+        if early.any() and not early.all():
+            ax.plot(y[early], z[early], lw=0.4, color="0.75", label="transient")
+            ax.plot(y[~early], z[~early], lw=0.4, color="C0", label="analysed")
+            ax.legend(fontsize=6, loc="upper right")
+        else:
+            ax.plot(y, z, lw=0.4)
         ax.set_aspect("equal", "datalim")
         ax.set_xlabel("D_Y [um]")
         ax.set_ylabel("D_Z [um]")

@@ -104,7 +104,8 @@ def test_study_end_to_end_with_synthetic_runs(tmp_path):
     assert "Not the dynamic model" in text and "test_study.fake_dynamics" in text
     # agreement count, computed independently from the CSV
     agree = sum(study.normalise_label(r["response"]) == FAKE_LABEL[r["oil"]] for r in _csv_rows())
-    assert f"**{agree} of 39**" in text
+    assert f"**{agree} of 39** cells that completed and were classified; 0 completed cells are *undetermined*" in text
+    assert "0 of 39 cells did not complete" in text
     for t in ("Table 3", "Table 4", "Table 5"):
         assert t in text
     assert "| 27 degC | 1 period | quasi-periodic (x) | 1 period | 1 period (=) | 4 periods | 4 periods (=) |" in text
