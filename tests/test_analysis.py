@@ -433,6 +433,18 @@ def test_annotate_short_run_is_undetermined(case):
     assert "simulate longer" in ds.attrs["classification_reason"]
 
 
+def test_annotate_partial_run_ending_in_nan(case):
+    """A failed run may end with non-finite samples: summaries use the finite ones."""
+    ds = cage_run("period", case, n_rev=30).drop_vars("cage_angle")
+    y, w = ds.cage_center_y.values.copy(), ds.cage_speed.values.copy()
+    y[-500:] = np.nan
+    w[-500:] = np.nan
+    out = annotate(ds.assign(cage_center_y=("time", y), cage_speed=("time", w)), case)
+    assert float(out["mean_cage_slip_ratio"]) == pytest.approx(0.03, rel=1e-6)
+    assert float(out["whirl_amplitude"]) == pytest.approx(20e-6, rel=1e-3)
+    assert out.attrs["classification"] == "1 period"
+
+
 def test_annotate_missing_variable(case):
     ds = cage_run("period", case, n_rev=5).drop_vars("cage_center_z")
     with pytest.raises(ValueError, match="cage_center_z"):

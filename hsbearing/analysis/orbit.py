@@ -112,9 +112,11 @@ def whirl_metrics(ds, transient=None) -> dict[str, float]:
     """
     t = np.asarray(ds["time"].values, float)
     mask, _ = _pc.after_transient(ds, transient)
-    y = np.asarray(ds["cage_center_y"].values, float)[mask]
-    z = np.asarray(ds["cage_center_z"].values, float)[mask]
-    w = np.asarray(ds["cage_speed"].values, float)[mask]
+    y_all = np.asarray(ds["cage_center_y"].values, float)
+    z_all = np.asarray(ds["cage_center_z"].values, float)
+    w_all = np.asarray(ds["cage_speed"].values, float)
+    mask = mask & np.isfinite(y_all) & np.isfinite(z_all) & np.isfinite(w_all)  # a failed run may end in NaN
+    y, z, w = y_all[mask], z_all[mask], w_all[mask]
     out = dict(whirl_amplitude=float("nan"), whirl_radius_max=float("nan"), whirl_frequency=float("nan"),
                whirl_frequency_ratio=float("nan"), mean_cage_speed=float("nan"))
     if mask.sum() == 0:
@@ -172,7 +174,6 @@ def annotate(ds: xr.Dataset, case=None, *, alpha=None, section: str = "cage_revo
     t_discard = _pc.transient_cut(ds, transient)
     ds.attrs["transient_discarded"] = float(t_discard)
     mask, _ = _pc.after_transient(ds)
-    span = t[mask][-1] - t[mask][0] if mask.sum() > 1 else 0.0
 
     # --- cage slip ratio (slip.py; nominal contact angle unless alpha is given)
     if case is not None:
@@ -184,8 +185,10 @@ def annotate(ds: xr.Dataset, case=None, *, alpha=None, section: str = "cage_revo
         slip = cage_slip_ratio(ds["cage_speed"].values, w_th)
         ds["cage_slip_ratio"] = _var("cage_slip_ratio", slip, ("time",))
         ds["theoretical_cage_speed"] = _var("theoretical_cage_speed", w_th)
-        ts = t[mask]
-        ms = float(_trapz(slip[mask], ts) / span) if span > 0 else float(np.mean(slip[mask])) if mask.any() else float("nan")
+        ok = mask & np.isfinite(slip)
+        ts = t[ok]
+        sp = ts[-1] - ts[0] if ts.size > 1 else 0.0
+        ms = float(_trapz(slip[ok], ts) / sp) if sp > 0 else float(np.mean(slip[ok])) if ok.any() else float("nan")
         ds["mean_cage_slip_ratio"] = _var("mean_cage_slip_ratio", ms)
         ds.attrs["cage_slip_ratio_definition"] = (
             "(omega_c,th - omega_c)/omega_c,th, omega_c,th = (omega_i (1 - gamma) + omega_o (1 + gamma))/2, "

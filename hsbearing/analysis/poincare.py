@@ -189,6 +189,8 @@ def crossing_times(t, phase, period: float = 2.0 * np.pi) -> np.ndarray:
     """
     t = np.asarray(t, dtype=float)
     phase = np.asarray(phase, dtype=float)
+    ok = np.isfinite(phase) & np.isfinite(t)
+    t, phase = t[ok], phase[ok]
     if t.size < 2:
         return np.zeros(0)
     k = np.maximum.accumulate(np.floor(phase / period))  # highest multiple reached so far
