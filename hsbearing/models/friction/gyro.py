@@ -82,6 +82,7 @@ __all__ = [
     "simulate",
     "starting_moments",
     "study",
+    "override",
     "plot_run",
 ]
 
@@ -681,26 +682,34 @@ class GyroModel:
         _kernel(float(t), np.ascontiguousarray(y), self.p, self.Z, ydot, diag)
         return diag
 
-    def y0(self, settle: bool = True):
-        """Initial state: balls and races at rest, cage centred; with ``settle`` resting on the balls under gravity."""
+    def y0(self, settle: bool = True, cage_offset=(0.0, 0.0, 0.0)):
+        """Initial state: balls and races at rest; the cage centred or, with ``settle``, resting on the balls under gravity.
+
+        ``cage_offset`` (x, y, z) [m] displaces the cage centre (Frame I) before settling.
+        """
         Z = self.Z
         y = np.zeros(12 + 3 * Z)
+        y[0:3] = cage_offset
         y[12:12 + Z] = 2.0 * np.pi * np.arange(Z) / Z
-        # settle the cage along -Y (static equilibrium of gravity and the pocket contacts)
-        mc_g = self.p[_P_MC] * self.p[_P_G]
+        # settle the cage along -Y (static equilibrium of its weight and the pocket contacts, balls at rest).
+        # Decision: the start position is the settled one even when the dynamics run without gravity
+        # (default): a generic off-centre cage, as left by gravity on the test bench before the start.
+        ps = self.p.copy()
+        ps[_P_G] = GRAVITY
+        mc_g = ps[_P_MC] * ps[_P_G]
         ydot = np.empty_like(y)
         diag = np.zeros((Z, 3))
 
         def net(h):
             yy = y.copy()
-            yy[1] = -h
-            _kernel(0.0, yy, self.p, Z, ydot, diag)
-            return ydot[7] * self.p[_P_MC]  # net Y force (Frame c = Frame I at theta = 0)
+            yy[1] = y[1] - h
+            _kernel(0.0, yy, ps, Z, ydot, diag)
+            return ydot[7] * ps[_P_MC]  # net Y force (Frame c = Frame I at theta = 0)
 
         if settle and mc_g > 0:
             hi = self.p[_P_NABLA]
             if net(hi) > 0:
-                y[1] = -brentq(net, 0.0, hi, xtol=1e-16)
+                y[1] = y[1] - brentq(net, 0.0, hi, xtol=1e-16)
         return y
 
 
@@ -806,7 +815,7 @@ def starting_moments(t, M, mode, period, ramp_time):
 
 
 def simulate(case, duration=None, progress: bool = False, *, fine_interval: float = 5e-6,
-             wall_limit: float | None = None, settle: bool = True, **kw):
+             wall_limit: float | None = None, settle: bool = True, cage_offset=(0.0, 0.0, 0.0), **kw):
     """Integrate the gyro-bearing model of ``case`` and return the result Dataset.
 
     Parameters
@@ -819,7 +828,10 @@ def simulate(case, duration=None, progress: bool = False, *, fine_interval: floa
         largest magnitude within each output interval (peak-hold), so the short
         ball/cage impacts survive decimation and SFMC / SFMO are taken from the
         fine sampling.
-    **kw : passed to :func:`build_model` (creep_speed, cage_slip_speed, restitution).
+    settle : start with the cage where its weight leaves it, resting on the balls (default); False:
+        exactly centred (all balls then strike the pockets at the same instant).
+    cage_offset : initial displacement (x, y, z) of the cage centre in Frame I [m].
+    **kw : passed to :func:`build_model` (creep_speed, cage_slip_speed, restitution, gravity).
     """
     from hsbearing.solvers.cvode import integrate
 
@@ -838,7 +850,7 @@ def simulate(case, duration=None, progress: bool = False, *, fine_interval: floa
     fine = dt_out / nsub
     n_out = int(math.floor(T_end / dt_out + 1e-9))
     t_fine = np.linspace(0.0, n_out * dt_out, n_out * nsub + 1)
-    y0 = model.y0(settle=settle)
+    y0 = model.y0(settle=settle, cage_offset=cage_offset)
     res = integrate(model.rhs, y0, t_fine, rtol=min(sim.rtol, 1e-6), atol=model.atol,
                     max_step=min(model.case.operating.ramp_time, 0.01), max_num_steps=200000,
                     progress=progress, progress_desc="gyro", wall_limit=wall_limit)
@@ -919,6 +931,16 @@ def _assemble(model: GyroModel, res, nsub: int):
 # ==============================================================================================
 
 
+def override(case, **overrides):
+    """``case`` with further ``table.key=value`` overrides, keeping the ones already applied.
+
+    (``Case.with_overrides`` restarts from the file text, dropping earlier overrides.)
+    """
+    from hsbearing.case import loads_case
+
+    return loads_case(case.to_toml(), case.source, **overrides)
+
+
 def study(case, key: str, values, *, duration=None, **kw):
     """Run ``case`` for each value of one case key (e.g. ``cage.thickness`` or ``pocket_clearance``).
 
@@ -932,9 +954,9 @@ def study(case, key: str, values, *, duration=None, **kw):
     for v in values:
         if key == "pocket_clearance":
             A = float(v)
-            c2 = case.with_overrides(**{"cage.pocket_depth": f"{(case.bearing.ball_diameter / 2 + A) * 1e3!r} mm"})
+            c2 = override(case, **{"cage.pocket_depth": f"{(case.bearing.ball_diameter / 2 + A) * 1e3!r} mm"})
         else:
-            c2 = case.with_overrides(**{key: v})
+            c2 = override(case, **{key: v})
         out[v] = simulate(c2, duration=duration, **kw)
     return out
 
@@ -969,3 +991,81 @@ def plot_run(ds, path) -> Path:
     path.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(path, dpi=110)
     return path
+
+
+def validation(out_dir="docs/figures", *, osc_duration: float = 6.3, study_duration: float = 4.3,
+               start_duration: float = 0.2, gravity_check: bool = True):
+    """Recompute the seed 000 comparison (Table 2 cells, s and A studies) and draw docs/figures/gyro_*.png.
+
+    ``python -m hsbearing.models.friction.gyro [OUT_DIR]``; prints the Markdown rows used in
+    docs/validation/gyro.md.  Takes a few minutes.
+    """
+    import csv
+    from importlib import resources
+
+    from matplotlib.figure import Figure
+
+    from hsbearing.case import load_case
+
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    base = load_case("jiang2014_gyro")
+    ref = {}
+    data = Path(__file__).resolve().parents[3] / "tests" / "data" / "seed000_friction_moments.csv"
+    if data.exists():
+        with open(data) as fh:
+            for r in csv.DictReader(line for line in fh if not line.startswith("#")):
+                ref[(float(r["load_N"]), float(r["speed_r_per_min"]))] = r
+    rows = []
+    keep = {}
+    for n in (2, 5):
+        for F in (1, 2, 3):
+            c = override(base, **{"operating.axial_load": f"{F} N", "operating.outer_speed": f"{n} rpm"})
+            d_c = simulate(c, duration=start_duration)
+            d_o = simulate(override(c, **{"operating.mode": "oscillation"}), duration=osc_duration)
+            keep[(F, n)] = d_o
+            r = ref.get((float(F), float(n)), {})
+            rows.append((F, n, float(d_c.rfmc) * 1e6, r.get("RFMC_uNm", "?"), float(d_c.sfmc) * 1e6, r.get("SFMC_uNm", "?"),
+                         float(d_o.sfmo) * 1e6, r.get("SFMO_uNm", "?")))
+            print("window maxima", F, n, np.round(d_o.window_max_moment.values * 1e6, 2), "steps", d_o.attrs["solver_steps"],
+                  "wall %.1f s" % d_o.attrs["solver_wall_time"], flush=True)
+    print("| load [N] | n_o [r/min] | RFMC ours | RFMC paper | SFMC ours | SFMC paper | SFMO ours | SFMO paper |")
+    print("|---|---|---|---|---|---|---|---|")
+    for r in rows:
+        print("| {} | {} | {:.2f} | {} | {:.2f} | {} | {:.2f} | {} |".format(*r))
+    if gravity_check:
+        for n in (2, 5):
+            c = override(base, **{"operating.outer_speed": f"{n} rpm"})
+            d_g = simulate(c, duration=start_duration, gravity=GRAVITY)
+            d_0 = simulate(c, duration=start_duration, settle=False)
+            print(f"1 N, {n} r/min: SFMC with cage gravity in the dynamics = {float(d_g.sfmc)*1e6:.3f} uN m "
+                  f"(steps {d_g.attrs['solver_steps']}); SFMC from an exactly centred cage = {float(d_0.sfmc)*1e6:.3f} uN m")
+    plot_run(keep[(1, 5)], out / "gyro_run_1N_5rpm_oscillation.png")
+    plot_run(keep[(1, 2)], out / "gyro_run_1N_2rpm_oscillation.png")
+    # studies (oscillation, 1 N, +/-5 and +/-2 r/min), like seed Figs. 10-11
+    for key, values, label, fname in [
+        ("cage.thickness", ["0.15 mm", "0.20 mm", "0.25 mm", "0.30 mm"], "s", "gyro_thickness.png"),
+        ("pocket_clearance", [0.01e-3, 0.02e-3, 0.03e-3, 0.04e-3, 0.05e-3], "A", "gyro_clearance.png"),
+    ]:
+        fig = Figure(figsize=(8, 6), layout="constrained")
+        axs = fig.subplots(2, 1, sharex=True)
+        for ax, n in zip(axs, (5, 2)):
+            c = override(base, **{"operating.mode": "oscillation", "operating.outer_speed": f"{n} rpm"})
+            res = study(c, key, values, duration=study_duration)
+            for v, ds in res.items():
+                lab = v if isinstance(v, str) else f"{v*1e3:.2f} mm"
+                ax.plot(ds.time.values, ds.friction_moment_total.values * 1e6, lw=0.8,
+                        label=f"{label} = {lab}: SFMC {float(ds.sfmc)*1e6:.1f}, SFMO {float(ds.sfmo)*1e6:.1f}")
+                print(f"study {key} = {lab}, n = {n} r/min: SFMC {float(ds.sfmc)*1e6:.2f}, SFMO {float(ds.sfmo)*1e6:.2f} uN m")
+            ax.set_ylabel(r"M [$\mu$N m]")
+            ax.set_title(f"1 N, +/-{n} r/min", fontsize=9)
+            ax.legend(fontsize=7)
+        axs[-1].set_xlabel("time [s]")
+        fig.savefig(out / fname, dpi=110)
+    return rows
+
+
+if __name__ == "__main__":  # pragma: no cover
+    import sys
+
+    validation(sys.argv[1] if len(sys.argv) > 1 else "docs/figures")
