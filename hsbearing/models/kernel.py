@@ -356,10 +356,18 @@ def global_rows(y, P, csum, ydot, gaux):
         eps = smooth_eccentricity(e / cl, P[P_EPSMAX])
         Mlx = guide_land_torque(eps, phd - P[P_WO], P[P_ETAF], P[P_RLAND], P[P_LLAND], cl)
     if e > cl:
+        # elastic rub of the cage on the land (Hertz-like penalty), with regularised Coulomb friction
         pen = e - cl
-        Fe = -P[P_KLAND] * pen * math.sqrt(pen)
-        Fly += Fe * uy
-        Flz += Fe * uz
+        Fe = P[P_KLAND] * pen * math.sqrt(pen)
+        Fly -= Fe * uy
+        Flz -= Fe * uz
+        if P[P_FRIC] > 0.0:
+            R = P[P_RLAND]
+            vt = -vyc * uz + vzc * uy + (phd - P[P_WO]) * R  # sliding speed of the cage surface on the land
+            ff = -Fe * pocket_friction_factor(vt, P[P_MUC], P[P_V0C]) * vt
+            Fly += -ff * uz
+            Flz += ff * uy
+            Mlx += ff * R
     gaux[0] = Fly
     gaux[1] = Flz
     gaux[2] = Mlx
