@@ -19,7 +19,6 @@ import math
 
 import numpy as np
 import pytest
-import xarray as xr
 from scipy.integrate import solve_ivp
 
 import hsbearing
