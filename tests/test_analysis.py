@@ -260,6 +260,24 @@ def test_quasi_periodic_with_small_noise_stays_quasi_periodic():
     assert classify(P)[0] == "quasi-periodic"
 
 
+@pytest.mark.parametrize("which", ["logistic", "torus", "period4"])
+def test_labels_do_not_depend_on_units(which):
+    """Per-coordinate scaling and offsets (m vs um, mm/s vs m/s) leave the label and the indicators unchanged."""
+    if which == "logistic":
+        P = logistic_points(3.9, n=200)
+    elif which == "torus":
+        th = 2 * np.pi * (math.sqrt(2) - 1) * np.arange(200)
+        P = np.column_stack([np.cos(th), 0.4 * np.sin(th)])
+    else:
+        P = np.tile([[1.0, 0.0], [0.2, 0.9], [-1.0, 0.1], [0.1, -0.8]], (50, 1))
+    a = classify(P)
+    b = classify(P * np.array([1e-6, 3e-3]) + np.array([5e-6, -1e-3]))
+    assert a[0] == b[0] and a[1] == pytest.approx(b[1], abs=1e-9)
+    for key in ("lyapunov", "correlation_dimension"):
+        if a[2][key] is not None:
+            assert a[2][key] == pytest.approx(b[2][key], rel=1e-6, abs=1e-9)
+
+
 def test_too_few_points_is_undetermined():
     label, conf, det = classify(np.array([[0.0, 1.0], [0.0, 1.0], [0.0, 1.0]]))
     assert label == "undetermined" and conf == 0.0 and "only 3" in det["reason"]
@@ -334,6 +352,18 @@ def test_section_without_angle_or_velocity_agrees(case):
     assert ok.sum() >= len(t1) - 1 and len(t1) >= 18
     ext = np.ptp(P1, axis=0)
     assert np.all(np.abs(P1[ok] - P2[j[ok]]) <= 2e-3 * ext)
+
+
+def test_section_independent_of_output_interval(case):
+    """Coarser output (40 instead of 200 samples per revolution) gives the same section points within 0.5 %."""
+    fine = cage_run("quasi", case, n_rev=30, spr=200, transient=False)
+    coarse = cage_run("quasi", case, n_rev=30, spr=40, transient=False)
+    t1, P1 = poincare_section(fine, transient=0.3)
+    t2, P2 = poincare_section(coarse, transient=0.3)
+    j = np.abs(t2[None, :] - t1[:, None]).argmin(axis=1)
+    ok = np.abs(t2[j] - t1) < 1e-9
+    assert ok.sum() >= len(t1) - 1
+    assert np.all(np.abs(P1[ok] - P2[j[ok]]) <= 5e-3 * np.ptp(P1, axis=0))
 
 
 def test_auto_transient_waits_for_the_drift_to_end(case):
