@@ -77,7 +77,7 @@ from dataclasses import dataclass
 
 import numpy as np
 from numpy.polynomial.legendre import leggauss
-from scipy.optimize import brentq, fsolve
+from scipy.optimize import fsolve
 
 from hsbearing.errors import SolverError
 
@@ -247,6 +247,41 @@ def _slip_basis(P, normals, Omega_dir_k, race_speed, A0):
     return tang(s0), [tang(cvec) for cvec in cols]
 
 
+_NLINE = 1601
+
+
+def _trapezoid_weights(x):
+    """Trapezoid weights on the nodes x."""
+    h = np.diff(x)
+    w = np.zeros_like(x)
+    w[:-1] += 0.5 * h
+    w[1:] += 0.5 * h
+    return w
+
+
+def _signed_line_weights(v, x):
+    """Weights W with sum(W f) = integral of sign(v(x)) f(x) dx, exact for piecewise-linear v and f.
+
+    Each cell whose end values of v differ in sign is split at the linear root
+    (the pure rolling line); each part is integrated by the trapezoid rule.
+    """
+    h = np.diff(x)
+    sg = np.where(v >= 0.0, 1.0, -1.0)
+    s0, s1 = sg[:-1], sg[1:]
+    v0, v1 = v[:-1], v[1:]
+    cross = s0 != s1
+    with np.errstate(invalid="ignore", divide="ignore"):
+        th = np.where(cross, v0 / (v0 - v1), 1.0)
+    th = np.clip(th, 0.0, 1.0)
+    # part 1 on [x_k, x_r] with sign s0, part 2 on [x_r, x_k+1] with sign s1; f_r = (1-th) f_k + th f_k+1
+    c0 = s0 * th * h / 2 * (2.0 - th) + s1 * (1.0 - th) * h / 2 * (1.0 - th)
+    c1 = s0 * th * h / 2 * th + s1 * (1.0 - th) * h / 2 * (1.0 + th)
+    W = np.zeros_like(x)
+    W[:-1] += c0
+    W[1:] += c1
+    return W
+
+
 def _prl_roots(vy_line, xi_line):
     """Roots of the rolling-direction slip along the major axis -> (c1 >= c2), nan if absent."""
     roots = []
@@ -298,14 +333,20 @@ def solve_ball(state: ContactState, D: float, dm: float, outer_speed_ratio: floa
         n = np.array([math.sin(al), 0.0, math.cos(al)]) * (1.0 if k == 1 else -1.0)
         t = np.cross(ey, n)
         t /= np.linalg.norm(t)
-        P, normals, w, xi = _contact_grid(n, t, state.R[k], state.a[k], state.b[k], D)
-        s0, cols = _slip_basis(P, normals, None, race_speeds[k], A0)
-        # line along the major axis (y = 0) for the PRLs
-        xl = np.linspace(-1.0, 1.0, 801)
+        # line along the major axis (y = 0): PRLs, and the whole strip-theory integral
+        xl = np.linspace(-1.0, 1.0, _NLINE)
         th = xl * state.a[k] / state.R[k]
         nl = np.cos(th)[:, None] * n + np.sin(th)[:, None] * t
         Pl = (0.5 * D * n - state.R[k] * n) + state.R[k] * nl
         s0l, colsl = _slip_basis(Pl, nl, None, race_speeds[k], A0)
+        if traction == "strip":
+            # strip theory: traction along e_y with the sign of v_y, and v_y does not depend on y,
+            # so the contact integral is the line integral of q(xi) = 3/4 (1 - xi^2) ([S], [H])
+            P, normals, s0, cols = Pl, nl, s0l, colsl
+            w = _trapezoid_weights(xl) * 0.75 * (1.0 - xl**2)
+        else:
+            P, normals, w, xi = _contact_grid(n, t, state.R[k], state.a[k], state.b[k], D)
+            s0, cols = _slip_basis(P, normals, None, race_speeds[k], A0)
         contacts.append(dict(Q=Q, n=n, cpt=0.5 * D * n, t=t, P=P, normals=normals, w=w, s0=s0, cols=cols,
                              s0l=s0l, colsl=colsl, xl=xl, race_speed=race_speeds[k], a=state.a[k]))
     live = [c for c in contacts if c is not None]
@@ -321,8 +362,11 @@ def solve_ball(state: ContactState, D: float, dm: float, outer_speed_ratio: floa
         s = c["s0"] + sum(ui * col for ui, col in zip(u, c["cols"]))
         if traction == "strip":
             vy = s[:, 1]
-            g = vy / np.sqrt(vy * vy + vref * vref)
-            tau = -(c["Q"] * c["w"] * g)[:, None] * ey[None, :]
+            if vref > 0.0:
+                g = c["w"] * vy / np.sqrt(vy * vy + vref * vref)
+            else:  # exact sign integration, split at the pure rolling lines
+                g = _signed_line_weights(vy, c["xl"]) * 0.75 * (1.0 - c["xl"] ** 2)
+            tau = -(c["Q"] * g)[:, None] * ey[None, :]
         else:
             mag = np.sqrt(np.sum(s * s, axis=1) + vref * vref)
             tau = -(c["Q"] * c["w"] / mag)[:, None] * s
@@ -388,6 +432,12 @@ def solve_ball(state: ContactState, D: float, dm: float, outer_speed_ratio: floa
             u2, info, ier, msg = fsolve(residual, u, full_output=True, xtol=1e-13)
             if np.max(np.abs(residual(u2))) < nr:
                 u = u2
+    if traction == "strip":
+        # polish with the exact (unregularised) sign integration: piecewise smooth residual
+        vref_box[0] = 0.0
+        u2, info, ier, msg = fsolve(residual, u, full_output=True, xtol=1e-13)
+        if np.max(np.abs(residual(u2))) <= np.max(np.abs(residual(u))):
+            u = u2
     res = float(np.max(np.abs(residual(u))))
     if res > 1e-6:
         raise SolverError(f"ball friction equilibrium did not converge (residual {res:.2e} {msg.strip()})")
