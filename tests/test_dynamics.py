@@ -207,6 +207,29 @@ def test_energy_is_conserved_without_friction_and_damping(case):
     assert np.ptp(res.y[:, m.layout.ring("x_i")]) > 1e-9
 
 
+def test_friction_and_damping_only_dissipate():
+    """With both rings at rest, traction, pocket and land friction, films and contact damping can only
+    remove energy: spinning balls and a moving cage must lose mechanical energy monotonically."""
+    case = h.load_case("zhang2016", **{"operating.inner_speed": "0 rpm"})
+    m = dy.build_model(case, initial="nominal")
+    L = m.layout
+    y0 = m.y0.copy()
+    y0[L.ball("thetadot_b")] = 300.0
+    y0[L.ball("omega_x")] = -2000.0
+    y0[L.ball("omega_y")] = 800.0
+    y0[L.cage("phidot_c")] = 250.0
+    y0[L.cage("ydot_c")] = 0.05
+    y0[L.ring("x_i")] = 12e-6
+    from hsbearing.solvers.cvode import integrate
+
+    t = np.linspace(0.0, 4e-3, 201)
+    res = integrate(m.rhs, y0, t, rtol=1e-8, atol=L.atol(1e-10), jacfn=m.jac)
+    assert res.success, res.status
+    E = dy.mechanical_energy(m, res.y)
+    assert np.all(np.diff(E) < 0)
+    assert E[-1] < 0.05 * E[0]  # most of the kinetic energy is gone in 4 ms
+
+
 def test_short_run_is_symmetric_and_finite(case):
     """Done-when (b), short span: pure axial load keeps the balls identical and the cage inside its clearance."""
     ds = dy.simulate(case, duration=2e-3, annotate=False, gravity=0.0)
