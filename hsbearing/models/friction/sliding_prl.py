@@ -23,8 +23,11 @@ missing.  They are rebuilt from the sources the seed cites:
   :func:`strip_spin_moment_2prl`):
       F  = mu Q [1 - 3/2 ((c1 - c2) - (c1^3 - c2^3)/3)]            ([S], Eq. 10)
       m_s = 3/8 mu Q a [2 (c2^2 - c1^2) - (c2^4 - c1^4)]            ([S], Eq. 7)
-  and with one PRL c inside (1-PRL case)
-      F  = mu Q [1 - 3/2 (1 - c) + 1/2 (1 - c^3)] ...  (:func:`strip_force_1prl`).
+  and with one PRL c inside (1-PRL case, [S] Eqs. 6, 9)
+      F  = 3/2 mu Q (c - c^3/3),  m_s = 3/8 mu Q a (1 - c^2)^2
+  (:func:`strip_force_1prl`, :func:`strip_spin_moment_1prl`).  The numerical
+  solution integrates the same strip integrals exactly on a line across the
+  contact, each cell split at the PRL (:func:`_signed_line_weights`).
 * Slip kinematics ([H], Ch. "Ball motions and sliding friction"; [J]):
   in the frame turning with the ball set, the ball turns with omega_B about
   its centre and race k with (omega_k - omega_m) about the bearing axis; the
@@ -231,7 +234,7 @@ def _contact_grid(n, t, R, a, b, D):
     return P, normals, w / w.sum(), X.ravel()
 
 
-def _slip_basis(P, normals, Omega_dir_k, race_speed, A0):
+def _slip_basis(P, normals, race_speed, A0):
     """Tangential slip at P as s = s0 + S @ u, u = (w_Bx, w_Bz, w_m) (per omega_i)."""
     ex = np.array([1.0, 0.0, 0.0])
     ez = np.array([0.0, 0.0, 1.0])
@@ -338,7 +341,7 @@ def solve_ball(state: ContactState, D: float, dm: float, outer_speed_ratio: floa
         th = xl * state.a[k] / state.R[k]
         nl = np.cos(th)[:, None] * n + np.sin(th)[:, None] * t
         Pl = (0.5 * D * n - state.R[k] * n) + state.R[k] * nl
-        s0l, colsl = _slip_basis(Pl, nl, None, race_speeds[k], A0)
+        s0l, colsl = _slip_basis(Pl, nl, race_speeds[k], A0)
         if traction == "strip":
             # strip theory: traction along e_y with the sign of v_y, and v_y does not depend on y,
             # so the contact integral is the line integral of q(xi) = 3/4 (1 - xi^2) ([S], [H])
@@ -346,7 +349,7 @@ def solve_ball(state: ContactState, D: float, dm: float, outer_speed_ratio: floa
             w = _trapezoid_weights(xl) * 0.75 * (1.0 - xl**2)
         else:
             P, normals, w, xi = _contact_grid(n, t, state.R[k], state.a[k], state.b[k], D)
-            s0, cols = _slip_basis(P, normals, None, race_speeds[k], A0)
+            s0, cols = _slip_basis(P, normals, race_speeds[k], A0)
         contacts.append(dict(Q=Q, n=n, cpt=0.5 * D * n, t=t, P=P, normals=normals, w=w, s0=s0, cols=cols,
                              s0l=s0l, colsl=colsl, xl=xl, race_speed=race_speeds[k], a=state.a[k]))
     live = [c for c in contacts if c is not None]
