@@ -358,3 +358,18 @@ def test_strip_integration_converged(monkeypatch):
         vals.append(sum(sp.solve_ball(st, 9.525e-3, 46e-3).total for st in states[:3]))
     assert vals[1] == pytest.approx(vals[2], rel=1e-5)
     assert abs(vals[1] - vals[2]) < abs(vals[0] - vals[2])  # converging
+
+
+def test_angular_contact_case_coulomb_runs_and_skf_is_nan():
+    """The PRL method needs no nominal contact angle (seed 003 conclusion): runs on the ACBB case with
+    Coulomb friction; SKF DGBB moments are reported as NaN, not invented."""
+    ds = friction_torque(load_case("zhang2016", **{"friction.law": "coulomb"}), "1000rpm")
+    assert float(ds["sliding_torque"][0]) > 0
+    assert float(ds["spinning_torque"][0]) > 0.5 * float(ds["sliding_torque"][0])  # 25 deg: spin dominates
+    assert np.isnan(float(ds["skf_sliding_torque"][0]))
+
+
+def test_angular_contact_case_stribeck_is_a_case_error(tmp_path):
+    out = tmp_path / "f.nc"
+    assert cli(["friction", "zhang2016", "-o", str(out)]) == 2
+    assert not out.exists()

@@ -171,7 +171,16 @@ def friction_torque(case, speeds="500,5000,15000rpm", *, traction: str = "strip"
     w = parse_speeds(speeds)
     g = geometry.derive(case)
     fr, lub = case.friction, case.lubricant
-    skf = skf2004.skf_moments(case, w)
+    if case.system == "deep_groove":
+        skf = skf2004.skf_moments(case, w)
+        skf_note = None
+    else:  # the SKF model's angular-contact formulas are not implemented: report NaN, say so
+        skf = {k: np.full_like(w, np.nan) for k in ("skf_rolling_torque", "skf_sliding_torque", "skf_drag_torque",
+                                                     "skf_total_torque", "skf_sliding_coefficient")}
+        skf_note = "SKF 2004 moments are implemented for deep-groove ball bearings only (NaN here)"
+        if fr.law == "stribeck":
+            raise CaseError(case.source, "friction.law",
+                            "the Stribeck-type (SKF-weighted) coefficient needs the SKF DGBB model; use law = \"coulomb\" for this system")
     if fr.law == "stribeck":
         mu = skf["skf_sliding_coefficient"]
     else:
@@ -215,6 +224,7 @@ def friction_torque(case, speeds="500,5000,15000rpm", *, traction: str = "strip"
         kinematic_viscosity_mm2_s=lub.kinematic_viscosity * 1e6 if lub.kinematic_viscosity else None,
         skf_reading=fr.skf_reading, spin_torque_reading=fr.spin_torque_reading,
         note="ball data (contact_load/angle, PRLs) at the first speed; torques in N m",
+        skf_note=skf_note,
     )
     return make_dataset(data, coords={"speed": w, "ball": np.arange(g.Z)}, attrs=attrs)
 
@@ -229,7 +239,8 @@ def cli_main(args) -> int:
     speeds = parse_speeds(args.speeds or "500,5000,15000rpm")
     ds = friction_torque(case, speeds)
     print(f"case {case.name}: Fa = {abs(case.operating.axial_load):g} N, Fr = {math.hypot(case.operating.radial_load, case.operating.radial_load_z):g} N, "
-          f"law = {case.friction.law}, nu = {case.lubricant.kinematic_viscosity * 1e6:g} mm^2/s")
+          f"law = {case.friction.law}" + (f", nu = {case.lubricant.kinematic_viscosity * 1e6:g} mm^2/s"
+                                          if case.lubricant.kinematic_viscosity else ""))
     cols = [("n [r/min]", None), ("mu", "sliding_coefficient"), ("M_s", "spinning_torque"), ("M_r", "rotation_sliding_torque"),
             ("M_d", "orbital_sliding_torque"), ("M_sl", "sliding_torque"), ("SKF M_sl", "skf_sliding_torque"),
             ("SKF M_rr", "skf_rolling_torque"), ("SKF M_drag", "skf_drag_torque"), ("SKF M", "skf_total_torque")]
