@@ -373,3 +373,17 @@ def test_angular_contact_case_stribeck_is_a_case_error(tmp_path):
     out = tmp_path / "f.nc"
     assert cli(["friction", "zhang2016", "-o", str(out)]) == 2
     assert not out.exists()
+
+
+@pytest.mark.parametrize("Fa,Fr", [(500, 0), (1000, 1000)])
+def test_projection_reading_is_twice_the_spin_power(Fa, Fr):
+    """Identity behind the two spin readings: the ball's spin moments balance (|m_s,i| = |m_s,e| = m) and
+    omega_s,i + omega_s,e = omega_i sin(alpha) when alpha_i = alpha_e, so the dissipated spin power over
+    omega_i is m sin(alpha), while the Tong-Hong projection sums both races: 2 m sin(alpha)."""
+    proj = friction_torque(_case(Fa, Fr, **{"friction.spin_torque_reading": "projection"}), "5000rpm")
+    powr = friction_torque(_case(Fa, Fr, **{"friction.spin_torque_reading": "power"}), "5000rpm")
+    assert float(proj["spinning_torque"][0]) == pytest.approx(2 * float(powr["spinning_torque"][0]), rel=1e-4)
+    psi, Q, al, states = _ball_state(Fa, Fr)
+    b = sp.solve_ball(states[0], 9.525e-3, 46e-3)
+    assert abs(b.spin_moment[0]) == pytest.approx(abs(b.spin_moment[1]), rel=1e-6)
+    assert abs(b.spin_speed[0] + b.spin_speed[1]) == pytest.approx(math.sin(states[0].alpha[0]), rel=1e-9)
