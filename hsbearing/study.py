@@ -236,7 +236,7 @@ def write_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, info:
               f"- points: {info['n_unique_points']} distinct cases ({info['n_computed']} computed in this invocation, "
               f"the others resumed from `{RUNS}/`)",
               f"- **wall time of the whole study (this invocation): {info['wall_time']:.1f} s**",
-              f"- sum of the per-point wall times: {_sum_wall(datasets):.1f} s", ""]
+              f"- sum of the per-point wall times: {_sum_wall(datasets):.1f} s"] + _section_stats(datasets) + [""]
     totals = [0, 0, 0]  # agree, classified, undetermined
     disagreements: list[str] = []
     for t in study.tables:
@@ -328,6 +328,23 @@ def _ours(pt: xr.Dataset) -> str:
     if "classification" not in pt:
         return "-"
     return normalise_label(pt["classification"].item()) or "-"
+
+
+def _section_stats(datasets) -> list[str]:
+    n = np.concatenate([np.asarray(ds["n_poincare_points"].values, float).ravel() for ds in datasets.values()
+                        if "n_poincare_points" in ds] or [np.array([])])
+    n = n[np.isfinite(n)]
+    if not n.size:
+        return []
+    line = (f"- Poincare section points per run: median {np.median(n):.0f} (min {n.min():.0f}, max {n.max():.0f})")
+    try:
+        from hsbearing.analysis.classify import DEFAULTS
+
+        line += (f"; the classifier needs >= {DEFAULTS['n_min']} for any label and >= {DEFAULTS['n_min_aperiodic']} "
+                 "to tell quasi-periodic from chaos (docs/analysis.md)")
+    except Exception:
+        pass
+    return [line]
 
 
 def _details(pt: xr.Dataset) -> str:

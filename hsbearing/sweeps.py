@@ -29,8 +29,9 @@ Fault tolerance
 * A point that kills its worker process (segfault, OOM kill): the points
   that were running in the broken pool are re-run one at a time in a fresh
   single-worker pool, so the culprit is identified exactly and recorded as
-  ``crashed``; the others complete normally.  On dask, a task that kills
-  workers ends as ``KilledWorker`` -> ``crashed``.
+  ``crashed``; the others complete normally.  On dask the same: tasks that
+  end as ``KilledWorker`` are resubmitted one at a time, and the one that
+  kills its worker again is ``crashed``.
 * Resume: a point whose archive exists and is complete (opens, has the
   ``status`` attribute) is not recomputed; its record is read back from the
   archive.  Archives are written atomically by
@@ -654,26 +655,39 @@ class _Dask:
         return False
 
     def run(self, tasks, on_done):
+        tasks = list(tasks)
+        killed = self._run_batch(tasks, on_done)
+        # Points whose worker died (KilledWorker): possibly innocent neighbours of the point that kills
+        # its worker.  Re-run them one at a time, so the culprit is identified exactly.
+        for key, args, _ in killed:
+            for k, _, exc in self._run_batch([(key, args)], on_done):
+                on_done(k, {"status": "crashed", "error": f"worker process died while computing this point "
+                            f"({type(exc).__name__}: {exc})", "summary": {}, "wall_time": float("nan")}, None)
+
+    def _run_batch(self, tasks, on_done) -> list:
         import uuid
 
         from distributed import as_completed
 
         futs = {}
+        killed = []
         tag = uuid.uuid4().hex[:8]
         for key, args in tasks:
             point = args[0]
             name = f"hsbearing-point-{point.name if point is not None else 'x'}-{key}-{tag}"
-            futs[self.client.submit(_compute_point, *args, key=name, pure=False)] = key
+            futs[self.client.submit(_compute_point, *args, key=name, pure=False)] = (key, args)
         try:
             with self.client.as_current():
                 finished = as_completed(list(futs))
             for f in finished:
-                key = futs[f]
+                key, args = futs[f]
                 try:
                     rec, ds = f.result()
                 except Exception as exc:
-                    status = "crashed" if type(exc).__name__ == "KilledWorker" else "error"
-                    rec, ds = {"status": status, "error": f"{type(exc).__name__}: {exc}", "summary": {},
+                    if type(exc).__name__ == "KilledWorker":
+                        killed.append((key, args, exc))
+                        continue
+                    rec, ds = {"status": "error", "error": f"{type(exc).__name__}: {exc}", "summary": {},
                                "wall_time": float("nan")}, None
                 on_done(key, rec, ds)
         except BaseException:
@@ -681,6 +695,7 @@ class _Dask:
                 with contextlib.suppress(Exception):
                     f.cancel()
             raise
+        return killed
 
 
 def _backend(jobs: int | None, scheduler: str | None):

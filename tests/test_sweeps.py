@@ -77,7 +77,7 @@ def crashing_qs(case, duration):
 
 
 def sleepy_qs(case, duration):
-    time.sleep(0.4)
+    time.sleep(0.25)
     return fake_qs(case, duration)
 
 
@@ -404,3 +404,19 @@ def test_quasistatic_sweep_equals_direct_solves(tmp_path, capsys):
     assert (fast["mean_outer_contact_load"] > fast["mean_inner_contact_load"]).all()
     static = ds.sel(inner_speed=0.0)
     np.testing.assert_allclose(static["mean_outer_contact_load"], static["mean_inner_contact_load"], rtol=1e-6)
+
+
+def test_dask_crashed_worker_and_failures(tmp_path):
+    """On dask a point that kills its worker ends as KilledWorker -> crashed; the others complete."""
+    distributed = pytest.importorskip("distributed")
+    import dask
+
+    with dask.config.set({"distributed.scheduler.allowed-failures": 0}):
+        with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=True, host="127.0.0.1",
+                                      dashboard_address=None) as cluster:
+            ds = _qs_sweep(tmp_path, {"axial_load": "100,500,1000N"}, fn=crashing_qs, scheduler=cluster.scheduler_address)
+            bad = _qs_sweep(tmp_path / "f", {"axial_load": "500,1500,2500N"}, fn=failing_qs,
+                            scheduler=cluster.scheduler_address)
+    assert list(ds["status"].values) == ["ok", "crashed", "ok"]
+    assert "KilledWorker" in ds["error"].values[1]
+    assert list(bad["status"].values) == ["ok", "error", "failed"]
