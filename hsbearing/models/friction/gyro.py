@@ -682,14 +682,16 @@ class GyroModel:
         _kernel(float(t), np.ascontiguousarray(y), self.p, self.Z, ydot, diag)
         return diag
 
-    def y0(self, settle: bool = True, cage_offset=(0.0, 0.0, 0.0)):
+    def y0(self, settle: bool = True, cage_offset=(0.0, 0.0, 0.0), cage_angle: float = 0.0):
         """Initial state: balls and races at rest; the cage centred or, with ``settle``, resting on the balls under gravity.
 
-        ``cage_offset`` (x, y, z) [m] displaces the cage centre (Frame I) before settling.
+        ``cage_offset`` (x, y, z) [m] displaces the cage centre (Frame I) and ``cage_angle`` [rad]
+        turns the cage about the axis before settling.
         """
         Z = self.Z
         y = np.zeros(12 + 3 * Z)
         y[0:3] = cage_offset
+        y[3] = cage_angle
         y[12:12 + Z] = 2.0 * np.pi * np.arange(Z) / Z
         # settle the cage along -Y (static equilibrium of its weight and the pocket contacts, balls at rest).
         # Decision: the start position is the settled one even when the dynamics run without gravity
@@ -815,7 +817,8 @@ def starting_moments(t, M, mode, period, ramp_time):
 
 
 def simulate(case, duration=None, progress: bool = False, *, fine_interval: float = 5e-6,
-             wall_limit: float | None = None, settle: bool = True, cage_offset=(0.0, 0.0, 0.0), **kw):
+             wall_limit: float | None = None, settle: bool = True, cage_offset=(0.0, 0.0, 0.0),
+             cage_angle: float = 0.0, **kw):
     """Integrate the gyro-bearing model of ``case`` and return the result Dataset.
 
     Parameters
@@ -831,6 +834,7 @@ def simulate(case, duration=None, progress: bool = False, *, fine_interval: floa
     settle : start with the cage where its weight leaves it, resting on the balls (default); False:
         exactly centred (all balls then strike the pockets at the same instant).
     cage_offset : initial displacement (x, y, z) of the cage centre in Frame I [m].
+    cage_angle : initial cage angle about the axis relative to the balls [rad].
     **kw : passed to :func:`build_model` (creep_speed, cage_slip_speed, restitution, gravity).
     """
     from hsbearing.solvers.cvode import integrate
@@ -850,7 +854,7 @@ def simulate(case, duration=None, progress: bool = False, *, fine_interval: floa
     fine = dt_out / nsub
     n_out = int(math.floor(T_end / dt_out + 1e-9))
     t_fine = np.linspace(0.0, n_out * dt_out, n_out * nsub + 1)
-    y0 = model.y0(settle=settle, cage_offset=cage_offset)
+    y0 = model.y0(settle=settle, cage_offset=cage_offset, cage_angle=cage_angle)
     res = integrate(model.rhs, y0, t_fine, rtol=min(sim.rtol, 1e-6), atol=model.atol,
                     max_step=min(model.case.operating.ramp_time, 0.01), max_num_steps=200000,
                     progress=progress, progress_desc="gyro", wall_limit=wall_limit)
@@ -993,15 +997,29 @@ def plot_run(ds, path) -> Path:
     return path
 
 
-def validation(out_dir="docs/figures", *, osc_duration: float = 6.3, study_duration: float = 4.3,
-               start_duration: float = 0.2, gravity_check: bool = True):
+def start_ensemble(case, n: int = 5, duration: float | None = None, **kw):
+    """SFMC of ``n`` starts from rest with the cage turned by fractions of its circumferential play [N m].
+
+    A bouncing cage is chaotic: the first impacts depend on where the cage sits in its pockets when
+    the race starts.  The offsets are -1/2 .. +1/2 of the circumferential play sqrt(nabla^2 - e^2)/(d_m/2).
+    Returns the array of SFMC values.
+    """
+    D, Dp, k, dm = case.bearing.ball_diameter, case.cage.pocket_diameter, case.cage.pocket_depth, case.bearing.pitch_diameter
+    e, nabla = pocket_geometry(D, Dp, k)
+    play = math.sqrt(max(nabla**2 - e**2, 0.0)) / (0.5 * dm)
+    T = duration if duration is not None else case.operating.oscillation_period
+    c = override(case, **{"operating.mode": "constant"})
+    return np.array([float(simulate(c, duration=T, cage_angle=f * play, **kw)["sfmc"]) for f in np.linspace(-0.5, 0.5, n)])
+
+
+def validation(out_dir="docs/figures", *, osc_duration: float = 20.3, study_duration: float = 10.3,
+               ensemble: int = 5, gravity_check: bool = True):
     """Recompute the seed 000 comparison (Table 2 cells, s and A studies) and draw docs/figures/gyro_*.png.
 
     ``python -m hsbearing.models.friction.gyro [OUT_DIR]``; prints the Markdown rows used in
-    docs/validation/gyro.md.  Takes a few minutes.
+    docs/validation/gyro.md.  Takes about half an hour on one core.
     """
     import csv
-    from importlib import resources
 
     from matplotlib.figure import Figure
 
@@ -1018,28 +1036,31 @@ def validation(out_dir="docs/figures", *, osc_duration: float = 6.3, study_durat
                 ref[(float(r["load_N"]), float(r["speed_r_per_min"]))] = r
     rows = []
     keep = {}
+    u = 1e6
     for n in (2, 5):
         for F in (1, 2, 3):
             c = override(base, **{"operating.axial_load": f"{F} N", "operating.outer_speed": f"{n} rpm"})
-            # window 0 of the oscillation run is the constant-rate start (identical dynamics for t < T)
             d_o = simulate(override(c, **{"operating.mode": "oscillation"}), duration=osc_duration)
             keep[(F, n)] = d_o
+            wm = d_o.window_max_moment.values * u
+            ens = start_ensemble(c, ensemble) * u if ensemble else np.array([wm[0]])
             r = ref.get((float(F), float(n)), {})
-            rows.append((F, n, float(d_o.rfmc) * 1e6, r.get("RFMC_uNm", "?"), float(d_o.sfmc) * 1e6, r.get("SFMC_uNm", "?"),
-                         float(d_o.sfmo) * 1e6, r.get("SFMO_uNm", "?")))
-            print("window maxima", F, n, np.round(d_o.window_max_moment.values * 1e6, 2), "steps", d_o.attrs["solver_steps"],
-                  "wall %.1f s" % d_o.attrs["solver_wall_time"], flush=True)
-    print("| load [N] | n_o [r/min] | RFMC ours | RFMC paper | SFMC ours | SFMC paper | SFMO ours | SFMO paper |")
-    print("|---|---|---|---|---|---|---|---|")
+            rows.append((F, n, float(d_o.rfmc) * u, r.get("RFMC_uNm", "?"), wm[0], ens.mean(), ens.std(), r.get("SFMC_uNm", "?"),
+                         wm[1:].mean(), wm[1:].std(), wm[1:].size, r.get("SFMO_uNm", "?")))
+            print(f"cell {F} N {n} r/min: window maxima {np.round(wm, 2)}; start ensemble {np.round(ens, 2)}; "
+                  f"steps {d_o.attrs['solver_steps']}, wall {d_o.attrs['solver_wall_time']:.1f} s", flush=True)
+    print("| load [N] | n_o [r/min] | RFMC ours | RFMC paper | SFMC ours (settled start) | SFMC ours, ensemble mean +/- sd "
+          "| SFMC paper | SFMO ours, mean +/- sd (windows) | SFMO paper |")
+    print("|---|---|---|---|---|---|---|---|---|")
     for r in rows:
-        print("| {} | {} | {:.2f} | {} | {:.2f} | {} | {:.2f} | {} |".format(*r))
+        print("| {} | {} | {:.2f} | {} | {:.2f} | {:.2f} +/- {:.2f} | {} | {:.2f} +/- {:.2f} ({}) | {} |".format(*r))
     if gravity_check:
         for n in (2, 5):
             c = override(base, **{"operating.outer_speed": f"{n} rpm"})
-            d_g = simulate(c, duration=start_duration, gravity=GRAVITY)
-            d_0 = simulate(c, duration=start_duration, settle=False)
-            print(f"1 N, {n} r/min: SFMC with cage gravity in the dynamics = {float(d_g.sfmc)*1e6:.3f} uN m "
-                  f"(steps {d_g.attrs['solver_steps']}); SFMC from an exactly centred cage = {float(d_0.sfmc)*1e6:.3f} uN m")
+            d_g = simulate(c, duration=0.3, gravity=GRAVITY)
+            d_0 = simulate(c, duration=2.0, settle=False)
+            print(f"1 N, {n} r/min: SFMC with cage gravity in the dynamics (0.3 s) = {float(d_g.sfmc)*u:.3f} uN m "
+                  f"(steps {d_g.attrs['solver_steps']}); SFMC from an exactly centred cage = {float(d_0.sfmc)*u:.3f} uN m", flush=True)
     plot_run(keep[(1, 5)], out / "gyro_run_1N_5rpm_oscillation.png")
     plot_run(keep[(1, 2)], out / "gyro_run_1N_2rpm_oscillation.png")
     # studies (oscillation, 1 N, +/-5 and +/-2 r/min), like seed Figs. 10-11
@@ -1047,20 +1068,32 @@ def validation(out_dir="docs/figures", *, osc_duration: float = 6.3, study_durat
         ("cage.thickness", ["0.15 mm", "0.20 mm", "0.25 mm", "0.30 mm"], "s", "gyro_thickness.png"),
         ("pocket_clearance", [0.01e-3, 0.02e-3, 0.03e-3, 0.04e-3, 0.05e-3], "A", "gyro_clearance.png"),
     ]:
-        fig = Figure(figsize=(8, 6), layout="constrained")
-        axs = fig.subplots(2, 1, sharex=True)
-        for ax, n in zip(axs, (5, 2)):
+        fig = Figure(figsize=(9, 8), layout="constrained")
+        axs = fig.subplots(3, 1)
+        summary = {}
+        for ax, n in zip(axs[:2], (5, 2)):
             c = override(base, **{"operating.mode": "oscillation", "operating.outer_speed": f"{n} rpm"})
             res = study(c, key, values, duration=study_duration)
+            xs, ms, sds = [], [], []
             for v, ds in res.items():
                 lab = v if isinstance(v, str) else f"{v*1e3:.2f} mm"
-                ax.plot(ds.time.values, ds.friction_moment_total.values * 1e6, lw=0.8,
-                        label=f"{label} = {lab}: SFMC {float(ds.sfmc)*1e6:.1f}, SFMO {float(ds.sfmo)*1e6:.1f}")
-                print(f"study {key} = {lab}, n = {n} r/min: SFMC {float(ds.sfmc)*1e6:.2f}, SFMO {float(ds.sfmo)*1e6:.2f} uN m")
+                wm = ds.window_max_moment.values * u
+                ax.plot(ds.time.values, ds.friction_moment_total.values * u, lw=0.6, label=f"{label} = {lab}")
+                print(f"study {key} = {lab}, n = {n} r/min: SFMC {wm[0]:.2f}, SFMO {wm[1:].mean():.2f} +/- {wm[1:].std():.2f} "
+                      f"uN m, max {wm.max():.2f}", flush=True)
+                xs.append(float(lab.split()[0]))
+                ms.append(wm[1:].mean())
+                sds.append(wm[1:].std())
+            summary[n] = (xs, ms, sds)
             ax.set_ylabel(r"M [$\mu$N m]")
-            ax.set_title(f"1 N, +/-{n} r/min", fontsize=9)
-            ax.legend(fontsize=7)
-        axs[-1].set_xlabel("time [s]")
+            ax.set_title(f"1 N, +/-{n} r/min: total friction moment M (peak-hold)", fontsize=9)
+            ax.legend(fontsize=7, ncol=5)
+        axs[1].set_xlabel("time [s]")
+        for n, (xs, ms, sds) in summary.items():
+            axs[2].errorbar(xs, ms, yerr=sds, marker="o", capsize=3, label=f"+/-{n} r/min")
+        axs[2].set_xlabel(f"{label} [mm]")
+        axs[2].set_ylabel(r"SFMO [$\mu$N m]" + "\n(mean +/- sd of window maxima)")
+        axs[2].legend(fontsize=8)
         fig.savefig(out / fname, dpi=110)
     return rows
 
