@@ -387,3 +387,16 @@ def test_projection_reading_is_twice_the_spin_power(Fa, Fr):
     b = sp.solve_ball(states[0], 9.525e-3, 46e-3)
     assert abs(b.spin_moment[0]) == pytest.approx(abs(b.spin_moment[1]), rel=1e-6)
     assert abs(b.spin_speed[0] + b.spin_speed[1]) == pytest.approx(math.sin(states[0].alpha[0]), rel=1e-9)
+
+
+def test_regression_dgbb_friction_5000rpm():
+    """REGRESSION (our own earlier output, not a validation): tests/data/regression_dgbb_friction.csv."""
+    with open(DATA / "regression_dgbb_friction.csv") as fh:
+        rows = list(csv.DictReader(line for line in fh if not line.startswith("#")))
+    names = {"spinning": "spinning_torque", "rotation_sliding": "rotation_sliding_torque",
+             "orbital_sliding": "orbital_sliding_torque", "sliding": "sliding_torque",
+             "skf_sliding_catalogue": "skf_sliding_torque"}
+    for r in rows:
+        ds = friction_torque(_case(float(r["Fa_N"]), float(r["Fr_N"])), "5000rpm")
+        for col, var in names.items():
+            assert float(ds[var][0]) * 1e3 == pytest.approx(float(r[col]), rel=1e-4, abs=1e-5), (r["Fa_N"], r["Fr_N"], col)

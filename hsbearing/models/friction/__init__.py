@@ -305,6 +305,9 @@ def make_figures(outdir="docs/figures", speeds_rpm=None) -> list:
         for var, lab, st in (("sliding_torque", "$M_{sl}$ (seed 003 method)", "k-"), ("spinning_torque", "$M_s$ spinning", "C0-"),
                              ("rotation_sliding_torque", "$M_r$ ball rotation", "C1-"), ("orbital_sliding_torque", "$M_d$ orbital motion", "C2-")):
             ax.plot(rpm, ds[var].values * 1e3, st, label=lab)
+        if Fa > 0:  # the energy-consistent spin reading
+            alt, _ = run(Fa=Fa, Fr=Fr, **{"friction.spin_torque_reading": "power"})
+            ax.plot(rpm, alt["sliding_torque"].values * 1e3, "k-.", lw=1, label="$M_{sl}$ with spin as dissipated power")
         ax.plot(rpm, ds["skf_sliding_torque"].values * 1e3, "k--", label="SKF 2004 $M_{sl}$ (catalogue)")
         if Fr > 0:
             ax.plot(rpm, seed * 1e3, "k:", label="SKF $M_{sl}$ as read by seed 003")
