@@ -84,8 +84,7 @@ def parse_speeds(speeds, source: str = "--speeds") -> np.ndarray:
 def _require_dgbb(case):
     if case.system not in ("deep_groove", "angular_contact"):
         raise CaseError(case.source, "case.system", f"friction torque is for deep_groove (and angular_contact) cases, not {case.system!r}")
-    if case.operating.axial_load < 0:
-        raise CaseError(case.source, "operating.axial_load", "give the axial load as a magnitude (>= 0)")
+    # a radial ball bearing is symmetric: the sign of the axial load only mirrors the contact angles
 
 
 def contact_states(case, speed=None, source: str = "static", tilt: bool = True, centrifugal: bool = True):
