@@ -400,3 +400,24 @@ def test_regression_dgbb_friction_5000rpm():
         ds = friction_torque(_case(float(r["Fa_N"]), float(r["Fr_N"])), "5000rpm")
         for col, var in names.items():
             assert float(ds[var][0]) * 1e3 == pytest.approx(float(r[col]), rel=1e-4, abs=1e-5), (r["Fa_N"], r["Fr_N"], col)
+
+
+def test_axial_load_sign_mirrors():
+    """A radial ball bearing is symmetric: -F_a gives the same torques as +F_a."""
+    a = friction_torque(_case(500, 200), "5000rpm")
+    b = friction_torque(_case(-500, 200), "5000rpm")
+    for v in ("sliding_torque", "spinning_torque", "skf_sliding_torque"):
+        assert float(b[v][0]) == pytest.approx(float(a[v][0]), rel=1e-6)
+
+
+def test_quasistatic_contacts_centrifugal_raises_high_speed_torque():
+    """With the project's quasi-static solver (centrifugal force on) the outer contacts load up at
+    15000 r/min and M_sl rises above the static value; at 500 r/min the two agree (< 0.5 %)."""
+    quasistatic = pytest.importorskip("hsbearing.solvers.quasistatic")
+    if not hasattr(quasistatic, "solve_case"):
+        pytest.skip("quasi-static solver not available")
+    case = _case(500, 0, **{"friction.law": "coulomb"})
+    qs = friction_torque(case, "500,15000rpm", contacts="quasistatic")["sliding_torque"].values
+    st = friction_torque(case, "500,15000rpm")["sliding_torque"].values
+    assert qs[0] == pytest.approx(st[0], rel=5e-3)
+    assert qs[1] > st[1] * 1.005
