@@ -259,12 +259,15 @@ def _line_placement(P: Problem, q):
 def _solve_balls(P: Problem, q, X1, X2, tol, maxiter=60):
     """Damped Newton on every ball's 2x2 force balance (vectorised).  Returns X1, X2, state, free, iters."""
     Xl1, Xl2, free = _line_placement(P, q)
-    if X1 is None:
+    inertia = P.moving and (P.centrifugal or P.gyroscopic)
+    if X1 is None or not inertia:  # without ball inertia the collinear placement is exact
         X1, X2 = Xl1, Xl2
     X1 = np.where(free, Xl1, X1)
     X2 = np.where(free, Xl2, X2)
     h = 1e-7 * P.D
     st = _ball_state(P, X1, X2, q, free)
+    if not inertia:  # exact static solution: nothing to iterate
+        return X1, X2, st, free, 0
     # a ball touching neither race (zero Jacobian) restarts from the placement
     lost = (~free) & (st["Qi"] <= 0) & (st["Qo"] <= 0)
     if np.any(lost):
@@ -273,18 +276,19 @@ def _solve_balls(P: Problem, q, X1, X2, tol, maxiter=60):
         st = _ball_state(P, X1, X2, q, free)
     res = np.where(free, 0.0, st["res"])
     nrm = np.max(np.abs(res), axis=0)
+    # per-ball tolerance: absolute, or round-off level of the ball's own forces
+    tol = tol + 1e-13 * (st["Qi"] + st["Qo"] + np.abs(st["Fc"]))
     it = 0
     step_cap = 0.05 * P.D
     while np.any(nrm > tol) and it < maxiter:
         it += 1
         act = nrm > tol
         J = np.empty((P.Z, 2, 2))
-        for k in range(2):
+        for k in range(2):  # forward differences: the Newton step only needs a few digits
             dX1 = h if k == 0 else 0.0
             dX2 = h if k == 1 else 0.0
-            rp = _ball_state(P, X1 + dX1, X2 + dX2, q, free)["res"]
-            rm = _ball_state(P, X1 - dX1, X2 - dX2, q, free)["res"]
-            J[:, :, k] = ((rp - rm) / (2 * h)).T
+            rp = np.where(free, 0.0, _ball_state(P, X1 + dX1, X2 + dX2, q, free)["res"])
+            J[:, :, k] = ((rp - res) / h).T
         det = J[:, 0, 0] * J[:, 1, 1] - J[:, 0, 1] * J[:, 1, 0]
         ok = act & (np.abs(det) > 0)
         safe_det = np.where(ok, det, 1.0)
@@ -428,13 +432,23 @@ def _initial_ring_guess(P: Problem) -> np.ndarray:
     return q
 
 
-def _newton_ring(ring: _Ring, q, tol, maxiter=40):
-    """Damped Newton on the ring equations (scaled); returns q and the last residual."""
+def _newton_ring(ring: _Ring, q, tol, maxiter=30):
+    """Damped Newton on the ring equations (scaled); returns q and the last residual.
+
+    Stops early when a step cannot reduce the residual (line search exhausted)
+    or when five iterations gain less than a factor 2 -- a stuck start is left
+    to the next route of :func:`solve` instead of burning evaluations.
+    """
     a = ring.act
     R, (X1, X2, st, free) = ring.residual(q)
+    history = []
+    target = 1e-3 * tol  # one step past the tolerance costs little and leaves margin (quadratic convergence)
     for _ in range(maxiter):
         rn = np.max(np.abs(R[a] / ring.rs[a]))
-        if rn < tol:
+        history.append(rn)
+        if rn < target or (rn < tol and len(history) > 1 and rn > 0.1 * history[-2]):
+            break
+        if len(history) > 5 and history[-1] > 0.5 * history[-6]:
             break
         J = ring.jacobian(q, X1, X2, free)[np.ix_(a, a)]
         Js = J * ring.xs[a][None, :] / ring.rs[a][:, None]
@@ -444,59 +458,141 @@ def _newton_ring(ring: _Ring, q, tol, maxiter=40):
             break
         dq = np.zeros(5)
         dq[a] = dz * ring.xs[a]
-        t = 1.0
-        for _ in range(25):
+        t, improved = 1.0, False
+        for _ in range(12):
             qn = q + t * dq
             X1s, X2s = ring.X1, ring.X2
             Rn, pack = ring.residual(qn)
-            if np.max(np.abs(Rn[a] / ring.rs[a])) < rn or t < 1e-6:
+            if np.max(np.abs(Rn[a] / ring.rs[a])) < rn:
+                improved = True
                 break
             ring.X1, ring.X2 = X1s, X2s
             t *= 0.5
+        if not improved:
+            break
         q, R, (X1, X2, st, free) = qn, Rn, pack
     return q, R
 
 
-def solve(P: Problem, *, initial=None, tol=1e-10, maxfev=400) -> QuasiStaticSolution:
+def solve(P: Problem, *, initial=None, tol=1e-10, maxfev=200) -> QuasiStaticSolution:
     """Solve the quasi-static equilibrium of problem ``P``.
 
     initial : a :class:`QuasiStaticSolution` or a Dataset written by
-        :func:`to_dataset` to continue from (speed sweeps); otherwise the
-        static rigid-ring estimate, and for a moving bearing the static
-        solution first, then speed continuation if needed.
+        :func:`to_dataset` to continue from (speed sweeps).  Without it (or
+        if it fails) the default route: the static problem first (rigid-ring
+        estimate; then a search along the load direction; then load
+        continuation), and for a moving bearing the high-speed problem from
+        the static solution (then speed continuation).
     tol : ring residual tolerance relative to the load scale.
 
-    Raises :class:`SolverError` naming the residual when it does not converge.
+    Raises :class:`SolverError` naming the residual (with the partial result)
+    when every route fails.
     """
     t0 = time.perf_counter()
+    stats = {"ring_evaluations": 0, "jacobian_evaluations": 0, "continuation_steps": 0, "start": ""}
     q0, X1, X2 = _unpack_initial(P, initial)
-    stats = {"ring_evaluations": 0, "jacobian_evaluations": 0, "continuation_steps": 0}
-    if q0 is None and P.moving and (P.centrifugal or P.gyroscopic):
-        static = solve(replace(P, centrifugal=False, gyroscopic=False), tol=tol, maxfev=maxfev)
-        q0, X1, X2 = static.q, static.X1, static.X2
-        stats["ring_evaluations"] += static.stats["ring_evaluations"]
-        stats["jacobian_evaluations"] += static.stats["jacobian_evaluations"]
-    if q0 is None:
-        q0 = _initial_ring_guess(P)
-    try:
-        sol = _solve_from(P, q0, X1, X2, tol, maxfev, stats)
-    except SolverError:
-        if not (P.moving and (P.centrifugal or P.gyroscopic)):
-            raise
-        sol = None
-    if sol is None or sol.residual_norm > tol:
-        # continuation in speed from the static state
-        static = solve(replace(P, centrifugal=False, gyroscopic=False), tol=tol, maxfev=maxfev)
-        q, X1, X2 = static.q, static.X1, static.X2
-        for f in np.linspace(0.25, 1.0, 4):
-            Pk = replace(P, omega_i=P.omega_i * f, omega_o=P.omega_o * f)
-            sol = _solve_from(Pk, q, X1, X2, tol, maxfev, stats)
-            q, X1, X2 = sol.q, sol.X1, sol.X2
-            stats["continuation_steps"] += 1
-        sol.problem = P
+    sol, err = None, None
+    if q0 is not None:
+        try:
+            sol = _solve_from(P, q0, X1, X2, tol, maxfev, stats)
+            stats["start"] = "initial"
+        except SolverError as exc:
+            err = exc
+    if sol is None:
+        try:
+            sol = _solve_default(P, tol, maxfev, stats)
+        except SolverError as exc:
+            raise exc if err is None or exc.partial is not None else err
+    sol.problem = P
     sol.stats.update(stats)
     sol.stats["wall_time_s"] = time.perf_counter() - t0
     return sol
+
+
+def _solve_default(P: Problem, tol, maxfev, stats) -> QuasiStaticSolution:
+    inertia = P.moving and (P.centrifugal or P.gyroscopic)
+    static_P = replace(P, centrifugal=False, gyroscopic=False) if inertia else P
+    static = _solve_static(static_P, tol, maxfev, stats)
+    if not inertia:
+        return static
+    try:
+        sol = _solve_from(P, static.q, static.X1, static.X2, tol, maxfev, stats)
+        stats["start"] += " > speed"
+        return sol
+    except SolverError:
+        pass
+    q, X1, X2 = static.q, static.X1, static.X2
+    for f in np.linspace(0.125, 1.0, 8):  # continuation in speed from the static state
+        sol = _solve_from(replace(P, omega_i=P.omega_i * f, omega_o=P.omega_o * f), q, X1, X2, tol, maxfev, stats)
+        q, X1, X2 = sol.q, sol.X1, sol.X2
+        stats["continuation_steps"] += 1
+    stats["start"] += " > speed continuation"
+    return sol
+
+
+def _solve_static(P: Problem, tol, maxfev, stats) -> QuasiStaticSolution:
+    """Static problem: rigid-ring estimate, then load-direction search, then load continuation."""
+    try:
+        sol = _solve_from(P, _initial_ring_guess(P), None, None, tol, maxfev, stats)
+        stats["start"] = "rigid-ring estimate"
+        return sol
+    except SolverError as exc:
+        first = exc
+    qd = _load_direction_guess(P)
+    try:
+        sol = _solve_from(P, qd, None, None, tol, maxfev, stats)
+        stats["start"] = "load-direction search"
+        return sol
+    except SolverError:
+        pass
+    q, X1, X2 = qd, None, None
+    try:
+        for f in np.linspace(0.125, 1.0, 8):  # load continuation
+            sol = _solve_from(replace(P, loads=P.loads * f), q, X1, X2, tol, maxfev, stats)
+            q, X1, X2 = sol.q, sol.X1, sol.X2
+            stats["continuation_steps"] += 1
+    except SolverError:
+        raise first from None
+    stats["start"] = "load continuation"
+    return sol
+
+
+def _load_direction_guess(P: Problem) -> np.ndarray:
+    """Ring position along the generalised load direction where the ball reaction balances the load.
+
+    q(s) = q_b + s d with d = (F_x, F_y, F_z, M_y/R^2, M_z/R^2) / |.| (R = d_m/2, so that a
+    tilt moves the groove centres like a translation), q_b the axial centring;
+    bisection on s of d . W (F + reaction(q(s))) = 0 (W weights moments by 1/R).  Brings a
+    ring that starts without any contact (clearance) into the loaded state.
+    """
+    R = 0.5 * P.dm
+    Fx, Fy, Fz, My, Mz = P.loads
+    d = np.array([Fx, Fy, Fz, My / R**2, Mz / R**2])
+    trans = np.hypot(np.hypot(d[0], d[1]), d[2])
+    norm = math.hypot(trans, R * math.hypot(d[3], d[4]))
+    if norm == 0:
+        return _initial_ring_guess(P)
+    d = d / norm
+    qb = np.zeros(5)
+    qb[0] = -P.A1_0 if Fx == 0 else 0.0
+    W = np.array([1.0, 1.0, 1.0, 1.0 / R, 1.0 / R])
+
+    def g(sv):
+        q = qb + sv * d
+        X1, X2, st, free, _ = _solve_balls(P, q, None, None, 1e-13 * P.load_scale)
+        R_ = P.loads + _ring_contributions(P, st, q).sum(axis=1)
+        return float(np.dot(d * W, R_))
+
+    lo, hi = 0.0, 1e-7
+    while g(hi) > 0 and hi < 0.5 * P.D:
+        lo, hi = hi, 2.0 * hi
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        if g(mid) > 0:
+            lo = mid
+        else:
+            hi = mid
+    return qb + hi * d
 
 
 def _solve_from(P, q0, X1, X2, tol, maxfev, stats):
@@ -521,14 +617,24 @@ def _solve_from(P, q0, X1, X2, tol, maxfev, stats):
         X1, X2, st, free = ring.balls(q)
         return ring.jacobian(q, X1, X2, free)[np.ix_(a, a)] * scale[None, :] / ring.rs[a][:, None]
 
+    # damped Newton with the implicit-function Jacobian first (cheap when the start is good),
+    # Powell's hybrid method from the better of the two points if that stalls
     R0, _ = ring.residual(q0)
+    r0 = np.max(np.abs(R0[a] / ring.rs[a]))
     q = q0
-    if np.max(np.abs(R0[a] / ring.rs[a])) > tol:
-        with np.errstate(all="ignore"):
-            res = optimize.root(fun, q0[a] / scale, jac=jac, method="hybr", options={"maxfev": maxfev, "xtol": 1e-14})
-        if np.all(np.isfinite(res.x)):
-            q = full(res.x)
-        q, _ = _newton_ring(ring, q, tol)
+    if r0 > tol:
+        X1s, X2s = ring.X1, ring.X2
+        qn, Rn = _newton_ring(ring, q0, tol)
+        rn_ = np.max(np.abs(Rn[a] / ring.rs[a])) if np.all(np.isfinite(Rn)) else np.inf
+        q = qn if rn_ < r0 else q0
+        if rn_ > tol:
+            if not rn_ < r0:
+                ring.X1, ring.X2 = X1s, X2s
+            with np.errstate(all="ignore"):
+                res = optimize.root(fun, q[a] / scale, jac=jac, method="hybr", options={"maxfev": maxfev, "xtol": 1e-14})
+            if np.all(np.isfinite(res.x)):
+                q = full(res.x)
+            q, _ = _newton_ring(ring, q, tol)
     R, (X1, X2, st, free) = ring.residual(q)
     rn = float(np.max(np.abs(R[a] / ring.rs[a])))
     J = ring.jacobian(q, X1, X2, free)
@@ -544,9 +650,14 @@ def _solve_from(P, q0, X1, X2, tol, maxfev, stats):
             ds = to_dataset(sol, status="failed")
         except Exception:  # pragma: no cover - the partial result is best effort
             pass
+        hint = ""
+        Fx, My, Mz = P.loads[0], P.loads[3], P.loads[4]
+        if not P.aligned and (Fx <= 0 or math.hypot(My, Mz) > Fx * 0.5 * P.dm):
+            hint = ("; an angular-contact bearing needs an axial load F_x > 0 in its contact direction, and a "
+                    "tilting moment below about F_x d_m/2: this load may have no equilibrium")
         raise SolverError(
             f"quasi-static equilibrium did not converge: ring residual max|R|/F = {rn:.3e} "
-            f"(tolerance {tol:.1e}; R = {np.array2string(R, precision=4)} [N, N m])", partial=ds)
+            f"(tolerance {tol:.1e}; R = {np.array2string(R, precision=4)} [N, N m]){hint}", partial=ds)
     return sol
 
 
