@@ -289,6 +289,35 @@ def test_too_few_points_is_undetermined():
     assert classify(np.full((10, 2), np.nan))[0] == "undetermined"
 
 
+def test_scattered_groups_and_rings_around_a_period_2_orbit():
+    """Irregular scatter around 2 groups -> chaos ("disorderly"); small rings around the 2 points -> quasi-periodic."""
+    rng = np.random.default_rng(5)
+    base = np.tile([[1.0, 0.0], [-1.0, 0.2]], (35, 1))
+    scattered = base + 0.06 * rng.standard_normal(base.shape)  # spread ~ 8 % of the orbit > tol 2 %
+    label, conf, det = classify(scattered, scale=[2.4, 2.4])
+    assert label == "chaos" and det["groups"] == 2 and det["local_thickness"] > 0.45 and conf <= 0.5, det
+    th = 2 * np.pi * 0.618 * np.arange(70)
+    rings = base + 0.15 * np.column_stack([np.cos(th), np.sin(th)])
+    label, conf, det = classify(rings, scale=[2.4, 2.4])
+    assert label == "quasi-periodic" and det["local_thickness"] < 0.3, det
+
+
+def test_banded_logistic_chaos():
+    # r = 3.6: two-band chaotic attractor (Lyapunov ~0.18 per iteration)
+    label, conf, det = classify(logistic_points(3.6, n=300))
+    assert label == "chaos", det
+
+
+def test_local_thickness_curve_vs_cloud():
+    from hsbearing.analysis.classify import local_thickness
+
+    rng = np.random.default_rng(2)
+    for n in (50, 200):
+        th = 2 * np.pi * rng.uniform(size=n)
+        assert local_thickness(np.column_stack([np.cos(th), 0.5 * np.sin(th)])) < 0.15
+        assert local_thickness(rng.standard_normal((n, 2))) > 0.5
+
+
 def test_zero_one_test_limits():
     rng = np.random.default_rng(0)
     n = np.arange(1000)

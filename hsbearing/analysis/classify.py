@@ -6,7 +6,7 @@ The criteria (thresholds justified in docs/analysis.md):
    peak-to-peak extent of the attractor in that coordinate (``scale``; from
    the continuous orbit ``signal`` when given, else from the points).
 2. **Periodicity (cluster test).**  The smallest k (1 <= k <= ``kmax``, at
-   least 3 points per cluster) such that every point of each residue class
+   least 4 points per cluster) such that every point of each residue class
    {p_r, p_{r+k}, p_{r+2k}, ...} lies within ``tol`` of the class median ->
    ``"1 period"`` / ``"k periods"``.  Points that repeat in order after k
    sections are exactly a period-k orbit of the section map; a slow drift
@@ -16,10 +16,12 @@ The criteria (thresholds justified in docs/analysis.md):
    with reduced confidence.
 3. **Aperiodic sections** (at least ``n_min_aperiodic`` points):
    the largest Lyapunov exponent of the section map [2] > ``lyap_threshold``
-   (0.15 per section) -> ``"chaos"``; else a correlation dimension [3]
-   > ``d2_cloud`` (1.6: the points fill an area, the "disorderly" section of
-   seed 004) -> ``"chaos"`` with confidence 0.4; else (points on a curve, no
-   divergence) -> ``"quasi-periodic"``.  With at least ``n_01`` (400) points
+   (0.15 per section) -> ``"chaos"``; else the median local thickness [4]
+   (smaller/larger principal axis of neighbourhoods of max(6, n/10) points)
+   > ``thickness_threshold`` (0.45: an irregular scatter, neither points nor
+   a curve -- the "disorderly" section of seed 004) -> ``"chaos"`` with
+   confidence 0.4 (0.5 if the correlation dimension [3] also exceeds 1.6);
+   else (points on curves, no divergence) -> ``"quasi-periodic"``.  With at least ``n_01`` (400) points
    the Gottwald-Melbourne 0-1 test [1] (K > 0.5 chaotic) is a second opinion
    that raises or lowers the confidence; on shorter series it reads
    quasi-periodic sections as chaotic (measured, docs/analysis.md), so it is
@@ -41,6 +43,9 @@ References
     (1993) 117-134, Eqs. 5-8 (mean log divergence of nearest neighbours).
 [3] Grassberger P., Procaccia I., "Characterization of strange attractors",
     Phys. Rev. Lett. 50 (1983) 346-349 (correlation sum C(r) ~ r^D2).
+[4] Fukunaga K., Olsen D. R., "An algorithm for finding intrinsic
+    dimensionality of data", IEEE Trans. Computers C-20 (1971) 176-183 (local
+    principal components).
 """
 
 from __future__ import annotations
@@ -59,6 +64,8 @@ __all__ = [
     "lyapunov_exponent",
     "correlation_dimension",
     "closed_curve_ratio",
+    "local_thickness",
+    "scattered_groups",
 ]
 
 #: Closed vocabulary of the labels (``"k periods"`` stands for any k >= 2).
@@ -71,7 +78,8 @@ DEFAULTS = dict(
     n_min=6,  # fewest section points for any label
     n_min_aperiodic=40,  # fewest points to separate quasi-periodic from chaos
     lyap_threshold=0.15,  # largest Lyapunov exponent per section > 0.15: chaos
-    d2_cloud=1.6,  # correlation dimension above which the section is a cloud, not a curve
+    thickness_threshold=0.45,  # median local thickness above which the section is a cloud, not curves
+    d2_cloud=1.6,  # correlation dimension above which a cloud is called area-filling (confidence only)
     n_01=400,  # fewest points for the 0-1 test to count (false "chaos" below, see docs/analysis.md)
     k01_threshold=0.5,  # 0-1 test: K > 0.5 chaotic
 )
@@ -106,27 +114,71 @@ def _normalise(points, signal=None, scale=None) -> np.ndarray:
     return (P - P.mean(axis=0)) / scale
 
 
-def periodicity(Q, tol: float = DEFAULTS["tol"], kmax: int = DEFAULTS["kmax"], min_per_cluster: int = 3):
+def _class_spread(Q, k: int) -> tuple[float, np.ndarray]:
+    """Largest distance of a point from the median of its residue class mod k, and the k class medians."""
+    meds = np.array([np.median(Q[r::k], axis=0) for r in range(k)])
+    spread = max(float(np.max(np.linalg.norm(Q[r::k] - meds[r], axis=1))) for r in range(k))
+    return spread, meds
+
+
+def periodicity(Q, tol: float = DEFAULTS["tol"], kmax: int = DEFAULTS["kmax"], min_per_cluster: int = 4):
     """Smallest period k of normalised section points ``Q`` (cluster test), or None.
 
     Returns ``(k, spread)`` where ``spread`` is the largest distance of a point
     from the median of its residue class (points r, r+k, r+2k, ...), or
-    ``(None, best_spread)``.
+    ``(None, best_spread)`` with the smallest such spread over the k tried.
     """
     Q = np.asarray(Q, dtype=float)
     n = len(Q)
     best = np.inf
     for k in range(1, min(kmax, n // min_per_cluster) + 1):
-        spread = 0.0
-        for r in range(k):
-            c = Q[r::k]
-            spread = max(spread, float(np.max(np.linalg.norm(c - np.median(c, axis=0), axis=1))))
-            if spread > tol:
-                break
+        spread, _ = _class_spread(Q, k)
         best = min(best, spread)
         if spread <= tol:
             return k, spread
     return None, best
+
+
+def scattered_groups(Q, kmax: int = DEFAULTS["kmax"], separation: float = 3.0, min_per_cluster: int = 3):
+    """Smallest k >= 2 whose residue classes form separated groups, or None.
+
+    Groups are separated when the smallest distance between class medians is
+    at least ``separation`` times the largest class spread.  Used only to word
+    the reason of an irregular section ("scatter around k groups").
+    """
+    Q = np.asarray(Q, dtype=float)
+    for k in range(2, min(kmax, len(Q) // min_per_cluster) + 1):
+        spread, meds = _class_spread(Q, k)
+        d = np.linalg.norm(meds[:, None, :] - meds[None, :, :], axis=-1)[np.triu_indices(k, 1)]
+        if d.min() >= separation * spread:
+            return k, spread
+    return None
+
+
+def local_thickness(Q, m: int | None = None, n_max: int = 1500) -> float:
+    """Median local thickness of a point set: smaller / larger principal axis of each point's neighbourhood.
+
+    Local principal-component estimate of the intrinsic dimension (Fukunaga &
+    Olsen [4]): each point and its ``m`` nearest neighbours (default
+    max(6, n/10), so the neighbourhood covers a fixed share of the set) are
+    reduced to their singular values s_1 >= s_2; the median of s_2 / s_1 is
+    about 0 for points on curves (a closed invariant curve, arcs, the logistic
+    parabola) and about 0.6-0.8 for a scattered cloud.
+    """
+    Q = np.asarray(Q, dtype=float)[-n_max:]
+    n = len(Q)
+    if n < 8 or Q.shape[1] < 2:
+        return float("nan")
+    m = m or max(6, int(round(0.1 * n)))
+    m = min(m, n - 1)
+    d2 = np.sum((Q[:, None, :] - Q[None, :, :]) ** 2, axis=-1)
+    idx = np.argsort(d2, axis=1)[:, : m + 1]
+    N = Q[idx]  # (n, m + 1, d)
+    N = N - N.mean(axis=1, keepdims=True)
+    sv = np.linalg.svd(N, compute_uv=False)  # (n, d), descending
+    with np.errstate(invalid="ignore", divide="ignore"):
+        ratio = np.where(sv[:, 0] > 0, sv[:, 1] / sv[:, 0], 0.0)
+    return float(np.median(ratio))
 
 
 def zero_one_test(x, n_c: int = 100, seed: int = 0, n_max: int = 2000) -> float:
@@ -261,7 +313,8 @@ def closed_curve_ratio(Q) -> float:
 
 def classify(points, signal=None, *, scale=None, tol=DEFAULTS["tol"], kmax=DEFAULTS["kmax"],
              n_min=DEFAULTS["n_min"], n_min_aperiodic=DEFAULTS["n_min_aperiodic"],
-             lyap_threshold=DEFAULTS["lyap_threshold"], d2_cloud=DEFAULTS["d2_cloud"], n_01=DEFAULTS["n_01"],
+             lyap_threshold=DEFAULTS["lyap_threshold"], thickness_threshold=DEFAULTS["thickness_threshold"],
+             d2_cloud=DEFAULTS["d2_cloud"], n_01=DEFAULTS["n_01"],
              k01_threshold=DEFAULTS["k01_threshold"], seed=0):
     """Classify a Poincare section (criteria in the module docstring).
 
@@ -294,7 +347,8 @@ def classify(points, signal=None, *, scale=None, tol=DEFAULTS["tol"], kmax=DEFAU
     Q = _normalise(points, signal, scale)
     n = len(Q)
     det: dict = {"n_points": n, "tol": tol, "period": None, "spread": None, "k01": None, "lyapunov": None,
-                 "correlation_dimension": None, "closed_curve_ratio": None, "reason": ""}
+                 "correlation_dimension": None, "local_thickness": None, "closed_curve_ratio": None, "groups": None,
+                 "reason": ""}
     if n < n_min:
         det["reason"] = f"only {n} Poincare section points (need >= {n_min}); simulate longer"
         return "undetermined", 0.0, det
@@ -322,26 +376,32 @@ def classify(points, signal=None, *, scale=None, tol=DEFAULTS["tol"], kmax=DEFAU
         return "undetermined", 0.0, det
     lam = lyapunov_exponent(Q)
     D2 = correlation_dimension(Q)
+    tau = local_thickness(Q)
     K = zero_one_test(Q[:, 0], seed=seed) if n >= n_01 else float("nan")
-    det.update(k01=K, lyapunov=lam, correlation_dimension=D2)
-    if not np.isfinite(lam):
-        det["reason"] = "aperiodic, but the Lyapunov exponent could not be estimated"
+    det.update(k01=K, lyapunov=lam, correlation_dimension=D2, local_thickness=tau)
+    if not np.isfinite(lam) or not np.isfinite(tau):
+        det["reason"] = "aperiodic, but the Lyapunov exponent or the local thickness could not be estimated"
         return "undetermined", 0.0, det
     if lam > lyap_threshold:  # exponential divergence of neighbouring section points
         label = "chaos"
         conf = 0.5 + 0.5 * min(1.0, (lam - lyap_threshold) / 0.2)
         det["reason"] = f"aperiodic, largest Lyapunov exponent {lam:.3g}/section > {lyap_threshold}"
-    elif np.isfinite(D2) and D2 > d2_cloud:  # points fill an area: the "disorderly" section of seed 004
+    elif tau > thickness_threshold:  # irregular scatter: neither points nor a curve (the seed's "disorderly" map)
         label = "chaos"
-        conf = 0.4
-        det["reason"] = (f"aperiodic, points fill an area (correlation dimension {D2:.2f} > {d2_cloud}) without "
-                         f"measurable divergence (Lyapunov {lam:.3g}/section): disorderly section; could also be "
-                         "measurement noise or a higher torus")
+        conf = 0.4 + (0.1 if np.isfinite(D2) and D2 > d2_cloud else 0.0)
+        groups = scattered_groups(Q, kmax)
+        det["groups"] = groups[0] if groups else None
+        where = (f"around {groups[0]} separated groups (spread {100 * groups[1]:.1f} % of the orbit, periodic tol "
+                 f"{100 * tol:g} %)") if groups else f"(spread {100 * spread:.1f} % of the orbit at best)"
+        det["reason"] = (f"aperiodic, irregular scatter {where}: local thickness {tau:.2f} > {thickness_threshold}, "
+                         f"no measurable divergence (Lyapunov {lam:.3g}/section); a disorderly section, which "
+                         "measurement-like noise would also give")
     else:
         label = "quasi-periodic"
         conf = 0.5 + 0.5 * (1.0 - min(max(lam, 0.0), lyap_threshold) / lyap_threshold)
-        det["reason"] = (f"aperiodic, points on a curve (correlation dimension {D2:.2f}), no divergence "
-                         f"(Lyapunov {lam:.3g}/section <= {lyap_threshold})")
+        conf *= 1.0 - 0.5 * tau / thickness_threshold
+        det["reason"] = (f"aperiodic, points on a curve (local thickness {tau:.2f}, correlation dimension {D2:.2f}), "
+                         f"no divergence (Lyapunov {lam:.3g}/section <= {lyap_threshold})")
     conf *= min(1.0, math.sqrt(n / 100.0))  # fewer than 100 points: less confidence
     if np.isfinite(K):
         if (K > k01_threshold) == (label == "chaos"):
