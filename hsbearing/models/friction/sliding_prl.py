@@ -201,6 +201,7 @@ class BallFriction:
     prl: tuple[tuple[float, float], tuple[float, float]]  #: (c1, c2) per contact, nan if outside
     inner_ring_torque: float  #: torque of the friction on the inner ring about the axis per mu [N m]
     residual: float  #: max |equilibrium residual| / (Q D/2) at the solution
+    contact_powers: tuple = ((0.0, 0.0, 0.0), (0.0, 0.0, 0.0))  #: (spin, rotation, orbital) per contact (inner, outer) [N m per mu]
 
     @property
     def total(self) -> float:
@@ -448,6 +449,7 @@ def solve_ball(state: ContactState, D: float, dm: float, outer_speed_ratio: floa
     P_spin = P_rot = P_orb = 0.0
     m_s, w_s, F_y, prl = [0.0, 0.0], [0.0, 0.0], [0.0, 0.0], [(float("nan"),) * 2] * 2
     T_inner = 0.0
+    cpow = [(0.0, 0.0, 0.0), (0.0, 0.0, 0.0)]
     for k, c in enumerate(contacts):
         if c is None:
             continue
@@ -465,9 +467,11 @@ def solve_ball(state: ContactState, D: float, dm: float, outer_speed_ratio: floa
         v_spin = tang(ws * np.cross(n, r))  # spinning about the contact normal
         v_rot = tang(np.broadcast_to(v_c, r.shape))  # rigid slip of the ball at the contact centre
         v_orb = tang(np.cross(wBt - Omt, r))  # differential slip across the curved contact
-        P_spin += -float(np.sum(tau * v_spin))
-        P_rot += -float(np.sum(tau * v_rot))
-        P_orb += -float(np.sum(tau * v_orb))
+        cp = (-float(np.sum(tau * v_spin)), -float(np.sum(tau * v_rot)), -float(np.sum(tau * v_orb)))
+        cpow[k] = cp
+        P_spin += cp[0]
+        P_rot += cp[1]
+        P_orb += cp[2]
         m_s[k] = float(np.dot(np.cross(r, tau).sum(axis=0), n))
         w_s[k] = ws
         F_y[k] = float(tau[:, 1].sum())
@@ -479,6 +483,7 @@ def solve_ball(state: ContactState, D: float, dm: float, outer_speed_ratio: floa
         spin_power=P_spin, rotation_power=P_rot, orbital_power=P_orb,
         omega_ball=omega_B, omega_m=float(u[2]), spin_moment=tuple(m_s), spin_speed=tuple(w_s),
         friction_force=tuple(F_y), prl=tuple(prl), inner_ring_torque=T_inner, residual=res,
+        contact_powers=tuple(cpow),
     )
 
 
