@@ -419,10 +419,32 @@ def test_dataset_names_units_and_netcdf_roundtrip(fast7206, tmp_path):
     np.testing.assert_allclose(again.outer_contact_load.values, ds.outer_contact_load.values, rtol=1e-9)
 
 
-def test_bad_input_is_a_case_error():
+def test_friction_kinematics_uses_jones_criterion_per_ball():
+    """kinematics = "friction": Jones' raceway-control criterion chooses the controlling race of each ball.
+
+    Static, equal loads: the inner contact (larger a) controls; at 14000 r/min the heavier outer contact
+    controls; under a combined load the pattern is mixed and self-consistent.
+    """
     c = load_case("zhang2016", **{"simulation.kinematics": "friction"})
+    s = qs.solve_case(c, inner_speed=0.0)
+    assert np.all(s.ball_outer_race_control.values == 0)
+    f = qs.solve_case(c)
+    assert np.all(f.ball_outer_race_control.values == 1)
+    ref = qs.solve_case(load_case("zhang2016"))  # outer control everywhere -> the same solution
+    np.testing.assert_allclose(f.inner_contact_load.values, ref.inner_contact_load.values, rtol=1e-9)
+    m = qs.solve_case(c.with_overrides(**{"simulation.kinematics": "friction", "operating.radial_load": "2000 N"}))
+    ctrl = m.ball_outer_race_control.values
+    assert 0 < ctrl.sum() < ctrl.size
+    np.testing.assert_array_equal(ctrl, m.ball_jones_outer_control.values)
+    assert m.attrs["solver_race_control_converged"] == 1
+    # zero spin at each ball's controlling contact
+    sr = np.where(ctrl == 1, m.outer_spin_to_roll.values, m.inner_spin_to_roll.values)
+    np.testing.assert_allclose(sr, 0.0, atol=1e-12)
+
+
+def test_bad_input_is_a_case_error():
     with pytest.raises(CaseError, match="simulation.kinematics"):
-        qs.solve_case(c)
+        load_case("zhang2016", **{"simulation.kinematics": "rolling"})
     with pytest.raises(CaseError, match="case.system"):
         qs.solve_case(load_case("shan2010_wire_race"))
 

@@ -66,6 +66,8 @@ __all__ = [
     "gyroscopic_moment",
     "gyroscopic_friction",
     "race_control_kinematics",
+    "race_control_criterion",
+    "gyroscopic_split",
     "contact_spin_roll",
     "ball_equilibrium_residual",
     "inner_ring_reaction",
@@ -258,6 +260,8 @@ def race_control_kinematics(omega_i, omega_o, R_b, D, sin_ai, cos_ai, sin_ao, co
     ----------
     omega_i, omega_o : ring speeds about X [rad/s].
     R_b : radius of the ball-centre orbit [m].
+    control : ``"outer_race_control"``, ``"inner_race_control"`` or a boolean
+        array (True = outer control) per ball.
 
     Returns
     -------
@@ -291,21 +295,40 @@ def race_control_kinematics(omega_i, omega_o, R_b, D, sin_ai, cos_ai, sin_ao, co
     M[..., 1, 1] = h * sin_ai
     M[..., 1, 2] = rho_i
     rhs[..., 1] = omega_i * rho_i
-    if control == "outer_race_control":
-        # no spin at the outer contact: wx sin_ao + wy cos_ao - (omega_o - omega_m) sin_ao = 0
-        M[..., 2, 0] = sin_ao
-        M[..., 2, 1] = cos_ao
-        M[..., 2, 2] = sin_ao
-        rhs[..., 2] = omega_o * sin_ao
-    elif control == "inner_race_control":
-        M[..., 2, 0] = sin_ai
-        M[..., 2, 1] = cos_ai
-        M[..., 2, 2] = sin_ai
-        rhs[..., 2] = omega_i * sin_ai
+    if isinstance(control, str):
+        if control not in ("outer_race_control", "inner_race_control"):
+            raise ValueError(f"unknown race control {control!r} (outer_race_control, inner_race_control)")
+        outer = np.full(n, control == "outer_race_control")
     else:
-        raise ValueError(f"unknown race control {control!r} (outer_race_control, inner_race_control)")
+        outer = np.broadcast_to(np.asarray(control, dtype=bool), n)
+    # no spin at the controlling contact, e.g. outer: wx sin_ao + wy cos_ao - (omega_o - omega_m) sin_ao = 0
+    s_c = np.where(outer, sin_ao, sin_ai)
+    c_c = np.where(outer, cos_ao, cos_ai)
+    M[..., 2, 0] = s_c
+    M[..., 2, 1] = c_c
+    M[..., 2, 2] = s_c
+    rhs[..., 2] = np.where(outer, omega_o, omega_i) * s_c
     u = np.linalg.solve(M, rhs[..., None])[..., 0]
     return u[..., 2], u[..., 0], u[..., 1]
+
+
+def gyroscopic_split(outer_control):
+    """(lambda_i, lambda_o) per ball from the controlling race ([1] Eqs. 3.14-3.15, :data:`LAMBDA_SPLIT`)."""
+    oc = np.asarray(outer_control, dtype=bool)
+    return np.where(oc, 0.0, 1.0), np.where(oc, 2.0, 1.0)
+
+
+def race_control_criterion(Qi, a_i, E_i, Qo, a_o, E_o, alpha_i, alpha_o):
+    """Jones' raceway-control criterion: True where the outer raceway controls the ball.
+
+    Outer control when Q_o a_o E(e_o) cos(alpha_i - alpha_o) > Q_i a_i E(e_i)
+    ([2]; [3] Ch. 8, "raceway control").  Q a E is proportional to the largest
+    spinning friction moment a contact can transmit (3/8 mu Q a E for a
+    uniform friction coefficient): the race that can resist more spin
+    imposes pure rolling, the ball spins on the other.  a = semi-major axis
+    [m], E = complete elliptic integral of the second kind [-].
+    """
+    return Qo * a_o * E_o * np.cos(alpha_i - alpha_o) > Qi * a_i * E_i
 
 
 def contact_spin_roll(omega_x, omega_y, omega_m, omega_i, omega_o, sin_ai, cos_ai, sin_ao, cos_ao):

@@ -80,6 +80,10 @@ for _n, _d, _u, _l in [
     ("ball_center_axial", ("time", "ball"), "m", "ball-centre axial position from the plane of the unloaded ball centres"),
     ("ball_center_radial", ("time", "ball"), "m", "ball-centre distance from the bearing axis"),
     ("ball_centrifugal_force", ("time", "ball"), "N", "ball centrifugal force F_c = m R_b omega_m^2"),
+    ("ball_outer_race_control", ("time", "ball"), "1",
+     "controlling raceway used for the ball kinematics and the gyroscopic split: 1 outer, 0 inner"),
+    ("ball_jones_outer_control", ("time", "ball"), "1",
+     "Jones' raceway-control criterion Q_o a_o E_o cos(a_i - a_o) > Q_i a_i E_i at the solution: 1 outer, 0 inner"),
     ("ball_gyroscopic_moment", ("time", "ball"), "N*m",
      "gyroscopic moment M_g = dH/dt . e_t the contact friction supplies to the ball (magnitude J omega_R omega_m sin beta)"),
     ("inner_ring_radial_displacement_y", ("time",), "m", "inner-ring displacement along Y"),
@@ -124,6 +128,7 @@ class Problem:
     E2: float = 208e9
     nu2: float = 0.3
     aligned: bool = False  #: deep-groove layout (grooves in the mid-plane, clearance P_d)
+    outer_mask: tuple | None = None  #: per-ball outer control (kinematics "friction"); None = all outer
     fixed_tilt: bool = False  #: hold theta_y = theta_z = 0 (moments become reactions)
 
     @property
@@ -144,6 +149,13 @@ class Problem:
     @property
     def layout(self):
         return qp.groove_centre_layout(self.D, self.dm, self.fi, self.fo, self.alpha0, self.aligned)
+
+    @property
+    def outer_control(self) -> np.ndarray:
+        """Per-ball controlling race (True = outer) for the kinematics and the lambda split."""
+        if self.control == "friction":
+            return np.ones(self.Z, bool) if self.outer_mask is None else np.asarray(self.outer_mask, bool)
+        return np.full(self.Z, self.control == "outer_race_control")
 
     @property
     def moving(self) -> bool:
@@ -172,9 +184,9 @@ def build_problem(case, *, inner_speed=None, centrifugal=True, gyroscopic=True, 
     g = _geometry.derive(case)
     b, r = case.materials.ball, case.materials.races
     control = control or case.simulation.kinematics
-    if control not in qp.LAMBDA_SPLIT:
+    if control not in ("outer_race_control", "inner_race_control", "friction"):
         raise CaseError(case.source, "simulation.kinematics",
-                        f"{control!r} is not available in the quasi-static model (use outer_race_control or inner_race_control)")
+                        f"unknown kinematics {control!r} (outer_race_control, inner_race_control, friction)")
     stiff = _contact_stiffness(g.D, g.dm, g.fi, g.fo, b.elastic_modulus, b.poisson_ratio,
                                r.elastic_modulus, r.poisson_ratio)
     op = case.operating
@@ -185,7 +197,7 @@ def build_problem(case, *, inner_speed=None, centrifugal=True, gyroscopic=True, 
         psi=2.0 * np.pi * np.arange(g.Z) / g.Z,
         ball_mass=g.ball_mass, ball_inertia=g.ball_inertia, stiffness=stiff, loads=loads,
         omega_i=float(wi), omega_o=float(op.outer_speed), centrifugal=bool(centrifugal), gyroscopic=bool(gyroscopic),
-        control=control, lam=qp.LAMBDA_SPLIT[control],
+        control=control, lam=qp.LAMBDA_SPLIT.get(control, (float("nan"), float("nan"))),
         E1=b.elastic_modulus, nu1=b.poisson_ratio, E2=r.elastic_modulus, nu2=r.poisson_ratio,
         aligned=(case.system == "deep_groove"), fixed_tilt=bool(fixed_tilt),
     )
@@ -204,12 +216,13 @@ def _ball_state(P: Problem, X1, X2, q, free=None):
     _, _, x_o0, R_o = P.layout
     R_b = R_o + X2
     if P.moving:
-        wm, wx, wy = qp.race_control_kinematics(P.omega_i, P.omega_o, R_b, P.D, si, ci, so, co, P.control)
+        wm, wx, wy = qp.race_control_kinematics(P.omega_i, P.omega_o, R_b, P.D, si, ci, so, co, P.outer_control)
     else:
         wm = wx = wy = np.zeros_like(X1)
     Fc = qp.centrifugal_force(P.ball_mass, R_b, wm) if P.centrifugal else np.zeros_like(X1)
     Mg = qp.gyroscopic_moment(P.ball_inertia, wm, wy) if P.gyroscopic else np.zeros_like(X1)
-    Fi, Fo = qp.gyroscopic_friction(Mg, P.D, P.lam[0], P.lam[1])
+    lam_i, lam_o = qp.gyroscopic_split(P.outer_control)
+    Fi, Fo = qp.gyroscopic_friction(Mg, P.D, lam_i, lam_o)
     if free is not None and np.any(free):
         Fi = np.where(free, 0.0, Fi)
         Fo = np.where(free, 0.0, Fo)
@@ -475,6 +488,47 @@ def _newton_ring(ring: _Ring, q, tol, maxiter=30):
 
 
 def solve(P: Problem, *, initial=None, tol=1e-10, maxfev=200) -> QuasiStaticSolution:
+    """Solve the quasi-static equilibrium of problem ``P`` (see :func:`_solve_fixed_control`).
+
+    With ``kinematics = "friction"`` the controlling raceway of every ball is
+    chosen by Jones' criterion (:func:`qp.race_control_criterion`): start
+    with outer control, re-solve with the controls the criterion gives at the
+    solution, until they no longer change (at most 6 passes; a ball that
+    keeps flipping keeps its last control and the attribute
+    ``race_control_converged`` is 0).
+    """
+    if P.control != "friction":
+        return _solve_fixed_control(P, initial=initial, tol=tol, maxfev=maxfev)
+    mask = P.outer_control if P.outer_mask is None else np.asarray(P.outer_mask, bool)
+    sol, seen = initial, []
+    for it in range(6):
+        Pk = replace(P, outer_mask=tuple(bool(x) for x in mask))
+        sol = _solve_fixed_control(Pk, initial=sol, tol=tol, maxfev=maxfev)
+        new = _jones_mask(sol)
+        seen.append(tuple(mask))
+        if np.array_equal(new, mask):
+            sol.stats["race_control_passes"] = it + 1
+            sol.stats["race_control_converged"] = 1
+            return sol
+        mask = new
+        if tuple(mask) in seen:  # cycling between two control patterns
+            break
+    sol.stats["race_control_passes"] = len(seen)
+    sol.stats["race_control_converged"] = 0
+    return sol
+
+
+def _jones_mask(sol) -> np.ndarray:
+    """Jones' criterion evaluated at a solution (True = outer control)."""
+    P, st = sol.problem, sol.state
+    Rxi, Ryi, Rxo, Ryo = _contact_radii(P, st)
+    hi = hertz.point_contact(Rxi, Ryi, st["Qi"], P.E1, P.nu1, P.E2, P.nu2)
+    ho = hertz.point_contact(Rxo, Ryo, st["Qo"], P.E1, P.nu1, P.E2, P.nu2)
+    return qp.race_control_criterion(st["Qi"], hi.a, hi.second_kind, st["Qo"], ho.a, ho.second_kind,
+                                     np.arctan2(st["si"], st["ci"]), np.arctan2(st["so"], st["co"]))
+
+
+def _solve_fixed_control(P: Problem, *, initial=None, tol=1e-10, maxfev=200) -> QuasiStaticSolution:
     """Solve the quasi-static equilibrium of problem ``P``.
 
     initial : a :class:`QuasiStaticSolution` or a Dataset written by
@@ -697,7 +751,8 @@ def to_dataset(sol: QuasiStaticSolution, case=None, status: str = "ok") -> xr.Da
         wi, wo = P.omega_i, P.omega_o
     else:
         wi, wo = 1.0, 0.0
-        wm, wx, wy = qp.race_control_kinematics(wi, wo, st["R_b"], P.D, st["si"], st["ci"], st["so"], st["co"], P.control)
+        wm, wx, wy = qp.race_control_kinematics(wi, wo, st["R_b"], P.D, st["si"], st["ci"], st["so"], st["co"],
+                                                P.outer_control)
     spin_i, roll_i, spin_o, roll_o = qp.contact_spin_roll(wx, wy, wm, wi, wo, st["si"], st["ci"], st["so"], st["co"])
     with np.errstate(invalid="ignore", divide="ignore"):
         sr_i = np.where(roll_i != 0, spin_i / roll_i, 0.0)
@@ -730,6 +785,10 @@ def to_dataset(sol: QuasiStaticSolution, case=None, status: str = "ok") -> xr.Da
         "ball_center_axial": st["x_b"],
         "ball_center_radial": st["R_b"],
         "ball_centrifugal_force": st["Fc"],
+        "ball_outer_race_control": P.outer_control.astype(np.int8),
+        "ball_jones_outer_control": qp.race_control_criterion(
+            st["Qi"], hi.a, hi.second_kind, st["Qo"], ho.a, ho.second_kind,
+            np.arctan2(st["si"], st["ci"]), np.arctan2(st["so"], st["co"])).astype(np.int8),
         "ball_gyroscopic_moment": st["Mg"],
         "cage_speed": float(np.mean(st["wm"])),
         "inner_ring_axial_displacement": q[0],
@@ -748,7 +807,8 @@ def to_dataset(sol: QuasiStaticSolution, case=None, status: str = "ok") -> xr.Da
     attrs = dict(
         model="quasi-static Jones-Harris (hsbearing.solvers.quasistatic)",
         kinematics=P.control,
-        lambda_inner=P.lam[0], lambda_outer=P.lam[1],
+        lambda_inner=float(qp.gyroscopic_split(P.outer_control)[0].mean()),
+        lambda_outer=float(qp.gyroscopic_split(P.outer_control)[1].mean()),
         centrifugal=P.centrifugal, gyroscopic=P.gyroscopic,
         inner_speed=P.omega_i, outer_speed=P.omega_o,
         applied_loads=[float(x) for x in P.loads],
