@@ -167,6 +167,26 @@ def test_raceway_control_cage_speed(case):
         raceway_control_cage_speed(g, wi, 0.0, a, a, control="both")
 
 
+from hypothesis import given, settings, strategies as st  # noqa: E402
+
+_GEOM = derive(hsbearing.load_case("zhang2016"))
+
+
+@settings(max_examples=60, deadline=None)
+@given(s=st.floats(-0.5, 0.9), w=st.floats(1.0, 5000.0), wo=st.floats(-2000.0, 2000.0),
+       a=st.floats(0.0, 1.2))
+def test_slip_ratio_properties(s, w, wo, a):
+    """S_c of a cage at (1 - s) omega_c,th is s; omega_c,th is linear in the ring speeds."""
+    g = _GEOM
+    th = theoretical_cage_speed(g, w, wo, alpha=a)
+    if abs(th) > 1e-6:
+        assert cage_slip_ratio((1 - s) * th, th) == pytest.approx(s, abs=1e-9)
+    lin = theoretical_cage_speed(g, w, 0.0, alpha=a) + theoretical_cage_speed(g, 0.0, wo, alpha=a)
+    assert th == pytest.approx(lin, rel=1e-12, abs=1e-9)
+    # the cage turns between the two rings
+    assert min(w, wo) - 1e-9 <= th <= max(w, wo) + 1e-9
+
+
 def test_cage_slip_ratio_definition():
     assert cage_slip_ratio(97.0, 100.0) == pytest.approx(0.03)
     assert cage_slip_ratio(100.0, 100.0) == 0.0
@@ -220,6 +240,7 @@ def test_quasi_periodic_torus_section():
     assert label == "quasi-periodic", det
     assert det["k01"] < 0.2 and abs(det["lyapunov"]) < 0.05
     assert 0.8 < det["correlation_dimension"] < 1.3  # a closed invariant curve
+    assert det["rotation_number"] == pytest.approx(1 - rho, abs=1e-3)  # folded to [0, 0.5]
     assert det["closed_curve_ratio"] < 1.2
 
 
@@ -443,6 +464,14 @@ def test_annotate_labels_synthetic_cage_runs(case, kind, expected):
     assert ds.attrs["transient_discarded"] == pytest.approx(0.3 * float(ds.time[-1]))
     assert "cage revolution" in ds.attrs["poincare_section"]
     json.loads(ds.attrs["classification_details"])
+
+
+def test_rotation_number_matches_whirl_ratio(case):
+    """Quasi-periodic cage run: section rotation number = incommensurate/cage frequency ratio (folded)."""
+    ds = annotate(cage_run("quasi", case), case)
+    det = json.loads(ds.attrs["classification_details"])
+    rho = (math.sqrt(5) - 1) / 2
+    assert det["rotation_number"] == pytest.approx(min(rho, 1 - rho), abs=2e-3)
 
 
 def test_annotate_three_periods_and_noise(case):

@@ -66,6 +66,7 @@ __all__ = [
     "closed_curve_ratio",
     "local_thickness",
     "scattered_groups",
+    "rotation_number",
 ]
 
 #: Closed vocabulary of the labels (``"k periods"`` stands for any k >= 2).
@@ -311,6 +312,24 @@ def closed_curve_ratio(Q) -> float:
     return L / hull.area if hull.area > 0 else float("nan")  # 2-D hull: .area is the perimeter
 
 
+def rotation_number(Q) -> float:
+    """Mean rotation per section of points circling their centroid, folded to [0, 0.5] [turns].
+
+    The angle of each point about the centroid is unwrapped along the
+    sequence; the mean increment / 2 pi, taken modulo 1 and folded (rho and
+    1 - rho are the same rotation seen from the other side), is the rotation
+    number of a quasi-periodic section -- for the cage-revolution section of
+    a circular whirl, the whirl/cage speed ratio modulo 1, folded.
+    """
+    Q = np.asarray(Q, dtype=float)
+    if len(Q) < 3:
+        return float("nan")
+    c = Q.mean(axis=0)
+    ang = np.unwrap(np.arctan2(Q[:, 1] - c[1], Q[:, 0] - c[0]))
+    rho = (np.mean(np.diff(ang)) / (2 * np.pi)) % 1.0
+    return float(min(rho, 1.0 - rho))
+
+
 def classify(points, signal=None, *, scale=None, tol=DEFAULTS["tol"], kmax=DEFAULTS["kmax"],
              n_min=DEFAULTS["n_min"], n_min_aperiodic=DEFAULTS["n_min_aperiodic"],
              lyap_threshold=DEFAULTS["lyap_threshold"], thickness_threshold=DEFAULTS["thickness_threshold"],
@@ -348,6 +367,7 @@ def classify(points, signal=None, *, scale=None, tol=DEFAULTS["tol"], kmax=DEFAU
     n = len(Q)
     det: dict = {"n_points": n, "tol": tol, "period": None, "spread": None, "k01": None, "lyapunov": None,
                  "correlation_dimension": None, "local_thickness": None, "closed_curve_ratio": None, "groups": None,
+                 "rotation_number": None,
                  "reason": ""}
     if n < n_min:
         det["reason"] = f"only {n} Poincare section points (need >= {n_min}); simulate longer"
@@ -400,8 +420,10 @@ def classify(points, signal=None, *, scale=None, tol=DEFAULTS["tol"], kmax=DEFAU
         label = "quasi-periodic"
         conf = 0.5 + 0.5 * (1.0 - min(max(lam, 0.0), lyap_threshold) / lyap_threshold)
         conf *= 1.0 - 0.5 * tau / thickness_threshold
+        det["rotation_number"] = rotation_number(Q)
         det["reason"] = (f"aperiodic, points on a curve (local thickness {tau:.2f}, correlation dimension {D2:.2f}), "
-                         f"no divergence (Lyapunov {lam:.3g}/section <= {lyap_threshold})")
+                         f"no divergence (Lyapunov {lam:.3g}/section <= {lyap_threshold}); rotation number "
+                         f"{det['rotation_number']:.3f}")
     conf *= min(1.0, math.sqrt(n / 100.0))  # fewer than 100 points: less confidence
     if np.isfinite(K):
         if (K > k01_threshold) == (label == "chaos"):
