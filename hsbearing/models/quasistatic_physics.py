@@ -315,7 +315,8 @@ def race_control_kinematics(omega_i, omega_o, R_b, D, sin_ai, cos_ai, sin_ao, co
 def gyroscopic_split(outer_control):
     """(lambda_i, lambda_o) per ball from the controlling race ([1] Eqs. 3.14-3.15, :data:`LAMBDA_SPLIT`)."""
     oc = np.asarray(outer_control, dtype=bool)
-    return np.where(oc, 0.0, 1.0), np.where(oc, 2.0, 1.0)
+    (li_o, lo_o), (li_i, lo_i) = LAMBDA_SPLIT["outer_race_control"], LAMBDA_SPLIT["inner_race_control"]
+    return np.where(oc, li_o, li_i), np.where(oc, lo_o, lo_i)
 
 
 def race_control_criterion(Qi, a_i, E_i, Qo, a_o, E_o, alpha_i, alpha_o):

@@ -122,7 +122,6 @@ class Problem:
     centrifugal: bool = True
     gyroscopic: bool = True
     control: str = "outer_race_control"
-    lam: tuple = (0.0, 2.0)  #: (lambda_i, lambda_o)
     E1: float = 208e9
     nu1: float = 0.3
     E2: float = 208e9
@@ -197,7 +196,7 @@ def build_problem(case, *, inner_speed=None, centrifugal=True, gyroscopic=True, 
         psi=2.0 * np.pi * np.arange(g.Z) / g.Z,
         ball_mass=g.ball_mass, ball_inertia=g.ball_inertia, stiffness=stiff, loads=loads,
         omega_i=float(wi), omega_o=float(op.outer_speed), centrifugal=bool(centrifugal), gyroscopic=bool(gyroscopic),
-        control=control, lam=qp.LAMBDA_SPLIT.get(control, (float("nan"), float("nan"))),
+        control=control,
         E1=b.elastic_modulus, nu1=b.poisson_ratio, E2=r.elastic_modulus, nu2=r.poisson_ratio,
         aligned=(case.system == "deep_groove"), fixed_tilt=bool(fixed_tilt),
     )
