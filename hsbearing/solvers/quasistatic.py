@@ -9,18 +9,23 @@ kinematics) is in :mod:`hsbearing.models.quasistatic_physics`.
 Numerics (nested, all vectorised over balls):
 
 1. inner level -- for a given q every ball's 2x2 force balance is solved by a
-   damped Newton iteration, all balls at once (central-difference 2x2
-   Jacobians).  The starting point is the static, collinear placement of the
-   ball on the line between the groove centres with the two deflections
-   split so that Q_i = Q_o; at zero speed this placement *is* the exact
-   solution, so zero speed reproduces the static case exactly.  Balls that
-   cannot touch both races and feel no centrifugal force are placed on that
-   line with zero loads (no NaN, no singular Jacobian).
-2. outer level -- the 5 ring equations are solved by :func:`scipy.optimize.root`
-   (Powell hybrid) with the exact Jacobian of the nested problem obtained by
-   the implicit-function theorem from central differences; a damped Newton
-   polish brings the residual below 1e-10 of the applied load.  The same
-   Jacobian, negated, is the bearing stiffness matrix.
+   damped Newton iteration, all balls at once (forward-difference 2x2
+   Jacobians, per-ball backtracking).  The starting point is the static,
+   collinear placement of the ball on the line between the groove centres
+   with the two deflections split so that Q_i = Q_o; without ball inertia
+   this placement *is* the exact solution and nothing is iterated, so zero
+   speed reproduces the static case exactly.  Balls that cannot touch both
+   races and feel no centrifugal force stay on that line with zero loads (no
+   NaN, no singular Jacobian); at speed they are seated on the outer race.
+2. outer level -- the 5 ring equations are solved by a damped Newton method
+   with the exact Jacobian of the nested problem (implicit-function theorem,
+   central differences), with :func:`scipy.optimize.root` (Powell hybrid) as
+   the fallback when Newton stalls; residual below 1e-10 of the applied load.
+   The same Jacobian, negated, is the bearing stiffness matrix.
+3. routes -- static problem from the rigid-ring estimate, a load-direction
+   search or load continuation; at speed from the static solution, then
+   speed continuation (:func:`solve`).  ``kinematics = "friction"`` adds
+   passes choosing each ball's controlling race by Jones' criterion.
 
 Speed sweeps continue from the previous solution (``initial=``).
 """
