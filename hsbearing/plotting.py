@@ -233,9 +233,11 @@ def _plot_dynamic(ds, path: Path) -> Path:
     if lab:
         txt = lab if lab == "undetermined" or conf is None else f"{lab} (confidence {float(conf):.2f})"
         reason = ds.attrs.get("classification_reason", "")
-        if lab == "undetermined" and reason:
-            txt += "\n" + _wrap(reason, 60)
-        ax.text(0.02, 0.98, txt, transform=ax.transAxes, va="top", fontsize=9,
+        if reason:
+            short = reason.split("; 0-1 test")[0]
+            short = short if len(short) <= 300 else short[:297] + "..."
+            txt += "\n" + _wrap(short, 70)
+        ax.text(0.02, 0.98, txt, transform=ax.transAxes, va="top", fontsize=7.5,
                 bbox=dict(boxstyle="round", fc="white", ec="0.6", alpha=0.9))
     ax.grid(alpha=0.3)
 

@@ -411,11 +411,10 @@ def classify(points, signal=None, *, scale=None, tol=DEFAULTS["tol"], kmax=DEFAU
         conf = 0.4 + (0.1 if np.isfinite(D2) and D2 > d2_cloud else 0.0)
         groups = scattered_groups(Q, kmax)
         det["groups"] = groups[0] if groups else None
-        where = (f"around {groups[0]} separated groups (spread {100 * groups[1]:.1f} % of the orbit, periodic tol "
+        where = (f"around {groups[0]} separated groups (spread {100 * groups[1]:.1f} % of the orbit > tol "
                  f"{100 * tol:g} %)") if groups else f"(spread {100 * spread:.1f} % of the orbit at best)"
-        det["reason"] = (f"aperiodic, irregular scatter {where}: local thickness {tau:.2f} > {thickness_threshold}, "
-                         f"no measurable divergence (Lyapunov {lam:.3g}/section); a disorderly section, which "
-                         "measurement-like noise would also give")
+        det["reason"] = (f"aperiodic: irregular scatter {where}, local thickness {tau:.2f} > {thickness_threshold}, "
+                         f"Lyapunov {lam:.3g}/section (no measurable divergence)")
     else:
         label = "quasi-periodic"
         conf = 0.5 + 0.5 * (1.0 - min(max(lam, 0.0), lyap_threshold) / lyap_threshold)
