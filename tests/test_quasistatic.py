@@ -282,6 +282,32 @@ def test_ball_equations_in_harris_form(case7206, fast7206):
     assert 1.0 < np.max(np.abs(2 * Mg_h / D)) < 20.0
 
 
+def test_monolithic_solve_agrees_with_nested_solver(case7206):
+    """Independent numerics: all 5 + 2Z unknowns at once with scipy's hybrid method, from a perturbed start."""
+    from scipy.optimize import root
+
+    c = case7206.with_overrides(**{"operating.radial_load": "1500 N", "operating.moment_z": "3 N*m"})
+    P = qs.build_problem(c)
+    ref = qs.solve(P)
+    Z = P.Z
+    xs = np.r_[np.full(3, 1e-6), np.full(2, 1e-4), np.full(2 * Z, 1e-6)]
+
+    def F(z):
+        u = z * xs
+        q, X1, X2 = u[:5], u[5:5 + Z], u[5 + Z:]
+        st = qs._ball_state(P, X1, X2, q)
+        R = P.loads + qs._ring_contributions(P, st, q).sum(axis=1)
+        return np.r_[R[:3] / 1000, R[3:] / 20, st["res"].ravel() / 1000]
+
+    u0 = np.r_[ref.q * 1.02, ref.X1 * (1 + 2e-4), ref.X2 * (1 - 2e-4)]
+    sol = root(F, u0 / xs, method="hybr", options={"xtol": 1e-14, "maxfev": 20000})
+    u = sol.x * xs
+    assert np.max(np.abs(F(sol.x))) < 1e-9
+    np.testing.assert_allclose(u[:3], ref.q[:3], rtol=0, atol=1e-12)
+    np.testing.assert_allclose(u[3:5], ref.q[3:], rtol=0, atol=1e-10)
+    np.testing.assert_allclose(u[5:5 + Z], ref.X1, rtol=0, atol=1e-12)
+
+
 def test_zero_speed_is_the_static_case(case7206, static7206):
     """Speed 0 and 'centrifugal and gyroscopic off' give the same equilibrium."""
     off = qs.solve_case(case7206, inner_speed=14000 * RPM, centrifugal=False, gyroscopic=False)
