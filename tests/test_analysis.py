@@ -262,6 +262,13 @@ def test_period_k_clusters_and_noise():
     assert label == "4 periods" and 0.5 < conf <= 1.0
 
 
+def test_still_converging_period_is_flagged():
+    n = np.arange(60)
+    P = np.column_stack([0.3 + 0.5 * np.exp(-n / 4.0), -0.2 + 0.3 * np.exp(-n / 4.0)])  # settles by point ~20
+    label, conf, det = classify(P, scale=[1.0, 1.0])
+    assert label == "1 period" and "transient still decaying" in det["reason"] and conf <= 0.8
+
+
 def test_noise_does_not_turn_one_period_into_chaos():
     rng = np.random.default_rng(7)
     for sigma in (1e-4, 1e-3, 4e-3):  # fraction of the orbit extent
