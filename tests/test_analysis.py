@@ -454,6 +454,18 @@ def test_auto_transient_waits_for_the_drift_to_end(case):
         assert transient_cut(run, "auto") == pytest.approx(0.3 * float(run.time[-1]))
 
 
+def test_plane_section(case):
+    """Alternative section: D_Z crossing its mean upwards; a circular whirl gives one point per whirl turn."""
+    ds = annotate(cage_run("period", case), case, section="plane")
+    assert ds.attrs["poincare_section_kind"] == "plane" and "D_Z crosses" in ds.attrs["poincare_section"]
+    assert ds.attrs["classification"] == "1 period"
+    P = poincare_points(ds, section="plane")
+    assert np.allclose(P[:, 0], 20e-6, rtol=1e-3) and np.allclose(P[:, 1], 0.0, atol=1e-3 * 20e-6 * 600)
+    assert annotate(cage_run("quasi", case), case, section="plane").attrs["classification"] == "quasi-periodic"
+    with pytest.raises(ValueError, match="unknown Poincare section"):
+        annotate(cage_run("period", case, n_rev=5), case, section="radial")
+
+
 def test_steady_mask():
     m, dt = steady_mask(np.linspace(0, 10, 11), 0.3)
     assert dt == pytest.approx(3.0) and m.sum() == 8
