@@ -194,6 +194,43 @@ def test_sjovall_integrals_epsilon_half(kind):
         assert Ja == pytest.approx(0.2782, rel=0.005)
 
 
+def _sjovall(eps):
+    """Sjovall load integrals J_r(eps), J_a(eps), point contact (Harris & Kotzalas Vol. 1, Ch. 7).
+
+    J_r = 1/(2 pi) int [1 - (1 - cos psi)/(2 eps)]^1.5 cos psi dpsi, J_a the same without cos psi,
+    over the loaded arc -- evaluated here by quadrature (the source of Table 7.1).
+    """
+    psi = np.linspace(-np.pi, np.pi, 200001)
+    f = np.clip(1 - (1 - np.cos(psi)) / (2 * eps), 0, None) ** 1.5
+    return np.trapezoid(f * np.cos(psi), psi) / (2 * np.pi), np.trapezoid(f, psi) / (2 * np.pi)
+
+
+@pytest.mark.parametrize("eps", [0.3, 0.8, 1.0, 2.5, 5.0])
+def test_load_zone_follows_sjovall_integrals(eps):
+    """Combined radial + axial static load over the whole range of load zones 0.3 <= epsilon <= 5.
+
+    With F_a / (F_r tan a) = J_a/J_r(eps), the model must give Q_max = F_r / (Z J_r cos a), the same
+    load zone eps (fitted to the deflection pattern delta(psi) = delta_max [1 - (1 - cos psi)/(2 eps)])
+    and F_a = Z J_a Q_max sin a.  60 balls, very light load (constant contact angle), fixed tilt.
+    """
+    assert _sjovall(0.5)[0] == pytest.approx(0.2288, abs=1e-4)  # the quadrature reproduces Table 7.1
+    Jr, Ja = _sjovall(eps)
+    a0 = 30 * DEG
+    Fr = 3.0
+    Fa = Fr * math.tan(a0) * Ja / Jr
+    case = loads_case(load_case("zhang2016").to_toml(), **{
+        "bearing.ball_count": "60", "bearing.pitch_diameter": "250 mm", "bearing.contact_angle": "30 deg",
+        "operating.inner_speed": "0 rpm", "operating.radial_load": f"{Fr} N", "operating.axial_load": f"{Fa} N"})
+    ds = qs.to_dataset(qs.solve(qs.build_problem(case, fixed_tilt=True)), case)
+    Q = ds.inner_contact_load.values
+    d = ds.inner_contact_deflection.values + ds.outer_contact_deflection.values
+    psi = ds.ball_azimuth.values
+    c0, c1 = np.linalg.lstsq(np.c_[np.ones_like(psi), np.cos(psi)], d, rcond=None)[0]
+    assert (c0 + c1) / (2 * c1) == pytest.approx(eps, rel=0.01)
+    assert Fr / (60 * Q.max() * math.cos(a0)) == pytest.approx(Jr, rel=0.005)
+    assert Fa / (60 * Q.max() * math.sin(a0)) == pytest.approx(Ja, rel=0.005)
+
+
 # ----------------------------------------------------------------------------- invariants
 
 
