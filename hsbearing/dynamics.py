@@ -277,7 +277,7 @@ def initial_state(case, layout: StateLayout, g, kind: str = "quasistatic"):
 
 
 def mechanical_energy(model: DynamicModel, y) -> np.ndarray:
-    """Total mechanical energy [J] at states ``y`` (..., N): kinetic + Hertz + pocket elastic - work of the loads.
+    """Total mechanical energy [J] at states ``y`` (..., N): kinetic + Hertz + pocket and land elastic - work of the loads.
 
     For the energy test with ``friction=False, damping=False`` (then this is
     a constant of motion).  The inner ring's prescribed spin does no work on
@@ -309,6 +309,10 @@ def mechanical_energy(model: DynamicModel, y) -> np.ndarray:
         Qc = aux[:, 12]
         dc = (Qc / P[K.P_KC]) ** (2.0 / 3.0)
         E[k] += (0.4 * Qc * dc).sum()
+    # elastic rub of the cage on the guide land: 2/5 K_land (e - c)^2.5
+    e = np.hypot(u["y_c"], u["z_c"])
+    pen = np.maximum(e - P[K.P_CLAND], 0.0)
+    E += 0.4 * P[K.P_KLAND] * pen**2.5
     return E
 
 

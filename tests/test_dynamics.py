@@ -52,9 +52,9 @@ def test_state_layout_roundtrip():
 def test_groove_contact_zero_at_nominal_and_sign():
     off = 0.02 * 9.525e-3
     a = math.radians(25)
-    d, nx, nr = ball.groove_contact(off * math.sin(a), off * math.cos(a), off)
-    assert abs(d) < 1e-15 and math.isclose(math.atan2(nx, nr), a)
-    d2, _, _ = ball.groove_contact(1.001 * off * math.sin(a), 1.001 * off * math.cos(a), off)
+    d, nx, nr, nt = ball.groove_contact(off * math.sin(a), off * math.cos(a), 0.0, off)
+    assert abs(d) < 1e-15 and math.isclose(math.atan2(nx, nr), a) and nt == 0.0
+    d2, _, _, _ = ball.groove_contact(1.001 * off * math.sin(a), 1.001 * off * math.cos(a), 0.0, off)
     assert d2 > 0  # groove centre moving away from the ball = compression
 
 
@@ -138,20 +138,56 @@ def test_drag_force():
     assert drag.mixture_density(960.0, 0.05) == pytest.approx(0.05 * 960 + 0.95 * 1.1)
 
 
-def test_inner_groove_centre_rates_are_derivatives():
-    th, rho, g, xi, yi, zi, by, bz = 0.7, 0.02345, 1.2e-4, 1e-5, 2e-6, -3e-6, 1e-4, -2e-4
-    v = (0.01, -0.02, 0.03, 0.5, -0.4)
-    thd = 600.0
-    c0 = ring.inner_groove_centre(th, rho, g, xi, yi, zi, by, bz, *v, thd)
+def _ring_point(phi, rho, g, xi, yi, zi, by, bz):
+    """Inertial position of the groove-circle point at ring-frame azimuth phi (exact rotation)."""
+    from scipy.spatial.transform import Rotation
+
+    c = np.array([g, rho * np.cos(phi), rho * np.sin(phi)])
+    return np.array([xi, yi, zi]) + Rotation.from_rotvec([0.0, by, bz]).apply(c)
+
+
+def test_tilt_rotation_is_the_exponential_map():
+    from scipy.spatial.transform import Rotation
+
+    for by, bz in ((0.0, 0.0), (2e-4, -3e-4), (3e-3, 4e-3), (1e-9, 0.0)):
+        R, J = ring.tilt_rotation(by, bz)
+        assert np.allclose(np.reshape(R, (3, 3)), Rotation.from_rotvec([0, by, bz]).as_matrix(), atol=1e-15)
+        # left Jacobian: R(beta + J^-1 w dt) = exp(w dt) R(beta)
+        w = np.array([0.3, -0.2, 0.5])
+        bd = np.linalg.solve(np.reshape(J, (3, 3)), w)
+        dt = 1e-6
+        lhs = Rotation.from_rotvec(np.array([0, by, bz]) + bd * dt).as_matrix()
+        rhs = Rotation.from_rotvec(w * dt).as_matrix() @ np.reshape(R, (3, 3))
+        assert np.allclose(lhs, rhs, atol=1e-12)
+    # small tilts: the generalised moments are the moments
+    R, J = ring.tilt_rotation(1e-7, -1e-7)
+    assert ring.tilt_generalised_moments(0.3, 1.0, -2.0, R, J) == pytest.approx((1.0, -2.0), rel=1e-6)
+
+
+def test_inner_groove_centre_is_the_nearest_point_and_its_rate():
+    x, r, th = 3e-7, 0.02301, 0.7
+    rho, g = 0.02345, 1.2e-4
+    pos = (1.6e-5, 7e-6, -4e-6)
+    tilt = (2e-3, -3e-3)
+    R, J = ring.tilt_rotation(*tilt)
+    vel, tilt_rate = (0.01, -0.02, 0.03), (0.5, -0.4)
+    wt = np.reshape(J, (3, 3)) @ np.array([0.0, *tilt_rate])
+    dX, dR, dT, vX, vR, vT = ring.inner_groove_centre(x, r, th, rho, g, *pos, R, *vel, *wt)
+    b = np.array([x, r * math.cos(th), r * math.sin(th)])
+    # brute force: nearest point of the (tilted, displaced) groove-centre circle
+    phis = th + np.linspace(-6e-3, 6e-3, 120001)
+    pts = np.array([_ring_point(p, rho, g, *pos, *tilt) for p in phis])
+    dist = np.linalg.norm(pts - b, axis=1)
+    assert math.sqrt(dX**2 + dR**2 + dT**2) == pytest.approx(dist.min(), abs=1e-12)
+    assert abs(dT) > 1e-8  # displaced/tilted ring: the normal leaves the ball's azimuth plane
+    # envelope theorem: d|c - b|/dt = n . (v_c(fixed azimuth) - v_b), checked by moving the ring
     dt = 1e-7
-
-    def at(s):
-        return ring.inner_groove_centre(th + thd * s, rho, g, xi + v[0] * s, yi + v[1] * s, zi + v[2] * s,
-                                        by + v[3] * s, bz + v[4] * s, *v, thd)
-
-    c1, cm = at(dt), at(-dt)
-    assert (c1[0] - cm[0]) / (2 * dt) == pytest.approx(c0[2], rel=1e-5)
-    assert (c1[1] - cm[1]) / (2 * dt) == pytest.approx(c0[3], rel=1e-5)
+    pos2 = tuple(p + v * dt for p, v in zip(pos, vel))
+    tilt2 = tuple(p + v * dt for p, v in zip(tilt, tilt_rate))
+    d2 = ring.inner_groove_centre(x, r, th, rho, g, *pos2, ring.tilt_rotation(*tilt2)[0], *vel, *wt)
+    L1 = math.sqrt(dX**2 + dR**2 + dT**2)
+    L2 = math.sqrt(d2[0]**2 + d2[1]**2 + d2[2]**2)
+    assert (L2 - L1) / dt == pytest.approx((dX * vX + dR * vR + dT * vT) / L1, rel=1e-4)
 
 
 # ----------------------------------------------------------------------------- assembled model
@@ -190,19 +226,30 @@ def test_arrowhead_jacobian_matches_full_finite_differences(model):
     assert np.max(err) < 2e-3, np.unravel_index(np.argmax(err), err.shape)
 
 
-def test_energy_is_conserved_without_friction_and_damping(case):
-    """Done-when (c): friction and damping off -> total mechanical energy constant to the solver tolerance."""
+@pytest.mark.parametrize("loads", [
+    {},
+    {"operating.radial_load": "800 N"},  # ring tilts by ~3.6e-3 rad: exercises the exact tilt kinematics
+    {"operating.radial_load": "500 N", "operating.radial_load_z": "-300 N", "operating.moment_y": "2 N*m"},
+])
+def test_energy_is_conserved_without_friction_and_damping(loads):
+    """Done-when (c): friction and damping off -> total mechanical energy constant to the solver tolerance.
+
+    Under radial load the frictionless balls are pushed round by the circumferential component of the
+    contact normal, hit their pockets (tens of N) and kick the cage onto the land: every contact,
+    the ring and cage tilts and the land rub take part.
+    """
+    case = h.load_case("zhang2016", **loads)
     m = dy.build_model(case, friction=False, damping=False, gravity=9.81)
     from hsbearing.solvers.cvode import integrate
 
-    t = np.linspace(0.0, 2e-3, 21)
+    t = np.linspace(0.0, 3e-3 if loads else 2e-3, 31)
     res = integrate(m.rhs, m.y0, t, rtol=1e-9, atol=m.layout.atol(1e-12), jacfn=m.jac)
     assert res.success, res.status
     E = dy.mechanical_energy(m, res.y)
     # the energy exchanged between kinetic and elastic forms (the scale of what could go wrong):
     aux, _ = m.outputs(m.y0)
     elastic = (0.4 * aux[:, 0] * (aux[:, 0] / m.P[dy.K.P_KI]) ** (2 / 3)).sum()
-    assert np.ptp(E) < 1e-4 * elastic, (np.ptp(E), elastic)
+    assert np.ptp(E) < 1e-5 * elastic, (np.ptp(E), elastic)  # (a wrong contact geometry gave 6e-2)
     # and the motion is not trivial (the start is out of dynamic equilibrium without friction)
     assert np.ptp(res.y[:, m.layout.ring("x_i")]) > 1e-9
 

@@ -41,14 +41,14 @@ __all__ = [
 
 
 @njit(cache=True)
-def groove_contact(dx, dr, groove_offset):
+def groove_contact(dx, dr, dt, groove_offset):
     """Deflection and contact angle of a ball in a raceway groove.
 
     Parameters
     ----------
-    dx, dr : float
-        Axial and radial components [m] of the vector from the ball centre to
-        the groove curvature centre of the raceway, in the ball's azimuth plane.
+    dx, dr, dt : float
+        Axial, radial and circumferential components [m] of the vector from the
+        ball centre to the (nearest) groove curvature centre of the raceway.
     groove_offset : float
         (f - 1/2) D [m]: distance from the groove curvature centre to the
         unloaded ball centre ([2], Eq. 2.5: r = f D).
@@ -57,13 +57,14 @@ def groove_contact(dx, dr, groove_offset):
     -------
     delta : float
         Elastic approach [m] (negative = clearance): |d| - (f - 1/2) D ([2], Ch. 2-3).
-    nx, nr : float
+    nx, nr, nt : float
         Unit vector from the ball centre towards the groove centre.  For the
-        inner race nx = sin(alpha_i), nr = cos(alpha_i); for the outer race
-        nx = -sin(alpha_o), nr = -cos(alpha_o) ([1], Fig. 3).
+        inner race (nx, nr) ~ (sin alpha_i, cos alpha_i); for the outer race
+        ~ (-sin alpha_o, -cos alpha_o) ([1], Fig. 3); nt is the small
+        circumferential component (radially displaced ring).
     """
-    L = math.sqrt(dx * dx + dr * dr)
-    return L - groove_offset, dx / L, dr / L
+    L = math.sqrt(dx * dx + dr * dr + dt * dt)
+    return L - groove_offset, dx / L, dr / L, dt / L
 
 
 @njit(cache=True)

@@ -29,8 +29,44 @@ import math
 
 from numba import njit
 
-__all__ = ["pocket_normal_force", "pocket_friction_factor", "guide_land_forces", "guide_land_torque",
+from hsbearing.models.ring import tilt_rotation
+
+__all__ = ["cage_orientation", "cage_generalised_moments", "pocket_normal_force", "pocket_friction_factor", "guide_land_forces", "guide_land_torque",
            "smooth_eccentricity", "cage_equations_of_motion"]
+
+
+@njit(cache=True)
+def cage_orientation(phi, psi_y, psi_z, phidot, psidot_y, psidot_z):
+    """Rotation R_c = R_tilt(psi) R_x(phi) of the cage and its angular velocity (space frame).
+
+    The cage turns by phi about its own axis and is tilted by the rotation
+    vector psi = (0, psi_y, psi_z) (:func:`hsbearing.models.ring.tilt_rotation`);
+    omega = J(psi) psi' + phi' R_c e_x.  Exact for any tilt.
+
+    Returns (R_c row-major 9-tuple, (omega_x, omega_y, omega_z), J 9-tuple).
+    """
+    Rt, J = tilt_rotation(psi_y, psi_z)
+    c, s = math.cos(phi), math.sin(phi)
+    R = (Rt[0], Rt[1] * c + Rt[2] * s, -Rt[1] * s + Rt[2] * c,
+         Rt[3], Rt[4] * c + Rt[5] * s, -Rt[4] * s + Rt[5] * c,
+         Rt[6], Rt[7] * c + Rt[8] * s, -Rt[7] * s + Rt[8] * c)
+    wx = J[1] * psidot_y + J[2] * psidot_z + phidot * R[0]
+    wy = J[4] * psidot_y + J[5] * psidot_z + phidot * R[3]
+    wz = J[7] * psidot_y + J[8] * psidot_z + phidot * R[6]
+    return R, (wx, wy, wz), J
+
+
+@njit(cache=True)
+def cage_generalised_moments(Mx, My, Mz, R, J):
+    """Generalised forces (Q_phi, Q_psi_y, Q_psi_z) of a moment M about the cage centre [N m].
+
+    With omega = J psi' + phi' e (e = R_c e_x), the virtual work M . omega dt gives
+    Q_phi = e . M and Q_psi = J^T M (y, z components); for small tilts
+    (M_x, M_y, M_z) ([1], Eqs. 14-16).
+    """
+    return (R[0] * Mx + R[3] * My + R[6] * Mz,
+            J[1] * Mx + J[4] * My + J[7] * Mz,
+            J[2] * Mx + J[5] * My + J[8] * Mz)
 
 
 @njit(cache=True)

@@ -24,10 +24,11 @@ import numpy as np
 from numba import njit
 
 from hsbearing.models.ball import ball_equations_of_motion, ehl_rolling_force, groove_contact, hertz_normal_load
-from hsbearing.models.cage import (cage_equations_of_motion, guide_land_forces, guide_land_torque,
+from hsbearing.models.cage import (cage_equations_of_motion, cage_generalised_moments, cage_orientation, guide_land_forces, guide_land_torque,
                                    pocket_friction_factor, pocket_normal_force, smooth_eccentricity)
 from hsbearing.models.drag import ball_drag_force
-from hsbearing.models.ring import inner_groove_centre, ring_equations_of_motion
+from hsbearing.models.ring import (inner_groove_centre, ring_equations_of_motion, tilt_generalised_moments,
+                                   tilt_rotation)
 from hsbearing.models.traction.zhang2016 import coefficients_nb, mu_nb
 
 # ---------------------------------------------------------------------------- parameter indices
@@ -65,10 +66,11 @@ def _cross(ax, ay, az, bx, by, bz):
 
 
 @njit(cache=True)
-def _race_contact(P, qu, qw, Q, nx, nr, x, r, vx, vr, thd, wx, wy, wz,
+def _race_contact(P, qu, qw, Q, nx, nr, nt, x, r, vx, vr, thd, wx, wy, wz,
                   rvx, rvr, rvt, ox, orr, ot, Wx, Wr, Wt, Rx, ke, acoef):
     """Traction and EHL rolling force of one ball/race contact, in the ball frame (x, r, t).
 
+    n = (nx, nr, nt): unit normal from the ball centre towards the groove centre.
     (rvx, rvr, rvt): race translational velocity; (ox, orr, ot): race centre
     position; (Wx, Wr, Wt): race angular velocity -- all in the ball frame.
     Returns the force on the ball (fx, fr, ft), the moment about the ball
@@ -85,19 +87,27 @@ def _race_contact(P, qu, qw, Q, nx, nr, x, r, vx, vr, thd, wx, wy, wz,
     spin_roll = 0.0
     if Q <= 0.0:
         return fx, fr, ft, mx, mr, mt, T1, T2, S0, U, FR, spin_roll
+    # tangent basis: t2 = n x e_t / |.| (transverse, in the axial-radial plane), t1 = t2 x n (rolling, ~ e_t)
+    hn = math.sqrt(nx * nx + nr * nr)
+    t2x, t2r = nr / hn, -nx / hn
+    t1x, t1r, t1t = -nx * nt / hn, -nr * nt / hn, hn
     # contact centre on the ball: rho0 = -(D/2) n
-    r0x, r0r = -D2 * nx, -D2 * nr
-    # rolling speed: mean surface speed along t relative to the moving contact
-    vbx, vbr, vbt = _cross(wx, wy, wz, r0x, r0r, 0.0)
+    r0x, r0r, r0t = -D2 * nx, -D2 * nr, -D2 * nt
+    # rolling speed: mean surface speed along t1 relative to the moving contact
+    vbx, vbr, vbt = _cross(wx, wy, wz, r0x, r0r, r0t)
+    vbx += vx
+    vbr += vr
     vbt += r * thd
-    px, pr, pt = x + r0x - ox, r + r0r - orr, 0.0 - ot
+    px, pr, pt = x + r0x - ox, r + r0r - orr, r0t - ot
     vrx, vrr, vrt = _cross(Wx, Wr, Wt, px, pr, pt)
+    vrx += rvx
+    vrr += rvr
     vrt += rvt
-    vct = (r + r0r) * thd
-    Ut = 0.5 * (vbt + vrt) - vct
+    vcx, vcr, vct = vx, vr, (r + r0r) * thd
+    Ut = 0.5 * ((vbx + vrx) * t1x + (vbr + vrr) * t1r + (vbt + vrt) * t1t) - (vcx * t1x + vcr * t1r + vct * t1t)
     U = math.sqrt(Ut * Ut + P[P_UEPS] ** 2)
     # spin-to-roll ratio (relative angular velocity along the normal / rolling speed)
-    spin_roll = ((wx - Wx) * (-nx) + (wy - Wr) * (-nr)) * D2 / U
+    spin_roll = -((wx - Wx) * nx + (wy - Wr) * nr + (wz - Wt) * nt) * D2 / U
     fric = P[P_FRIC]
     if fric > 0.0:
         A, B, C, Dd = coefficients_nb(int(P[P_LAW]), Q, U, P[P_TK], P[P_EP], Rx)
@@ -106,34 +116,38 @@ def _race_contact(P, qu, qw, Q, nx, nr, x, r, vx, vr, thd, wx, wy, wz,
         for k in range(qu.size):
             phi = a * qu[k] / D2
             cp, sp = math.cos(phi), math.sin(phi)
-            rx_ = D2 * (-cp * nx + sp * nr)
-            rr_ = D2 * (-cp * nr - sp * nx)
-            t2x, t2r = sp * nx + cp * nr, sp * nr - cp * nx
+            # node on the ball surface, and the local transverse tangent
+            rx_ = D2 * (-cp * nx + sp * t2x)
+            rr_ = D2 * (-cp * nr + sp * t2r)
+            rt_ = D2 * (-cp * nt)
+            ux, ur, ut = sp * nx + cp * t2x, sp * nr + cp * t2r, sp * nt
             # ball surface velocity
-            bx, br, bt = _cross(wx, wy, wz, rx_, rr_, 0.0)
+            bx, br, bt = _cross(wx, wy, wz, rx_, rr_, rt_)
             bx += vx
             br += vr
             bt += r * thd
             # race surface velocity at the same point
-            px, pr, pt = x + rx_ - ox, r + rr_ - orr, -ot
+            px, pr, pt = x + rx_ - ox, r + rr_ - orr, rt_ - ot
             gx, gr, gt = _cross(Wx, Wr, Wt, px, pr, pt)
             gx += rvx
             gr += rvr
             gt += rvt
             dvx, dvr, dvt = bx - gx, br - gr, bt - gt
-            s1 = dvt
-            s2 = dvx * t2x + dvr * t2r
+            s1 = dvx * t1x + dvr * t1r + dvt * t1t
+            s2 = dvx * ux + dvr * ur + dvt * ut
             Sreg = math.sqrt(s1 * s1 + s2 * s2 + seps * seps) / U
             mu = mu_nb(A, B, C, Dd, Sreg)
             q = Q * qw[k]
             f = -q * mu / (Sreg * U)  # traction opposes the local slip  [5] of models.ball
             f1 = f * s1
             f2 = f * s2
-            Fx_, Fr_, Ft_ = f2 * t2x, f2 * t2r, f1
+            Fx_ = f1 * t1x + f2 * ux
+            Fr_ = f1 * t1r + f2 * ur
+            Ft_ = f1 * t1t + f2 * ut
             fx += Fx_
             fr += Fr_
             ft += Ft_
-            cx, cr, ct = _cross(rx_, rr_, 0.0, Fx_, Fr_, Ft_)
+            cx, cr, ct = _cross(rx_, rr_, rt_, Fx_, Fr_, Ft_)
             mx += cx
             mr += cr
             mt += ct
@@ -146,7 +160,7 @@ def _race_contact(P, qu, qw, Q, nx, nr, x, r, vx, vr, thd, wx, wy, wz,
         sg = Ut / U
         # F_R at the contact against the rolling sense, F_H = F_R through the ball centre:
         # a pure couple on the ball (seed Eq. 7 signs; docs/dynamics.md)
-        cx, cr, ct = _cross(r0x, r0r, 0.0, 0.0, 0.0, -FR * sg)
+        cx, cr, ct = _cross(r0x, r0r, r0t, -FR * sg * t1x, -FR * sg * t1r, -FR * sg * t1t)
         mx += cx
         mr += cr
         mt += ct
@@ -165,6 +179,11 @@ def ball_loop(y, P, qu, qw, ydot, contrib, aux, want_aux):
     rg = cg + 12
     xi, yi, zi, by, bz = y[rg], y[rg + 1], y[rg + 2], y[rg + 3], y[rg + 4]
     vxi, vyi, vzi, byd, bzd = y[rg + 5], y[rg + 6], y[rg + 7], y[rg + 8], y[rg + 9]
+    Rc, (wcx, wcy, wcz), Jc = cage_orientation(phc, psy, psz, phd, psyd, pszd)
+    Rm, Jm = tilt_rotation(by, bz)
+    wtx = Jm[1] * byd + Jm[2] * bzd  # tilting angular velocity J beta'
+    wty = Jm[4] * byd + Jm[5] * bzd
+    wtz = Jm[7] * byd + Jm[8] * bzd
     wi, wo = P[P_WI], P[P_WO]
     fric, damp = P[P_FRIC], P[P_DAMP]
     hdm = 0.5 * P[P_DM]
@@ -180,20 +199,23 @@ def ball_loop(y, P, qu, qw, ydot, contrib, aux, want_aux):
         Ft = m * P[P_GRAV] * s
         Mx = Mr = Mt = 0.0
         # ---------------- inner race contact (Eqs. 5-10, Q_i, T_i, F_R,i)
-        cx, cr, cxd, crd = inner_groove_centre(th, P[P_RHOI], P[P_GI], xi, yi, zi, by, bz, vxi, vyi, vzi, byd, bzd, thd)
-        dlt, nxi, nri = groove_contact(cx - x, cr - r, P[P_OFFI])
-        dltd = nxi * (cxd - vx) + nri * (crd - vr)
+        dX, dR, dT, vcX, vcR, vcT = inner_groove_centre(x, r, th, P[P_RHOI], P[P_GI], xi, yi, zi, Rm,
+                                                        vxi, vyi, vzi, wtx, wty, wtz)
+        dlt, nxi, nri, nti = groove_contact(dX, dR, dT, P[P_OFFI])
+        dltd = nxi * (vcX - vx) + nri * (vcR - vr) + nti * (vcT - r * thd)
         Qi = hertz_normal_load(dlt, dltd, P[P_KI], P[P_CDI] * damp)
         # inner ring kinematics in the ball frame
         rvx, rvr, rvt = vxi, vyi * c + vzi * s, -vyi * s + vzi * c
         ox, orr, ot = xi, yi * c + zi * s, -yi * s + zi * c
-        Wx, Wr, Wt = wi, byd * c + bzd * s, -byd * s + bzd * c
+        # ring angular velocity: spin about its own (tilted) axis R e_x plus the tilting rate
+        Wsx, Wsy, Wsz = wi * Rm[0] + wtx, wi * Rm[3] + wty, wi * Rm[6] + wtz
+        Wx, Wr, Wt = Wsx, Wsy * c + Wsz * s, -Wsy * s + Wsz * c
         (tfx, tfr, tft, tmx, tmr, tmt, Ti1, Ti2, Si, Ui, FRi, sri) = _race_contact(
-            P, qu, qw, Qi, nxi, nri, x, r, vx, vr, thd, wx, wy, wz,
+            P, qu, qw, Qi, nxi, nri, nti, x, r, vx, vr, thd, wx, wy, wz,
             rvx, rvr, rvt, ox, orr, ot, Wx, Wr, Wt, P[P_RXI], P[P_KEI], P[P_ACI])
         fbx = Qi * nxi + tfx  # force of the inner race on the ball (ball frame)
         fbr = Qi * nri + tfr
-        fbt = tft
+        fbt = Qi * nti + tft
         Fx += fbx
         Fr += fbr
         Ft += fbt
@@ -202,8 +224,8 @@ def ball_loop(y, P, qu, qw, ydot, contrib, aux, want_aux):
         Mt += tmt
         # reaction on the inner ring at the contact centre (inertial frame), moment about its centre
         gx, gy, gz = -fbx, -(fbr * c - fbt * s), -(fbr * s + fbt * c)
-        rc = r - D2 * nri
-        ax_, ay_, az_ = x - D2 * nxi - xi, rc * c - yi, rc * s - zi
+        rc, tc = r - D2 * nri, -D2 * nti
+        ax_, ay_, az_ = x - D2 * nxi - xi, rc * c - tc * s - yi, rc * s + tc * c - zi
         mrx, mry, mrz = _cross(ax_, ay_, az_, gx, gy, gz)
         contrib[j, C_RFX] = gx
         contrib[j, C_RFY] = gy
@@ -212,11 +234,11 @@ def ball_loop(y, P, qu, qw, ydot, contrib, aux, want_aux):
         contrib[j, C_RMZ] = mrz
         contrib[j, C_RMX] = mrx
         # ---------------- outer race contact (fixed outer ring, speed wo about X)
-        dlt_o, nxo, nro = groove_contact(P[P_GO] - x, P[P_RHOO] - r, P[P_OFFO])
+        dlt_o, nxo, nro, nto = groove_contact(P[P_GO] - x, P[P_RHOO] - r, 0.0, P[P_OFFO])
         dltd_o = -nxo * vx - nro * vr
         Qo = hertz_normal_load(dlt_o, dltd_o, P[P_KO], P[P_CDO] * damp)
         (tfx, tfr, tft, tmx, tmr, tmt, To1, To2, So, Uo, FRo, sro) = _race_contact(
-            P, qu, qw, Qo, nxo, nro, x, r, vx, vr, thd, wx, wy, wz,
+            P, qu, qw, Qo, nxo, nro, nto, x, r, vx, vr, thd, wx, wy, wz,
             0.0, 0.0, 0.0, 0.0, 0.0, 0.0, wo, 0.0, 0.0, P[P_RXO], P[P_KEO], P[P_ACO])
         Fx += Qo * nxo + tfx
         Fr += Qo * nro + tfr
@@ -224,76 +246,77 @@ def ball_loop(y, P, qu, qw, ydot, contrib, aux, want_aux):
         Mx += tmx
         Mr += tmr
         Mt += tmt
-        # ---------------- cage pocket (Q_c, P_S), computed in the pocket frame (e_x, e_rp, e_tp)
-        phj = phc + 2.0 * math.pi * j / Z
+        # ---------------- cage pocket (Q_c, P_S), inertial vectors; pocket axes turn and tilt with the cage
+        phj = 2.0 * math.pi * j / Z
         cph, sph = math.cos(phj), math.sin(phj)
-        dl = th - phj
-        cdl, sdl = math.cos(dl), math.sin(dl)
-        Px = xc + hdm * (psy * sph - psz * cph)
-        Pr = yc * cph + zc * sph + hdm
-        Pt = -yc * sph + zc * cph
-        dx_ = x - Px
-        dr_ = r * cdl - Pr
-        dt_ = r * sdl - Pt
-        # absolute velocities in the pocket frame
-        vbx_, vbr_, vbt_ = vx, vr * cdl - r * thd * sdl, vr * sdl + r * thd * cdl
-        Vcx = vxc
-        Vcr = vyc * cph + vzc * sph
-        Vct = -vyc * sph + vzc * cph
-        dPx = vxc + hdm * (psyd * sph - pszd * cph + (psy * cph + psz * sph) * phd)
-        ddx = vbx_ - dPx
-        ddt = vbt_ - (Vct + phd * hdm) - phd * dr_
-        e = math.sqrt(dx_ * dx_ + dt_ * dt_ + P[P_EEPS] ** 2)
-        npx, npt = dx_ / e, dt_ / e
+        ex_x, ex_y, ex_z = Rc[0], Rc[3], Rc[6]  # cage axis
+        er_x = Rc[1] * cph + Rc[2] * sph  # pocket axis (radial)
+        er_y = Rc[4] * cph + Rc[5] * sph
+        er_z = Rc[7] * cph + Rc[8] * sph
+        et_x = -Rc[1] * sph + Rc[2] * cph  # pocket circumferential direction
+        et_y = -Rc[4] * sph + Rc[5] * cph
+        et_z = -Rc[7] * sph + Rc[8] * cph
+        bx_, by_, bz_ = x, r * c, r * s  # ball centre
+        vbx_, vby_, vbz_ = vx, vr * c - r * thd * s, vr * s + r * thd * c
+        dvx_, dvy_, dvz_ = bx_ - xc - hdm * er_x, by_ - yc - hdm * er_y, bz_ - zc - hdm * er_z  # b - P
+        # rate of b - P: v_b - V_c - omega_c x (hdm e_r)
+        ox_, oy_, oz_ = _cross(wcx, wcy, wcz, hdm * er_x, hdm * er_y, hdm * er_z)
+        rdx, rdy, rdz = vbx_ - vxc - ox_, vby_ - vyc - oy_, vbz_ - vzc - oz_
+        dxp = dvx_ * ex_x + dvy_ * ex_y + dvz_ * ex_z
+        dtp = dvx_ * et_x + dvy_ * et_y + dvz_ * et_z
+        # d/dt (d . e) = d' . e + d . (omega x e)
+        wex = _cross(wcx, wcy, wcz, ex_x, ex_y, ex_z)
+        wet = _cross(wcx, wcy, wcz, et_x, et_y, et_z)
+        ddx = rdx * ex_x + rdy * ex_y + rdz * ex_z + dvx_ * wex[0] + dvy_ * wex[1] + dvz_ * wex[2]
+        ddt = rdx * et_x + rdy * et_y + rdz * et_z + dvx_ * wet[0] + dvy_ * wet[1] + dvz_ * wet[2]
+        e = math.sqrt(dxp * dxp + dtp * dtp + P[P_EEPS] ** 2)
+        npx, npt = dxp / e, dtp / e
+        nx_, ny_, nz_ = npx * ex_x + npt * et_x, npx * ex_y + npt * et_y, npx * ex_z + npt * et_z
         ed = npx * ddx + npt * ddt
         Qc = pocket_normal_force(e, ed, P[P_CP], P[P_KC], P[P_ETAF] * damp, P[P_RSQC], P[P_HMIN])
-        fpx, fpr, fpt = -Qc * npx, 0.0, -Qc * npt  # on the ball, pocket frame
+        gx_, gy_, gz_ = -Qc * nx_, -Qc * ny_, -Qc * nz_  # force of the pocket on the ball (inertial)
         PS = 0.0
-        mpx = mpr = mpt = 0.0
+        mbx = mby = mbz = 0.0
+        kx, ky, kz = D2 * nx_, D2 * ny_, D2 * nz_  # contact point relative to the ball centre
         if fric > 0.0 and Qc > 0.0:
-            # contact point on the ball: b + (D/2) n ; ball angular velocity in the pocket frame
-            wpx, wpr, wpt = wx, wy * cdl - wz * sdl, wy * sdl + wz * cdl
-            kx, kr, kt = D2 * npx, 0.0, D2 * npt
-            sbx, sbr, sbt = _cross(wpx, wpr, wpt, kx, kr, kt)
+            wbx, wby, wbz = wx, wy * c - wz * s, wy * s + wz * c  # ball angular velocity (inertial)
+            sbx, sby, sbz = _cross(wbx, wby, wbz, kx, ky, kz)
             sbx += vbx_
-            sbr += vbr_
-            sbt += vbt_
-            # cage point velocity: V_c + Omega_c x (X - C), X - C = (Px - xc + kx, Pr' + ...)
-            Xx, Xr, Xt = dx_ + kx + (Px - xc), dr_ + Pr - (yc * cph + zc * sph), dt_ + kt + Pt - (-yc * sph + zc * cph)
-            Wcx, Wcr, Wct = phd, psyd * cph + pszd * sph, -psyd * sph + pszd * cph
-            scx, scr, sct = _cross(Wcx, Wcr, Wct, Xx, Xr, Xt)
-            scx += Vcx
-            scr += Vcr
-            sct += Vct
-            dvx, dvr, dvt = sbx - scx, sbr - scr, sbt - sct
-            dvn = dvx * npx + dvt * npt
-            dvx -= dvn * npx
-            dvt -= dvn * npt
-            vs = math.sqrt(dvx * dvx + dvr * dvr + dvt * dvt)
+            sby += vby_
+            sbz += vbz_
+            Xx, Xy, Xz = bx_ + kx - xc, by_ + ky - yc, bz_ + kz - zc  # contact point relative to the cage centre
+            scx, scy, scz = _cross(wcx, wcy, wcz, Xx, Xy, Xz)
+            scx += vxc
+            scy += vyc
+            scz += vzc
+            svx, svy, svz = sbx - scx, sby - scy, sbz - scz
+            svn = svx * nx_ + svy * ny_ + svz * nz_
+            svx -= svn * nx_
+            svy -= svn * ny_
+            svz -= svn * nz_
+            vs = math.sqrt(svx * svx + svy * svy + svz * svz)
             ff = -Qc * pocket_friction_factor(vs, P[P_MUC], P[P_V0C])
-            ffx, ffr, fft = ff * dvx, ff * dvr, ff * dvt
             PS = abs(ff) * vs
-            fpx += ffx
-            fpr += ffr
-            fpt += fft
-            mpx, mpr, mpt = _cross(kx, kr, kt, ffx, ffr, fft)
-        # to the ball frame (e_r = cdl e_rp + sdl e_tp, e_t = -sdl e_rp + cdl e_tp)
-        Fx += fpx
-        Fr += fpr * cdl + fpt * sdl
-        Ft += -fpr * sdl + fpt * cdl
-        Mx += mpx
-        Mr += mpr * cdl + mpt * sdl
-        Mt += -mpr * sdl + mpt * cdl
-        # reaction on the cage (inertial), moment about the cage centre
-        gcx, gcr, gct = -fpx, -fpr, -fpt
-        Xx, Xr, Xt = Px - xc + dx_ + D2 * npx, hdm + dr_, dt_ + D2 * npt  # contact point minus cage centre (pocket frame)
-        mcx, mcr, mct = _cross(Xx, Xr, Xt, gcx, gcr, gct)
-        contrib[j, C_CFX] = gcx
-        contrib[j, C_CFY] = gcr * cph - gct * sph
-        contrib[j, C_CFZ] = gcr * sph + gct * cph
+            gx_ += ff * svx
+            gy_ += ff * svy
+            gz_ += ff * svz
+            mbx, mby, mbz = _cross(kx, ky, kz, ff * svx, ff * svy, ff * svz)
+        # to the ball frame
+        Fx += gx_
+        Fr += gy_ * c + gz_ * s
+        Ft += -gy_ * s + gz_ * c
+        Mx += mbx
+        Mr += mby * c + mbz * s
+        Mt += -mby * s + mbz * c
+        # reaction on the cage at the contact point, moment about the cage centre
+        Xx, Xy, Xz = bx_ + kx - xc, by_ + ky - yc, bz_ + kz - zc
+        mcx, mcy, mcz = _cross(Xx, Xy, Xz, -gx_, -gy_, -gz_)
+        contrib[j, C_CFX] = -gx_
+        contrib[j, C_CFY] = -gy_
+        contrib[j, C_CFZ] = -gz_
         contrib[j, C_CMX] = mcx
-        contrib[j, C_CMY] = mcr * cph - mct * sph
-        contrib[j, C_CMZ] = mcr * sph + mct * cph
+        contrib[j, C_CMY] = mcy
+        contrib[j, C_CMZ] = mcz
         # ---------------- drag in the air-oil mixture (F_D, Eq. 7)
         FD = 0.0
         if P[P_DRAG] > 0.0:
@@ -372,14 +395,18 @@ def global_rows(y, P, csum, ydot, gaux):
     gaux[1] = Flz
     gaux[2] = Mlx
     gaux[3] = csum[C_RMX]
-    a = cage_equations_of_motion(csum[C_CFX], csum[C_CFY] + Fly - P[P_MC] * P[P_GRAV], csum[C_CFZ] + Flz, csum[C_CMX] + Mlx,
-                                 csum[C_CMY], csum[C_CMZ], phd, psyd, pszd, P[P_MC], P[P_IPC], P[P_IDC])
+    Rc, _w, Jc = cage_orientation(y[cg + 3], y[cg + 4], y[cg + 5], phd, psyd, pszd)
+    Qph, Qpy, Qpz = cage_generalised_moments(csum[C_CMX] + Mlx * Rc[0], csum[C_CMY] + Mlx * Rc[3],
+                                             csum[C_CMZ] + Mlx * Rc[6], Rc, Jc)
+    a = cage_equations_of_motion(csum[C_CFX], csum[C_CFY] + Fly - P[P_MC] * P[P_GRAV], csum[C_CFZ] + Flz, Qph,
+                                 Qpy, Qpz, phd, psyd, pszd, P[P_MC], P[P_IPC], P[P_IDC])
     for k in range(6):
         ydot[cg + k] = y[cg + 6 + k]
         ydot[cg + 6 + k] = a[k]
+    Rm, Jm = tilt_rotation(y[rg + 3], y[rg + 4])
+    Qy, Qz = tilt_generalised_moments(csum[C_RMX], P[P_MY] + csum[C_RMY], P[P_MZ] + csum[C_RMZ], Rm, Jm)
     b = ring_equations_of_motion(P[P_FX] + csum[C_RFX], P[P_FY] + csum[C_RFY] - P[P_MI] * P[P_GRAV], P[P_FZ] + csum[C_RFZ],
-                                 P[P_MY] + csum[C_RMY], P[P_MZ] + csum[C_RMZ], P[P_WI], y[rg + 8], y[rg + 9],
-                                 P[P_MI], P[P_IPI], P[P_IDI])
+                                 Qy, Qz, P[P_WI], y[rg + 8], y[rg + 9], P[P_MI], P[P_IPI], P[P_IDI])
     for k in range(5):
         ydot[rg + k] = y[rg + 5 + k]
         ydot[rg + 5 + k] = b[k]
@@ -444,6 +471,8 @@ def jac_kernel(y, P, qu, qw, J, hscale, work):
     inv_r = (1.0 / P[P_MI], 1.0 / P[P_MI], 1.0 / P[P_MI], 1.0 / P[P_IDI], 1.0 / P[P_IDI])
     ccols = (C_CFX, C_CFY, C_CFZ, C_CMX, C_CMY, C_CMZ)
     rcols = (C_RFX, C_RFY, C_RFZ, C_RMY, C_RMZ)
+    Rm, Jm = tilt_rotation(y[rg + 3], y[rg + 4])
+    Rc, _w, Jc = cage_orientation(y[cg + 3], y[cg + 4], y[cg + 5], y[cg + 9], y[cg + 10], y[cg + 11])
     for q in range(9):
         for i in range(N):
             yp[i] = y[i]
@@ -455,10 +484,21 @@ def jac_kernel(y, P, qu, qw, J, hscale, work):
             hj = yp[col] - y[col]
             for m in range(9):
                 J[m * Z + j, col] = (f1[m * Z + j] - f0[m * Z + j]) / hj
-            for k in range(6):
+            for k in range(3):
                 J[cg + 6 + k, col] = (c1[j, ccols[k]] - c0[j, ccols[k]]) * inv_c[k] / hj
-            for k in range(5):
+            qa, qb, qc = cage_generalised_moments((c1[j, C_CMX] - c0[j, C_CMX]) / hj, (c1[j, C_CMY] - c0[j, C_CMY]) / hj,
+                                                  (c1[j, C_CMZ] - c0[j, C_CMZ]) / hj, Rc, Jc)
+            J[cg + 9, col] = qa * inv_c[3]
+            J[cg + 10, col] = qb * inv_c[4]
+            J[cg + 11, col] = qc * inv_c[5]
+            for k in range(3):
                 J[rg + 5 + k, col] = (c1[j, rcols[k]] - c0[j, rcols[k]]) * inv_r[k] / hj
+            dmx = (c1[j, C_RMX] - c0[j, C_RMX]) / hj
+            dmy = (c1[j, C_RMY] - c0[j, C_RMY]) / hj
+            dmz = (c1[j, C_RMZ] - c0[j, C_RMZ]) / hj
+            qy, qz = tilt_generalised_moments(dmx, dmy, dmz, Rm, Jm)  # linear in M
+            J[rg + 8, col] = qy * inv_r[3]
+            J[rg + 9, col] = qz * inv_r[4]
     for col in range(nb, N):
         for i in range(N):
             yp[i] = y[i]
