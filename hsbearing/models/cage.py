@@ -77,11 +77,10 @@ def pocket_normal_force(e, e_dot, clearance, K, eta, R_sq, h_min):
     steel ball in the polyamide pocket).  Film part: squeeze of the oil film
     of thickness h = clearance - e, 6 pi eta R^2 e_dot / h ([3], Ch. 15, a
     sphere approaching a plane; R_sq = R^2 of the equivalent sphere), with h
-    bounded below smoothly by h_min: h_eff = sqrt(h^2 + h_min^2) for h > 0
-    and h_min^2 / (sqrt(h^2 + h_min^2) - h) ... i.e. h_eff = (h + sqrt(h^2 + 4 h_min^2)) / 2,
-    a smooth positive function equal to h for h >> h_min (regularisation,
-    documented in docs/dynamics.md).  Only an approaching ball (e_dot > 0)
-    loads the film (half-Sommerfeld: a separating film cavitates).
+    replaced by the smooth positive h_eff = (h + sqrt(h^2 + 4 h_min^2)) / 2
+    (= h for h >> h_min, h_min^2/|h| in contact; regularisation documented in
+    docs/dynamics.md).  Only an approaching ball (e_dot > 0) loads the film
+    (half-Sommerfeld: a separating film cavitates).
 
     Parameters
     ----------
