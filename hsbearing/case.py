@@ -328,6 +328,7 @@ class Case:
     text: str = ""  #: the TOML text (with overrides appended as comments)
     source: str = "<string>"
     raw: Any = None  #: the raw TOML dict after overrides (for re-serialisation)
+    overrides: Any = None  #: the ``table.key -> value`` overrides applied to ``text`` (in order)
 
     @property
     def name(self) -> str:
@@ -339,7 +340,9 @@ class Case:
 
     def with_overrides(self, **overrides) -> "Case":
         """A new case from the same text with ``table.key=value`` overrides."""
-        return _build(self.raw_text_base, self.source, overrides)
+        merged = dict(self.overrides or {})
+        merged.update(overrides)
+        return _build(self.raw_text_base, self.source, merged)
 
     @property
     def raw_text_base(self) -> str:
@@ -481,6 +484,7 @@ def _build(text: str, source: str, overrides: Mapping[str, Any]) -> Case:
         text=full_text,
         source=source,
         raw=raw,
+        overrides=dict(overrides or {}),
     )
     _check_physical(case, source)
     return case

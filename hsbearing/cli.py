@@ -115,7 +115,11 @@ def cmd_quasistatic(args) -> int:
     try:
         ds = quasi_static(case)
     except SolverError as exc:
-        print(f"hsbearing: numerical failure: {exc}", file=sys.stderr)
+        if exc.partial is not None and args.output:
+            write_netcdf(exc.partial, args.output)
+            print(f"hsbearing: numerical failure: {exc}; partial result in {args.output}", file=sys.stderr)
+        else:
+            print(f"hsbearing: numerical failure: {exc}", file=sys.stderr)
         return 1
     from hsbearing.solvers import quasistatic
 

@@ -60,3 +60,10 @@ def test_schema_fields_documented():
     for table, fields in SCHEMA.items():
         for key, fld in fields.items():
             assert fld.doc, f"{table}.{key} has no description"
+
+
+def test_with_overrides_accumulates():
+    c = load_case("zhang2016", axial_load="500 N").with_overrides(radial_load="1 N")
+    assert c.operating.axial_load == 500.0 and c.operating.radial_load == 1.0
+    c2 = c.with_overrides(**{"operating.axial_load": "2 kN"})
+    assert c2.operating.axial_load == 2000.0 and c2.operating.radial_load == 1.0
