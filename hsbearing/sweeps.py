@@ -54,6 +54,7 @@ import os
 import re
 import signal
 import sys
+import threading
 import time
 import traceback
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
@@ -576,7 +577,8 @@ class _LocalPool:
                 while pending and len(futs) < 2 * n:  # keep the queue short: cancellable, fair
                     key, args = pending.pop(0)
                     futs[self.ex.submit(_compute_point, *args)] = (key, args)
-                done, _ = wait(list(futs), return_when=FIRST_COMPLETED)
+                done, _ = wait(list(futs), timeout=_POLL, return_when=FIRST_COMPLETED)
+                _check_interrupt()
                 broken = False
                 for f in done:
                     key, args = futs.pop(f)
@@ -605,6 +607,40 @@ class _LocalPool:
         self.ex.shutdown(wait=True)
         self.ex = None
         return suspects
+
+
+#: Seconds between checks of a deferred Ctrl-C while waiting for points.
+_POLL = 0.2
+_INTERRUPTED = threading.Event()
+
+
+def _check_interrupt() -> None:
+    if _INTERRUPTED.is_set():
+        _INTERRUPTED.clear()
+        raise KeyboardInterrupt
+
+
+@contextlib.contextmanager
+def _deferred_sigint():
+    """Turn Ctrl-C into a flag checked between waits.
+
+    A KeyboardInterrupt raised *inside* concurrent.futures (or distributed) internals can leave
+    a future's lock held, and the executor's manager thread then blocks forever at exit
+    (observed: `hsbearing sweep` hung after Ctrl-C).  The flag is checked at safe points
+    (:func:`_check_interrupt`) and raises KeyboardInterrupt there.  Only in the main thread and
+    only if Python's default handler is installed; otherwise nothing changes.
+    """
+    if threading.current_thread() is not threading.main_thread() or \
+            signal.getsignal(signal.SIGINT) is not signal.default_int_handler:
+        yield
+        return
+    _INTERRUPTED.clear()
+    old = signal.signal(signal.SIGINT, lambda signum, frame: _INTERRUPTED.set())
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, old)
+    _check_interrupt()  # a Ctrl-C during the last wait still interrupts
 
 
 def _mp_context():
@@ -684,7 +720,7 @@ class _Dask:
         try:
             with self.client.as_current():
                 finished = as_completed(list(futs))
-            for f in finished:
+            for f in _poll_iter(finished):
                 key, args = futs[f]
                 try:
                     rec, ds = f.result()
@@ -701,6 +737,19 @@ class _Dask:
                     f.cancel()
             raise
         return killed
+
+
+def _poll_iter(ac):
+    """Iterate a distributed.as_completed, checking for a deferred Ctrl-C between results."""
+    while True:
+        batch = ac.next_batch(block=False) if hasattr(ac, "next_batch") else None
+        if batch:
+            yield from batch
+            continue
+        if ac.is_empty():
+            return
+        _check_interrupt()
+        time.sleep(_POLL / 4)
 
 
 def _backend(jobs: int | None, scheduler: str | None):
@@ -775,8 +824,10 @@ def execute(
             bar.update(dup)
 
     tasks = [(name, (pt.case, plan.kind, plan.duration, plan.point_fn)) for name, (plan, pt) in todo.items()]
+    backend = _backend(jobs, scheduler)
     try:
-        with _backend(jobs, scheduler) as backend:
+        # in-process computation (jobs=1) is safely interruptible: no deferral there
+        with (_deferred_sigint() if not isinstance(backend, _Serial) else contextlib.nullcontext()), backend:
             backend.run(tasks, on_done)
     finally:
         if bar is not None:
