@@ -256,29 +256,33 @@ def test_oscillation_window0_is_the_constant_start():
     assert np.allclose(a["friction_moment_total"].values, b["friction_moment_total"].values, rtol=1e-9, atol=1e-15)
 
 
-# Seed 000 Table 2 (calculated): each cell needs three reversals (6.3 s simulated, ~20 s wall each).
-# Window maxima of a bouncing cage vary by +/-30 % from window to window (chaotic impacts), so cells
-# that miss 20 % by a few percent are marked xfail (non-strict) with the measured value.
-_CELL_XFAIL = {
-    (1.0, 2.0): "SFMC 4.24 vs 5.34 (-21 %)",
-    (1.0, 5.0): "SFMC 7.59 vs 10.06 (-25 %)",
-    (2.0, 5.0): "SFMC 10.82 vs 13.73 (-21 %)",
-    (2.0, 2.0): "SFMO 11.79 vs 9.73 (+21 %)",
+# Seed 000 Table 2 (calculated), the same runs as docs/validation/gyro.md (cases built the same way, so
+# the chaotic cage trajectories are identical): SFMO = mean of 10 reversal-window maxima (20.3 s simulated),
+# SFMC = the default settled start (window 0) and the mean of a 5-start ensemble.  ~1 min wall per cell.
+_SFMO_XFAIL = {
+    (1.0, 2.0): "SFMO 8.14 vs 6.74 (+21 %)",
+    (1.0, 5.0): "SFMO 11.46 vs 14.51 (-21 %)",
 }
 
 
 @pytest.mark.slow
 @pytest.mark.parametrize("row", _table2(), ids=lambda r: f"{r['load_N']:g}N-{r['speed_r_per_min']:g}rpm")
-def test_table2_cell(row, request):
-    """Seed 000 Table 2: SFMC and SFMO within 20 %, SFMO > SFMC by >= 15 %, RFMC within 10 %."""
-    key = (row["load_N"], row["speed_r_per_min"])
-    if key in _CELL_XFAIL:
-        request.applymarker(pytest.mark.xfail(strict=False, reason=_CELL_XFAIL[key]))
-    c = _case(**{"operating.axial_load": f"{row['load_N']} N", "operating.outer_speed": f"{row['speed_r_per_min']} rpm",
-                 "operating.mode": "oscillation"})
-    ds = gyro.simulate(c, duration=6.3)
-    sfmc, sfmo = float(ds["sfmc"]) * 1e6, float(ds["sfmo"]) * 1e6
-    assert sfmo > 1.15 * sfmc  # Table 2 "increased percentage" >= 16 %
+def test_table2_cell(row):
+    """Seed 000 Table 2: RFMC within 10 %, SFMC (ensemble mean) within 20 %, SFMO > SFMC (settled start)
+    by >= 15 %, SFMO within 20 % (two cells miss by ~1 %: xfail, named in _SFMO_XFAIL)."""
+    base = hsbearing.load_case("jiang2014_gyro")
+    c = gyro.override(base, **{"operating.axial_load": f"{row['load_N']:g} N", "operating.outer_speed": f"{row['speed_r_per_min']:g} rpm"})
+    ds = gyro.simulate(gyro.override(c, **{"operating.mode": "oscillation"}), duration=20.3)
+    wm = ds["window_max_moment"].values * 1e6
+    sfmc_settled, sfmo = wm[0], wm[1:].mean()
+    assert wm.size == 11
+    assert float(ds["sfmo"]) * 1e6 == pytest.approx(sfmo)
     assert float(ds["rfmc"]) * 1e6 == pytest.approx(row["RFMC_uNm"], rel=0.10)
-    assert sfmc == pytest.approx(row["SFMC_uNm"], rel=0.20)
-    assert sfmo == pytest.approx(row["SFMO_uNm"], rel=0.20)
+    assert sfmo > 1.15 * sfmc_settled  # Table 2 "increased percentage" 16-44 %
+    ens = gyro.start_ensemble(c, 5) * 1e6
+    assert ens.mean() == pytest.approx(row["SFMC_uNm"], rel=0.20)
+    ok = sfmo == pytest.approx(row["SFMO_uNm"], rel=0.20)
+    key = (row["load_N"], row["speed_r_per_min"])
+    if not ok and key in _SFMO_XFAIL:
+        pytest.xfail(_SFMO_XFAIL[key])
+    assert ok, f"SFMO {sfmo:.2f} vs {row['SFMO_uNm']}"
