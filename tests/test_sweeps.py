@@ -479,3 +479,14 @@ def test_ctrl_c_on_the_cli(tmp_path):
     assert not [p for p in out.iterdir() if p.name.endswith(".tmp")]
     time.sleep(0.5)
     assert sorted(out.glob("zhang2016-*.nc")) == done  # no orphan worker went on writing
+
+
+def test_base_case_overrides_are_kept_in_every_point(tmp_path):
+    """A base case that already carries overrides (CLI --set) keeps them in every point's case."""
+    base = hsbearing.load_case("zhang2016", radial_load="200 N", temperature="80 degC")
+    ds = hsbearing.sweep(base, {"axial_load": "500,1000N"}, out_dir=tmp_path, kind="quasistatic", point_fn=fake_qs,
+                         jobs=1, progress=False)
+    for name in ds["archive"].values:
+        case = hsbearing.case.loads_case(open_run(tmp_path / name).attrs["case_toml"])
+        assert case.operating.radial_load == 200.0 and case.lubricant.temperature == pytest.approx(353.15)
+    np.testing.assert_allclose(ds["max_inner_contact_load"] - ds["mean_inner_contact_load"], 2 * 200.0 / 11, rtol=1e-9)
