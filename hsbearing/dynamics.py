@@ -156,6 +156,8 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
     opt = dict(MODEL_DEFAULTS, **options)
     g = derive(case)
     b, cg = case.bearing, case.cage
+    if cg.guidance != "outer_ring":
+        raise CaseError(case.source, "cage.guidance", "the dynamic model implements outer-ring guidance only")
     for key, val in (("cage.outside_diameter", cg.outside_diameter), ("cage.width", cg.width)):
         if val is None:
             raise CaseError(case.source, key, "required by the dynamic model")
@@ -164,8 +166,6 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
     if not math.isfinite(g.guide_clearance) or g.guide_clearance <= 0:
         raise CaseError(case.source, "bearing.outer_land_diameter",
                         "the dynamic model needs a positive cage guide clearance (outer-ring land diameter > cage outside diameter)")
-    if cg.guidance != "outer_ring":
-        raise CaseError(case.source, "cage.guidance", "the dynamic model implements outer-ring guidance only")
     Z, D, dm, fi, fo, a0 = g.Z, g.D, g.dm, g.fi, g.fo, g.alpha0
     mb, Ib = g.ball_mass, g.ball_inertia
     mat = case.materials
