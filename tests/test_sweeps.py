@@ -304,12 +304,13 @@ def test_local_processes_equal_serial(tmp_path):
 
 
 def test_dask_local_cluster_equals_local(tmp_path):
+    """The real quasi-static solver on a real dask scheduler + worker (loopback) equals local processes."""
     distributed = pytest.importorskip("distributed")
-    vary = {"axial_load": "100,500,1000N", "oil": "4109,4050"}
-    local = _qs_sweep(tmp_path / "local", vary, jobs=2)
+    vary = {"axial_load": "100,500,1000N", "inner_speed": "0,14000rpm"}
+    local = _qs_sweep(tmp_path / "local", vary, jobs=2, fn=None)
     with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=True, host="127.0.0.1",
                                   dashboard_address=None) as cluster:
-        remote = _qs_sweep(tmp_path / "dask", vary, scheduler=cluster.scheduler_address)
+        remote = _qs_sweep(tmp_path / "dask", vary, scheduler=cluster.scheduler_address, fn=None)
         assert remote.attrs["sweep_backend"].startswith("dask tcp://127.0.0.1")
     for v in ("mean_inner_contact_load", "mean_outer_contact_load", "max_inner_contact_load", "cage_speed",
               "inner_ring_axial_displacement", "status", "archive"):
@@ -490,3 +491,14 @@ def test_base_case_overrides_are_kept_in_every_point(tmp_path):
         case = hsbearing.case.loads_case(open_run(tmp_path / name).attrs["case_toml"])
         assert case.operating.radial_load == 200.0 and case.lubricant.temperature == pytest.approx(353.15)
     np.testing.assert_allclose(ds["max_inner_contact_load"] - ds["mean_inner_contact_load"], 2 * 200.0 / 11, rtol=1e-9)
+
+
+@pytest.mark.slow
+def test_dynamic_sweep_point_equals_direct_simulation(tmp_path):
+    """Kind "run" end to end with the real dynamic model: a sweep point is the direct simulate() result."""
+    ds = hsbearing.sweep("zhang2016", {"oil": "4109,4050"}, out_dir=tmp_path, duration="1 ms", jobs=2, progress=False)
+    assert (ds["status"] == "ok").all() and "classification" in ds and "mean_cage_slip_ratio" in ds
+    ref = hsbearing.simulate(hsbearing.load_case("zhang2016", oil="4050"), duration=1e-3)
+    arch = open_run(tmp_path / ds["archive"].sel(oil="4050").item())
+    np.testing.assert_allclose(arch["cage_center_y"].values, ref["cage_center_y"].values, rtol=1e-9, atol=1e-15)
+    np.testing.assert_allclose(arch["inner_contact_load"].values, ref["inner_contact_load"].values, rtol=1e-9)
