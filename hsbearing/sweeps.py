@@ -406,7 +406,7 @@ def _compute_point(case: Case, kind: str, duration, point_fn) -> tuple[dict, xr.
         where = f" ({Path(tb[-1].filename).name}:{tb[-1].lineno})" if tb else ""
         rec.update(status="error", error=f"{type(exc).__name__}: {exc}{where}")
         ds = None
-    if ds is not None and rec["status"] != "invalid":
+    if ds is not None and rec["status"] != "invalid" and len(ds.data_vars):
         try:
             summ = quasistatic_summary(ds) if kind == "quasistatic" else dynamic_summary(ds)
             rec["summary"] = {k: _scalar(v) for k, v in summ.items()}

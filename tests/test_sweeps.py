@@ -59,8 +59,11 @@ def _log_call(case):
 
 
 def failing_qs(case, duration):
-    """Fails numerically above 2 kN (with a partial dataset), like a solver that does not converge."""
+    """Fails numerically above 2 kN (with a partial dataset), like a solver that does not converge;
+    above 5 kN without a partial."""
     ds = fake_qs(case, duration)
+    if case.operating.axial_load > 5000.0:
+        raise SolverError("step size too small (test)")
     if case.operating.axial_load > 2000.0:
         ds.attrs["status"] = "failed: residual 3e-2 N after 50 iterations"
         raise SolverError("did not converge (test)", partial=ds)
@@ -251,6 +254,16 @@ def test_failing_points_are_recorded_and_the_rest_go_on(tmp_path):
     assert part.attrs["status"].startswith("failed") and "did not converge" in part.attrs["error"]
     assert good["archive"].values[1] == ""  # a bug is not archived: retried next time
     assert ds.attrs["status"].startswith("partial: 5 of 6")
+    # a solver failure without a partial result: archived as an empty dataset carrying status and error
+    nopart = _qs_sweep(tmp_path / "np", {"axial_load": "1000,6000N"}, fn=failing_qs)
+    assert list(nopart["status"].values) == ["ok", "failed"] and np.isnan(nopart["mean_inner_contact_load"].values[1])
+    empty = open_run(tmp_path / "np" / nopart["archive"].values[1])
+    assert empty.attrs["status"] == "failed" and "step size" in empty.attrs["error"] and not empty.data_vars
+    assert "operating" in empty.attrs["case_toml"]
+    again = _qs_sweep(tmp_path / "np", {"axial_load": "1000,6000N"}, fn=failing_qs)
+    assert list(again["resumed"].values) == [1, 1]  # deterministic failure: not recomputed ...
+    retry = _qs_sweep(tmp_path / "np", {"axial_load": "1000,6000N"}, fn=failing_qs, retry_failed=True)
+    assert list(retry["resumed"].values) == [1, 0]  # ... unless asked
 
 
 def test_summary_failure_is_reported_and_recomputed_on_resume(tmp_path, monkeypatch):
