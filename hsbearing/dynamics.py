@@ -410,14 +410,20 @@ def to_dataset(model: DynamicModel, t, Y, stats, status="ok", annotate: bool = T
         "cage_land_force_y": gaux[:, G["F_cy"]], "cage_land_force_z": gaux[:, G["F_cz"]],
         "cage_land_moment": gaux[:, G["M_cx"]], "inner_ring_friction_torque": gaux[:, G["ring_torque"]],
     }
-    if "quasistatic" in model.info:
-        import hsbearing.solvers.quasistatic  # noqa: F401  (registers the shared ball/ring names)
+    # per-ball derived quantities (forces, speeds, angles, ratios) are stored in single precision
+    # (7 significant digits) to halve the archive; states that are positions stay double
+    keep64 = {"ball_orbit_angle", "ball_center_axial", "ball_center_radial"}
+    for name, arr in data.items():
+        if name not in keep64 and np.ndim(arr) == 2:
+            data[name] = np.asarray(arr, dtype=np.float32)
+    import hsbearing.solvers.quasistatic  # noqa: F401  (registers the shared ball/ring names)
     attrs = results.standard_attrs(
         case, status, model="zhang2016_dynamics", guide_clearance=geom.guide_clearance,
         pocket_clearance=geom.pocket_clearance, theoretical_cage_speed_nominal=wth,
         initial_state=model.info.get("initial"), friction=int(model.info["friction"]),
         damping=int(model.info["damping"]), model_options=model.info["options"],
         state_layout="hsbearing.solvers.state (state-major, 9 Z + 22)",
+        precision="per-ball forces, speeds, angles and ratios float32; positions and cage/ring variables float64",
     )
     attrs.update(results.solver_attrs(stats))
     ds = results.make_dataset(data, coords={"time": np.asarray(t), "ball": np.arange(L.Z)}, attrs=attrs)

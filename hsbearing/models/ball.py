@@ -34,7 +34,6 @@ __all__ = [
     "groove_contact",
     "hertz_normal_load",
     "strip_load_weights",
-    "traction_force_factor",
     "ehl_rolling_force",
     "ball_equations_of_motion",
 ]
@@ -100,19 +99,6 @@ def strip_load_weights(n: int):
     u, g = np.polynomial.legendre.leggauss(int(n))
     w = 0.75 * g * (1.0 - u * u)
     return u, w / w.sum()
-
-
-@njit(cache=True)
-def traction_force_factor(slip, U, mu_of_S_over_S, s_eps):
-    """Scale factor f such that the traction force on the ball is -q f (slip vector).
-
-    f = mu(S)/S / U with S = sqrt(|slip|^2 + s_eps^2)/U: the traction
-    coefficient of the slide-roll ratio S acts against the local sliding
-    velocity; the division by S is done on the regularised S so the force is
-    smooth through zero slip (mu is odd in S, mu(S)/S finite at 0) [5].
-    This helper only applies the scaling; ``mu_of_S_over_S`` is mu(S)/S.
-    """
-    return mu_of_S_over_S / U
 
 
 @njit(cache=True)
