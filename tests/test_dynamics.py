@@ -287,6 +287,16 @@ def test_short_run_is_symmetric_and_finite(case):
     r = np.hypot(ds.cage_center_y.values, ds.cage_center_z.values)
     assert r.max() < ds.attrs["guide_clearance"]
     assert ds.attrs["solver_steps"] > 0 and ds.attrs["solver_rhs_evals"] > 0
+    # DESIGN.md dataset contract
+    for name, dims, units in [("inner_contact_load", ("time", "ball"), "N"), ("outer_contact_load", ("time", "ball"), "N"),
+                              ("inner_contact_angle", ("time", "ball"), "rad"), ("outer_contact_angle", ("time", "ball"), "rad"),
+                              ("cage_speed", ("time",), "rad/s"), ("cage_slip_ratio", ("time",), "1"),
+                              ("cage_center_y", ("time",), "m"), ("cage_center_z", ("time",), "m"),
+                              ("ball_orbit_speed", ("time", "ball"), "rad/s"), ("ball_spin_speed", ("time", "ball"), "rad/s"),
+                              ("inner_ring_axial_displacement", ("time",), "m")]:
+        assert ds[name].dims == dims and ds[name].attrs["units"] == units, name
+    assert ds.sizes["ball"] == 11 and ds.time.values[-1] == pytest.approx(2e-3)
+    assert "zhang2016" in ds.attrs["case_toml"] and ds.attrs["model"] == "zhang2016_dynamics"
 
 
 def test_bad_input_is_a_case_error():
