@@ -169,14 +169,14 @@ def run_study(
         plans.append(sweeps.plan_sweep(base, vary, kind="run", duration=dur, point_fn=point_fn,
                                        source=f"{study.source_path} [{t['id']}]"))
     t0 = time.perf_counter()
-    with sweeps._dir_lock(out):
-        records = sweeps.execute(plans, out / RUNS, jobs=jobs, scheduler=scheduler, progress=progress)
+    with sweeps._backend(jobs, scheduler) as backend, sweeps._dir_lock(out):
+        records = sweeps.execute(plans, out / RUNS, progress=progress, backend=backend)
         wall = time.perf_counter() - t0
-        backend = f"dask {scheduler}" if scheduler else f"jobs={jobs or os.cpu_count()}"
+        backend_label = f"dask {scheduler}" if scheduler else f"jobs={jobs or os.cpu_count()}"
         datasets = {}
         for t, plan, recs in zip(chosen, plans, records):
             ds = sweeps.assemble(plan, recs, archive_prefix=f"{RUNS}/",
-                                 attrs={"study": study.name, "study_table": t["id"], "sweep_backend": backend})
+                                 attrs={"study": study.name, "study_table": t["id"], "sweep_backend": backend_label})
             paper = t.get("paper", {})
             if paper:
                 lab = np.array([[normalise_label(paper[o][i]) if o in paper else "" for i in range(len(t["values"]))]
@@ -188,7 +188,7 @@ def run_study(
         n_points = len({pt.archive or id(pt) for plan in plans for pt in plan.points})
         info = {
             "wall_time": wall,
-            "backend": backend,
+            "backend": backend_label,
             "duration": dur,
             "point_fn": sweeps._fn_name(point_fn),
             "n_unique_points": n_points,

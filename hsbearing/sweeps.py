@@ -673,9 +673,12 @@ class _Dask:
 
     name = "dask"
 
-    def __init__(self, address: str, timeout: float = 30.0):
+    #: seconds to wait for the scheduler before reporting bad input
+    CONNECT_TIMEOUT = 15.0
+
+    def __init__(self, address: str, timeout: float | None = None):
         self.address = address
-        self.timeout = timeout
+        self.timeout = self.CONNECT_TIMEOUT if timeout is None else timeout
         self.client = None
 
     def __enter__(self):
@@ -685,6 +688,10 @@ class _Dask:
             raise CaseError("--scheduler", None, "dask.distributed is not installed") from None
         try:
             self.client = Client(self.address, timeout=self.timeout, set_as_default=False)
+            # a worker-less scheduler would queue forever: say so (the tasks still wait for workers)
+            if not self.client.scheduler_info().get("workers"):
+                print(f"hsbearing: the dask scheduler at {self.address} has no workers yet; tasks wait for one",
+                      file=sys.stderr)
         except (OSError, TimeoutError) as exc:
             raise CaseError("--scheduler", None, f"cannot connect to the dask scheduler at {self.address} ({exc})") from None
         return self
@@ -772,6 +779,7 @@ def execute(
     scheduler: str | None = None,
     progress: bool = True,
     retry_failed: bool = False,
+    backend=None,
 ) -> list[list[dict]]:
     """Compute every point of ``plans`` (deduplicated by archive name) -> one record list per plan.
 
@@ -824,10 +832,13 @@ def execute(
             bar.update(dup)
 
     tasks = [(name, (pt.case, plan.kind, plan.duration, plan.point_fn)) for name, (plan, pt) in todo.items()]
-    backend = _backend(jobs, scheduler)
+    owned = backend is None
+    if owned:
+        backend = _backend(jobs, scheduler)
     try:
         # in-process computation (jobs=1) is safely interruptible: no deferral there
-        with (_deferred_sigint() if not isinstance(backend, _Serial) else contextlib.nullcontext()), backend:
+        with (_deferred_sigint() if not isinstance(backend, _Serial) else contextlib.nullcontext()), \
+                (backend if owned else contextlib.nullcontext()):
             backend.run(tasks, on_done)
     finally:
         if bar is not None:
@@ -960,10 +971,13 @@ def run_sweep(
     retry_failed : recompute points whose archive records a status other than ok.
     """
     out_dir = Path(out_dir)
+    if out_dir.exists() and not out_dir.is_dir():
+        raise CaseError(str(out_dir), None, "output must be a directory")
     plan = plan_sweep(case, vary, zip=zip, kind=kind, duration=duration, point_fn=point_fn)
     t0 = time.perf_counter()
-    with _dir_lock(out_dir):
-        (records,) = execute([plan], out_dir, jobs=jobs, scheduler=scheduler, progress=progress, retry_failed=retry_failed)
+    # bad -j / unreachable scheduler are reported before anything is written
+    with _backend(jobs, scheduler) as backend, _dir_lock(out_dir):
+        (records,) = execute([plan], out_dir, progress=progress, retry_failed=retry_failed, backend=backend)
         ds = assemble(plan, records, attrs={"sweep_wall_time": time.perf_counter() - t0,
                                             "sweep_backend": f"dask {scheduler}" if scheduler else f"jobs={jobs or os.cpu_count()}"})
         write_netcdf(ds, out_dir / "sweep.nc")

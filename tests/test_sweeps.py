@@ -336,7 +336,7 @@ def test_dask_local_cluster_equals_local(tmp_path):
 
 def test_unreachable_scheduler_is_bad_input(tmp_path):
     with pytest.raises(CaseError, match="cannot connect"):
-        sweeps._Dask("tcp://127.0.0.1:9", timeout=1.0).__enter__()
+        sweeps._Dask("tcp://127.0.0.1:9", timeout=1.0).__enter__()  # refused port
 
 
 # ----------------------------------------------------------------------------- interruption
@@ -515,3 +515,16 @@ def test_dynamic_sweep_point_equals_direct_simulation(tmp_path):
     arch = open_run(tmp_path / ds["archive"].sel(oil="4050").item())
     np.testing.assert_allclose(arch["cage_center_y"].values, ref["cage_center_y"].values, rtol=1e-9, atol=1e-15)
     np.testing.assert_allclose(arch["inner_contact_load"].values, ref["inner_contact_load"].values, rtol=1e-9)
+
+
+def test_bad_backend_writes_nothing(tmp_path, monkeypatch):
+    from hsbearing import cli
+
+    monkeypatch.setattr(sweeps._Dask, "CONNECT_TIMEOUT", 1.0)
+    out = tmp_path / "x"
+    assert cli.main(["sweep", "zhang2016", "--vary", "axial_load=1,2kN", "--kind", "quasistatic", "-j", "0",
+                     "-o", str(out)]) == 2
+    assert not out.exists()
+    with pytest.raises(CaseError, match="cannot connect"):
+        _qs_sweep(out, {"axial_load": "1,2kN"}, scheduler="tcp://127.0.0.1:9")
+    assert not out.exists()
