@@ -154,3 +154,18 @@ def test_study_bad_input(tmp_path):
         study.load_study(bad)
     with pytest.raises(CaseError, match="no table selected"):
         study.run_study("zhang2016", tmp_path, tables=["table9"], progress=False)
+
+
+@pytest.mark.slow
+def test_study_on_dask_equals_local(tmp_path):
+    distributed = pytest.importorskip("distributed")
+    local = study.run_study("zhang2016", tmp_path / "local", jobs=1, duration="10 ms", point_fn=fake_dynamics,
+                            progress=False, tables=["table5"])
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=True, host="127.0.0.1",
+                                  dashboard_address=None) as cluster:
+        remote = study.run_study("zhang2016", tmp_path / "dask", scheduler=cluster.scheduler_address, duration="10 ms",
+                                 point_fn=fake_dynamics, progress=False, tables=["table5"])
+    a, b = local["tables"]["table5"], remote["tables"]["table5"]
+    for v in ("mean_cage_slip_ratio", "classification", "status", "archive", "paper_classification"):
+        xr.testing.assert_identical(a[v], b[v])
+    assert "execution: dask tcp://127.0.0.1" in (tmp_path / "dask" / "report.md").read_text()
