@@ -166,6 +166,17 @@ def test_bad_pocket_depth_is_case_error():
         gyro.build_model(_case(**{"cage.pocket_depth": "0.6 mm"}))
 
 
+def test_solver_failure_keeps_partial_result():
+    """Numerical failure -> SolverError with the partial Dataset (status says where it stopped)."""
+    from hsbearing.errors import SolverError
+
+    with pytest.raises(SolverError) as info:
+        gyro.simulate(_case(), duration=0.5, wall_limit=0.05)
+    part = info.value.partial
+    assert part is not None and part.attrs["status"].startswith("failed at t =")
+    assert part.sizes["time"] >= 1 and "rfmc" in part
+
+
 def test_starting_moments_windows():
     t = np.linspace(0, 6, 6001)
     M = np.ones_like(t)

@@ -17,7 +17,11 @@ the paper's hand-made variable step.
 
 The decisions taken where the seed is ambiguous or damaged, and every
 regularisation with its parameter, are listed in ``docs/validation/gyro.md``;
-the short version is in the docstrings below (search for "decision").
+the short version is in the docstrings below (search for "decision").  The one
+that matters most: the cage starts where its weight leaves it (resting on the
+balls) and the dynamics run without the weight (``gravity=0``); with the
+weight, pocket friction carries our cage along and it is never struck, which
+contradicts the paper's Figs. 8-9.
 
 References
 ----------
@@ -43,8 +47,7 @@ References
 from __future__ import annotations
 
 import math
-import time as _time
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import numba
