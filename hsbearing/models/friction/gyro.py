@@ -95,7 +95,7 @@ GRAVITY = 9.80665  #: standard gravity [m/s^2]
 # output variables (declared once, here)
 for _n, _d, _u, _l in [
     ("outer_race_speed", ("time",), "rad/s", "outer-race angular speed omega_o(t) (seed 000 operating profile)"),
-    ("cage_angle", ("time",), "rad", "cage angular position about the bearing axis theta_x"),
+    ("cage_angle", ("time",), "rad", "cage rotation angle about X (unwrapped)"),  # same declaration as hsbearing.dynamics
     ("friction_moment_total", ("time",), "N m",
      "total friction moment on the outer race M = M_L + M_E + M_D + M_S + max(M_C, 0) (seed 000 Eq. 1); peak-hold over each output interval"),
     ("friction_moment_viscous", ("time",), "N m", "viscous (lubricant drag) friction moment M_L (seed 000 Eq. 2)"),
