@@ -204,13 +204,17 @@ def test_model_start_matches_quasistatic_loads(model):
     assert np.all(np.isfinite(model.f(model.y0)))
 
 
-def test_arrowhead_jacobian_matches_full_finite_differences(model):
+@pytest.mark.parametrize("loads", [{}, {"operating.radial_load": "800 N", "operating.moment_z": "1 N*m"}])
+def test_arrowhead_jacobian_matches_full_finite_differences(loads):
+    model = dy.build_model(h.load_case("zhang2016", **loads))
     y = model.y0.copy()
     rng = np.random.default_rng(1)
     L = model.layout
     y[L.ball("theta_rel_b")] += rng.normal(scale=1e-3, size=L.Z)  # break the symmetry
     y[L.cage("y_c")] = 20e-6
     y[L.cage("phi_c")] = 0.002
+    y[L.cage("tilt_y_c")] += 1e-3  # tilted cage and (under radial load) ring: the J^T M maps
+    y[L.cage("tiltdot_z_c")] = 0.3
     N = y.size
     J = np.zeros((N, N))
     model.jac(0.0, y, None, J)
