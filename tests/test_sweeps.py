@@ -473,7 +473,10 @@ def test_ctrl_c_on_the_cli(tmp_path):
     loads = ",".join(str(x) for x in range(200, 6200, 200)) + "N"  # 30 quasi-static points
     cmd = [sys.executable, "-m", "hsbearing.cli", "sweep", "zhang2016", "--vary", f"axial_load={loads}",
            "--kind", "quasistatic", "-j", "2", "-o", str(out)]
-    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    # SIGINT back to default in the child: pytest-xdist workers may ignore it, and an ignored
+    # SIGINT is inherited (Python then keeps ignoring it)
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     try:
         deadline = time.time() + 90
         while time.time() < deadline and len(list(out.glob("zhang2016-*.nc"))) < 2 and proc.poll() is None:
