@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 import xarray as xr
 
-from hsbearing import study, sweeps
+from hsbearing import study
 from hsbearing.case import CaseError
 from hsbearing.results import open_run, standard_attrs
 

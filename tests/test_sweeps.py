@@ -8,7 +8,6 @@ picklable by reference, so spawned workers and dask workers import this module.
 
 from __future__ import annotations
 
-import json
 import math
 import os
 import signal
