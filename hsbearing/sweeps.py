@@ -102,10 +102,12 @@ register("archive", (), "1", "path of the point's netCDF archive, relative to th
 register("resumed", (), "1", "1 if the point was read back from an existing archive instead of computed")
 # Quasi-static point summary (kind="quasistatic"); cage_speed and
 # inner_ring_axial_displacement are the core names of results.py (scalars there).
-register("mean_inner_contact_load", (), "N", "ball-inner race normal load Q_i averaged over the balls")
-register("mean_outer_contact_load", (), "N", "ball-outer race normal load Q_o averaged over the balls")
-register("max_inner_contact_load", (), "N", "largest ball-inner race normal load Q_i over the balls")
-register("max_outer_contact_load", (), "N", "largest ball-outer race normal load Q_o over the balls")
+# (also the names hsbearing.analysis.summary uses for a dynamic run, where "over the balls" is
+# "over the balls and over time after the transient")
+register("mean_inner_contact_load", (), "N", "ball-inner race normal load Q_i, mean over the balls (and time)")
+register("mean_outer_contact_load", (), "N", "ball-outer race normal load Q_o, mean over the balls (and time)")
+register("max_inner_contact_load", (), "N", "ball-inner race normal load Q_i, maximum over the balls (and time)")
+register("max_outer_contact_load", (), "N", "ball-outer race normal load Q_o, maximum over the balls (and time)")
 
 _RECORD_VARS = ("status", "error", "wall_time", "archive", "resumed")
 
