@@ -273,9 +273,11 @@ def initial_state(case, layout: StateLayout, g, kind: str = "quasistatic"):
     elif kind == "nominal":
         wc = theoretical_cage_speed(g, case.operating.inner_speed, case.operating.outer_speed)
         gamma = g.D * math.cos(g.alpha0) / g.dm
-        ws = -(case.operating.inner_speed - wc) * (1.0 - gamma) / (g.D / g.dm)  # rolling on the inner race
+        # rolling without slip on the inner race, about the axis perpendicular to the free contact line
+        # (cos a0, -sin a0) in the (x, r) plane, plus the orbital rotation wc about X (absolute omega)
+        ws = -(case.operating.inner_speed - wc) * (1.0 - gamma) / (g.D / g.dm)
         ball = {"x_b": np.zeros(Z), "u_b": np.zeros(Z), "theta_rel_b": np.zeros(Z), "thetadot_b": np.full(Z, wc),
-                "omega_x": np.full(Z, ws * math.cos(g.alpha0)), "omega_y": np.full(Z, ws * math.sin(g.alpha0)),
+                "omega_x": np.full(Z, wc + ws * math.cos(g.alpha0)), "omega_y": np.full(Z, -ws * math.sin(g.alpha0)),
                 "omega_z": np.zeros(Z)}
         ring = {}
         cage_fit = {}

@@ -281,6 +281,24 @@ def test_friction_and_damping_only_dissipate():
     assert E[-1] < 0.05 * E[0]  # most of the kinetic energy is gone in 4 ms
 
 
+def test_rings_turning_together_carry_balls_and_cage_rigidly():
+    """Both rings at 3000 r/min: the bearing turns as a rigid body -- cage and ball orbit speeds equal the
+    ring speed, the balls' absolute angular velocity is the ring speed about X, no sliding at the
+    contacts, no land torque.  Checks the outer-race kinematics (outer_speed) and the nominal start.
+    Drag is off: the model takes the air-oil mixture at rest (docs/dynamics.md)."""
+    case = h.load_case("zhang2016", **{"operating.inner_speed": "3000 rpm", "operating.outer_speed": "3000 rpm"})
+    w = case.operating.inner_speed
+    m = dy.build_model(case, initial="nominal", drag=False, gravity=0.0)
+    ds = dy.simulate(case, duration=2e-3, model=m, annotate=False)
+    assert np.allclose(ds.cage_speed.values / w, 1.0, atol=1e-4)
+    assert np.allclose(ds.ball_orbit_speed.values / w, 1.0, atol=1e-4)
+    assert np.allclose(ds.ball_angular_velocity_x.values[-1] / w, 1.0, atol=1e-4)
+    for race in ("inner", "outer"):
+        slip = ds[f"{race}_slide_roll_ratio"].values * ds[f"{race}_rolling_speed"].values
+        assert np.abs(slip).max() < 1e-2  # m/s (settling of the balls on the races at the start)
+    assert np.abs(ds.cage_land_moment.values).max() < 1e-5
+
+
 def test_short_run_is_symmetric_and_finite(case):
     """Done-when (b), short span: pure axial load keeps the balls identical and the cage inside its clearance."""
     ds = dy.simulate(case, duration=2e-3, annotate=False, gravity=0.0)
