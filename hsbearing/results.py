@@ -149,6 +149,9 @@ def write_netcdf(ds: xr.Dataset, path: str | os.PathLike) -> Path:
         ds = ds.copy()
         ds.attrs = _clean_attrs(ds.attrs)
         ds.to_netcdf(tmp, engine="netcdf4", format="NETCDF4")
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)  # mkstemp creates 0600; give the archive ordinary permissions
         os.replace(tmp, path)
     except BaseException:
         try:

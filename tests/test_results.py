@@ -53,6 +53,9 @@ def test_round_trip_exact(tmp_path):
     back = open_run(path)
     xr.testing.assert_identical(ds, back)
     assert [p.name for p in path.parent.iterdir()] == ["run.nc"]
+    umask = os.umask(0)
+    os.umask(umask)
+    assert os.stat(path).st_mode & 0o777 == 0o666 & ~umask
 
 
 def test_atomic_write_leaves_no_partial_file(tmp_path, monkeypatch):
