@@ -5,7 +5,7 @@ PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed-stamp
-RUN_DURATION ?= 0.02s
+RUN_DURATION ?= 0.7s
 
 .PHONY: run test test-all bench clean venv
 

@@ -148,7 +148,12 @@ def write_netcdf(ds: xr.Dataset, path: str | os.PathLike) -> Path:
     try:
         ds = ds.copy()
         ds.attrs = _clean_attrs(ds.attrs)
-        ds.to_netcdf(tmp, engine="netcdf4", format="NETCDF4")
+        encoding = {
+            name: {"zlib": True, "complevel": 4, "shuffle": True}
+            for name, var in ds.variables.items()
+            if var.dtype.kind in "fiub" and var.ndim > 0
+        }
+        ds.to_netcdf(tmp, engine="netcdf4", format="NETCDF4", encoding=encoding)
         umask = os.umask(0)
         os.umask(umask)
         os.chmod(tmp, 0o666 & ~umask)  # mkstemp creates 0600; give the archive ordinary permissions
