@@ -227,7 +227,8 @@ def test_cage_is_struck_and_mc_grows_with_speed(start_runs):
 
 
 def test_momentum_exchange_conserves_axial_momentum():
-    """Physical invariant: with race traction and damping off, ball/cage impacts conserve angular momentum about the axis."""
+    """Physical invariants: with race traction, friction and damping off, ball/cage impacts conserve the angular
+    momentum about the axis and the kinetic energy."""
     c = _case(**{"friction.coefficient": 0.0, "friction.cage_coefficient": 0.0, "friction.cage_restitution": 1.0})
     m = gyro.build_model(c)
     y = m.y0()
@@ -243,8 +244,18 @@ def test_momentum_exchange_conserves_axial_momentum():
         rm = 0.5 * c.bearing.pitch_diameter
         return m.p[gyro._P_JX] * yy[9] + m.p[gyro._P_MB] * rm**2 * yy[12 + Z:12 + 2 * Z].sum()
 
+    def E(yy):  # kinetic energy: cage translation + rotation, ball orbit (no contact at the ends)
+        rm = 0.5 * c.bearing.pitch_diameter
+        V, w = yy[6:9], yy[9:12]
+        J = m.p[[gyro._P_JX, gyro._P_JY, gyro._P_JZ]]
+        return (0.5 * m.p[gyro._P_MC] * V @ V + 0.5 * J @ (w * w)
+                + 0.5 * m.p[gyro._P_MB] * rm**2 * (yy[12 + Z:12 + 2 * Z] ** 2).sum())
+
     assert abs(res.y[-1, 9]) > 0.1  # the cage was struck
     assert L(res.y[-1]) == pytest.approx(L(res.y[0]), rel=1e-4)
+    assert m.diagnostics(0.0, y)[:, 0].max() == 0.0  # the start stores no elastic energy
+    assert m.diagnostics(res.t[-1], res.y[-1])[:, 0].max() == 0.0  # contacts open at the end
+    assert E(res.y[-1]) == pytest.approx(E(res.y[0]), rel=1e-4)  # elastic impacts, no friction
 
 
 def test_thickness_raises_starting_moment():

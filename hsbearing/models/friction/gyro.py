@@ -714,7 +714,19 @@ class GyroModel:
         if settle and mc_g > 0:
             hi = self.p[_P_NABLA]
             if net(hi) > 0:
-                y[1] = y[1] - brentq(net, 0.0, hi, xtol=1e-16)
+                if self.p[_P_G] > 0:
+                    y[1] = y[1] - brentq(net, 0.0, hi, xtol=1e-16)  # weight carried by the pocket contacts
+                else:
+                    # no weight in the dynamics: the cage just touches (zero approach), so no elastic
+                    # energy is stored in the initial state (it would kick the cage at t = 0)
+                    lo, up = 0.0, hi
+                    for _ in range(200):
+                        mid = 0.5 * (lo + up)
+                        if net(mid) + mc_g > 0.0:  # any contact force
+                            up = mid
+                        else:
+                            lo = mid
+                    y[1] = y[1] - lo
         return y
 
 
