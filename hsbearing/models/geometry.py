@@ -137,8 +137,19 @@ def derive(case) -> Geometry:
 
 def describe(case) -> list[str]:
     """Human-readable lines of the derived geometry (``hsbearing check``)."""
-    g = derive(case)
     mm, deg = 1e3, 180 / math.pi
+    if case.system == "wire_race":
+        b = case.bearing
+        lines = [
+            f"balls: Z = {b.ball_count}, D = {b.ball_diameter*mm:.4g} mm on pitch diameter d_m = {b.pitch_diameter*mm:.5g} mm",
+            f"four ball/wire contacts at alpha = {(b.contact_angle or 0.0)*deg:.4g} deg",
+        ]
+        if b.wire_diameter is not None:
+            lines.append(f"wire diameter d_w = {b.wire_diameter*mm:.4g} mm")
+        if case.operating.preload is not None:
+            lines.append(f"preload delta = {case.operating.preload*1e6:.4g} um")
+        return lines
+    g = derive(case)
     lines = [
         f"balls: Z = {g.Z}, D = {g.D*mm:.4g} mm, pitch diameter d_m = {g.dm*mm:.4g} mm, gamma0 = {g.D*math.cos(g.alpha0)/g.dm:.4f}",
         f"conformity f_i = {g.fi:.4g}, f_o = {g.fo:.4g}; groove radii r_i = {g.ri*mm:.4g} mm, r_o = {g.ro*mm:.4g} mm",
