@@ -1,0 +1,87 @@
+"""Physical invariants of the guide-land film that set the cage whirl (docs/validation/cage_whirl.md).
+
+The short-bearing (Ocvirk) film of :func:`hsbearing.models.cage.guide_land_forces` has no direct
+stiffness at the centre, a direct damping C = pi eta R L^3 / (2 c^3) and a cross-coupled stiffness
+K_xy = C omega / 2.  A free cage on such a film is linearly unstable for any speed: it whirls forward
+at half the cage speed and spirals out at sigma ~ m omega^2 / (4 C) (m omega << C).  These tests
+check the kernel's film function against that closed form, so a sign or factor change in the film
+(which would change the whirl of every dynamic run) is caught.
+"""
+
+import math
+
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+
+from hsbearing.models.cage import guide_land_forces
+
+# zhang2016 default (oil 4109 at 130 degC; see tools/cage_whirl_study.py)
+ETA, R, L, C_GAP, M, OMEGA = 3.604e-3, 0.026, 0.011, 2.0e-4, 3.749e-3, 600.8
+
+
+def _damping():
+    return math.pi * ETA * R * L**3 / (2.0 * C_GAP**3)  # San Andres, Notes 4-5, eps -> 0
+
+
+def _forces_yz(y, z, vy, vz, omega=OMEGA, c=C_GAP, m_eta=ETA):
+    """Film force on the cage in (y, z), assembled exactly as hsbearing.models.kernel.global_rows does."""
+    e = math.hypot(y, z)
+    uy, uz = y / e, z / e
+    Fr, Ft = guide_land_forces(e / c, (y * vy + z * vz) / e / c, omega, (y * vz - z * vy) / e**2, m_eta, R, L, c)
+    return Fr * uy - Ft * uz, Fr * uz + Ft * uy
+
+
+def test_half_frequency_whirl_is_force_free():
+    """A circular orbit whirling at omega/2 carries no film force (the wedge and whirl-squeeze cancel)."""
+    for eps in (0.05, 0.3, 0.8):
+        Fr, Ft = guide_land_forces(eps, 0.0, OMEGA, 0.5 * OMEGA, ETA, R, L, C_GAP)
+        assert abs(Fr) < 1e-12 and abs(Ft) < 1e-12
+        Fr, Ft = guide_land_forces(eps, 0.0, OMEGA, 0.0, ETA, R, L, C_GAP)
+        assert Fr < 0 and Ft > 0  # a static offset: pulled back and pushed forward (direction of rotation)
+
+
+def test_linearised_film_coefficients():
+    """Finite differences of the film force at a small offset give C and K_xy = C omega / 2, no direct stiffness."""
+    C = _damping()
+    e = 1e-3 * C_GAP
+    Fy, Fz = _forces_yz(e, 1e-30, 0.0, 0.0)
+    assert Fz / e == pytest.approx(0.5 * C * OMEGA, rel=1e-4)  # cross-coupled stiffness K_xy
+    assert abs(Fy / e) < 1e-2 * (0.5 * C * OMEGA)  # direct stiffness ~ eps^2 -> 0
+    v = 1e-3 * C_GAP * OMEGA
+    Fy, Fz = _forces_yz(e, 1e-30, v, 0.0)
+    Fy0, _ = _forces_yz(e, 1e-30, 0.0, 0.0)
+    assert (Fy - Fy0) / v == pytest.approx(-C, rel=1e-3)  # direct damping
+
+
+def test_free_cage_spirals_out_at_the_predicted_rate():
+    """Integrating m r'' = F_film(r, r') gives the unstable root of m s^2 + C s - i C omega/2 = 0."""
+    C = _damping()
+    s = (-C + np.sqrt(C * C + 2j * M * C * OMEGA)) / (2.0 * M)
+    assert s.real > 0 and s.imag / OMEGA == pytest.approx(0.5, abs=0.01)
+
+    def rhs(t, u):
+        y, z, vy, vz = u
+        Fy, Fz = _forces_yz(y, z, vy, vz)
+        return [vy, vz, Fy / M, Fz / M]
+
+    r0 = 1e-4 * C_GAP
+    T = 2.0 / s.real  # stays linear: r grows by e^2
+    sol = solve_ivp(rhs, (0.0, T), [r0, 0.0, 0.0, 0.0], method="LSODA", rtol=1e-8, atol=1e-14, dense_output=True)
+    assert sol.success
+    t = np.linspace(0.3 * T, T, 400)
+    y, z = sol.sol(t)[:2]
+    sigma = np.polyfit(t, np.log(np.hypot(y, z)), 1)[0]
+    whirl = np.polyfit(t, np.unwrap(np.arctan2(z, y)), 1)[0]
+    assert sigma == pytest.approx(s.real, rel=0.02)
+    assert whirl / OMEGA == pytest.approx(s.imag / OMEGA, rel=0.01)  # forward half-frequency whirl
+
+
+def test_growth_rate_scales_with_clearance_cubed():
+    """sigma ~ m omega^2 / (4 C) and C ~ c^-3: halving the guide clearance slows the spiral ~8x."""
+    def sigma(c):
+        C = math.pi * ETA * R * L**3 / (2.0 * c**3)
+        return ((-C + np.sqrt(C * C + 2j * M * C * OMEGA)) / (2.0 * M)).real
+
+    assert sigma(0.1e-3) / sigma(0.2e-3) == pytest.approx(1 / 8, rel=0.02)
+    assert sigma(0.2e-3) == pytest.approx(M * OMEGA**2 / (4 * _damping()), rel=0.02)

@@ -1,0 +1,318 @@
+"""What drives the cage whirl of the seed 004 (zhang2016) dynamic model: term switches and sensitivity.
+
+Produces the numbers and figures of docs/validation/cage_whirl.md.
+
+    .venv/bin/python tools/cage_whirl_study.py [-j 2] [--only NAME ...] [--figures-only]
+
+Each run is ``hsbearing.simulate`` of the bundled ``zhang2016`` case (oil 4109, 14000 r/min,
+Fx = 1 kN, 130 degC) with ONE change.  Per run the script records (docs/validation/cage_whirl.md
+explains each quantity):
+
+- ``summary`` of :func:`hsbearing.analysis.orbit.summary` (whirl amplitude, whirl frequency ratio,
+  mean cage slip ratio, classification);
+- ``sigma``: exponential growth rate [1/s] of the cage-centre radius r(t) while it spirals out,
+  ln(0.7/0.25) / (t(r = 0.7 c) - t(r = 0.25 c)), c = guide clearance (NaN if r never reaches 0.7 c);
+- ``t_land``: first time r > 0.9 c [s];
+- ``W_land``, ``W_pocket``: work [J] done on the cage's translation (y, z) by the guide-land film and
+  by everything else except gravity (pocket normal + friction forces, obtained as m a - F_land - m g)
+  from t = 0 to t(r = 0.9 c): which force pumps energy into the whirl;
+- the instantaneous whirl ratio (phase rate of y + i z / cage speed) after the cage reached the land.
+
+Analytic reference (no simulation): the linearised free cage on the short-bearing film
+(:func:`free_cage_eigenvalue`).  Results go to runs/cage_whirl/results.json (git-ignored), the
+figures to docs/validation/cage_whirl_figures/.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+import sys
+import time
+from concurrent.futures import ProcessPoolExecutor
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[1]
+OUT = ROOT / "runs" / "cage_whirl"
+FIG = ROOT / "docs" / "validation" / "cage_whirl_figures"
+
+SHORT = 0.3  # s, mechanism runs (growth phase + a few whirl turns)
+LONG = 0.6  # s, sensitivity runs (~40 Poincare points after the transient, as the seed-004 study)
+
+#: name -> (group, description, case overrides, build_model options, duration [s])
+RUNS = {
+    # --- 1. mechanism: switch one term off at a time (0.3 s)
+    "default": ("mechanism", "all terms (reference)", {}, {}, LONG),
+    "no_gravity": ("mechanism", "gravity = 0", {}, {"gravity": 0.0}, SHORT),
+    "no_pocket_friction": ("mechanism", "pocket friction mu_c = 0", {"friction.cage_coefficient": 0.0}, {}, SHORT),
+    "no_drag": ("mechanism", "air-oil drag F_D off", {}, {"drag": False}, SHORT),
+    "no_ehl_rolling": ("mechanism", "EHL rolling force F_R off", {}, {"ehl_rolling": False}, SHORT),
+    "no_film": ("mechanism", "damping=False: no guide-land film, no pocket squeeze film, no contact damping",
+                {}, {"damping": False}, SHORT),
+    "land_eps_max_0.8": ("mechanism", "film saturation eps_max 0.95 -> 0.8", {}, {"land_eps_max": 0.8}, SHORT),
+    # --- 2. sensitivity to the inputs the paper does not give (0.6 s)
+    "guide_c0.1": ("guide clearance", "outer_land_diameter 52.2 mm (c = 0.1 mm)",
+                   {"bearing.outer_land_diameter": "52.2 mm"}, {}, LONG),
+    "guide_c0.4": ("guide clearance", "outer_land_diameter 52.8 mm (c = 0.4 mm)",
+                   {"bearing.outer_land_diameter": "52.8 mm"}, {}, LONG),
+    "pocket_c0.025": ("pocket clearance", "pocket_diameter 9.575 mm (c_p = 0.025 mm)",
+                      {"cage.pocket_diameter": "9.575 mm"}, {}, LONG),
+    "pocket_c0.1": ("pocket clearance", "pocket_diameter 9.725 mm (c_p = 0.1 mm)",
+                    {"cage.pocket_diameter": "9.725 mm"}, {}, LONG),
+    "pocket_c0.25": ("pocket clearance", "pocket_diameter 10.025 mm (c_p = 0.25 mm > c)",
+                     {"cage.pocket_diameter": "10.025 mm"}, {}, LONG),
+    "mass_x0.5": ("cage mass", "cage density 570 kg/m^3 (m_c x 0.5)", {"materials.cage.density": "570 kg/m^3"}, {}, LONG),
+    "mass_x2": ("cage mass", "cage density 2280 kg/m^3 (m_c x 2)", {"materials.cage.density": "2280 kg/m^3"}, {}, LONG),
+    "land_L5.5": ("land width", "guide-land film length 5.5 mm (half the cage width)", {}, {"land_length": 5.5e-3}, LONG),
+    "land_L3": ("land width", "guide-land film length 3 mm", {}, {"land_length": 3e-3}, LONG),
+    "T80": ("oil temperature", "80 degC (higher viscosity)", {"lubricant.temperature": "80 degC"}, {}, LONG),
+    "T180": ("oil temperature", "180 degC (lower viscosity)", {"lubricant.temperature": "180 degC"}, {}, LONG),
+    "mu_c0.2": ("pocket friction", "mu_c = 0.2", {"friction.cage_coefficient": 0.2}, {}, LONG),
+}
+
+
+# ----------------------------------------------------------------------------------------------
+# analytic reference: the free (unsupported) cage on a short-bearing guide-land film
+# ----------------------------------------------------------------------------------------------
+def film_coefficients(eta, R, L, c, omega):
+    """Linearised short-bearing (Ocvirk, pi-film) coefficients at the centred position [N/m, N s/m].
+
+    From the film forces of :func:`hsbearing.models.cage.guide_land_forces` (San Andres, Modern
+    Lubrication Theory, Notes 4-5, dynamic short-length bearing) at eps -> 0:
+    F_r = -C e' (direct damping), F_t = +K_xy e - C e phi' with
+    C = pi eta R L^3 / (2 c^3) and K_xy = C omega / 2 (cross-coupled stiffness);
+    no direct stiffness (F_r ~ eps^2).  omega = cage + land speed [rad/s].
+    """
+    C = math.pi * eta * R * L**3 / (2.0 * c**3)
+    return C, 0.5 * C * omega
+
+
+def free_cage_eigenvalue(m, C, omega):
+    """Unstable root s = sigma + i nu [1/s] of m s^2 + C s - i C omega / 2 = 0 (z = y + i z ~ e^{s t}).
+
+    The linearised free cage (mass m [kg]) on the film of :func:`film_coefficients`: always one
+    root with sigma > 0 (forward whirl); for m omega << C, sigma ~ m omega^2 / (4 C) and
+    nu ~ omega / 2 (half-frequency whirl).
+    """
+    s = (-C + np.sqrt(C * C + 2j * m * C * omega)) / (2.0 * m)
+    return complex(s)
+
+
+# ----------------------------------------------------------------------------------------------
+def _metrics(name, ds, case, model):
+    from hsbearing.analysis.orbit import summary
+    from hsbearing.models.geometry import derive
+
+    g = derive(case)
+    c = g.guide_clearance
+    t = ds["time"].values
+    y, z = ds["cage_center_y"].values, ds["cage_center_z"].values
+    vy, vz = ds["cage_velocity_y"].values, ds["cage_velocity_z"].values
+    r = np.hypot(y, z)
+    w = ds["cage_speed"].values
+    out = {"name": name, "summary": summary(ds, case), "guide_clearance": c, "pocket_clearance": g.pocket_clearance,
+           "cage_mass": g.cage_mass, "oil_viscosity": float(model.info["oil_viscosity"])}
+
+    def first(level):
+        k = np.nonzero(r > level * c)[0]
+        return float(t[k[0]]) if k.size else float("nan")
+
+    t25, t70, t90 = first(0.25), first(0.7), first(0.9)
+    # growth from the last crossing of 0.25 c before t70 (the start-up transient may exceed 0.25 c briefly)
+    if np.isfinite(t70):
+        k70 = np.searchsorted(t, t70)
+        below = np.nonzero(r[:k70] < 0.25 * c)[0]
+        t25 = float(t[below[-1]]) if below.size else t25
+        out["sigma"] = math.log(0.7 / 0.25) / (t70 - t25) if t70 > t25 else float("nan")
+    else:
+        out["sigma"] = float("nan")
+    out["t_land"] = t90
+    out["r_final_over_c"] = float(np.sqrt(np.mean(r[t > t[-1] - 0.05] ** 2)) / c)
+    # energy budget of the cage translation up to reaching the land
+    m = g.cage_mass
+    grav = float(model.info["options"]["gravity"])
+    Fly = ds["cage_land_force_y"].values
+    Flz = ds["cage_land_force_z"].values
+    ay, az = np.gradient(vy, t), np.gradient(vz, t)
+    Fpy = m * ay - Fly + m * grav  # the rest (pocket contacts and friction): m a = F_land + F_pocket - m g e_y
+    Fpz = m * az - Flz
+    tend = t90 if np.isfinite(t90) else t[-1]
+    sel = t <= tend
+    _tr = getattr(np, "trapezoid", None) or np.trapz
+    out["W_land"] = float(_tr((Fly * vy + Flz * vz)[sel], t[sel]))
+    out["W_pocket"] = float(_tr((Fpy * vy + Fpz * vz)[sel], t[sel]))
+    out["W_gravity"] = float(_tr((-m * grav * vy)[sel], t[sel]))
+    out["KE_end"] = float(0.5 * m * (vy[sel][-1] ** 2 + vz[sel][-1] ** 2))
+    # instantaneous whirl ratio after the land was reached (phase rate / cage speed)
+    if np.isfinite(t90):
+        late = t > max(t90 + 0.02, t[-1] - 0.15)
+        ph = np.unwrap(np.arctan2(z[late], y[late]))
+        if late.sum() > 10:
+            rate = np.polyfit(t[late], ph, 1)[0]
+            out["whirl_ratio_on_land"] = float(rate / np.mean(w[late]))
+        else:
+            out["whirl_ratio_on_land"] = float("nan")
+    else:
+        out["whirl_ratio_on_land"] = float("nan")
+    # ball/pocket and land forces after the land was reached
+    late = t > t[-1] - 0.1
+    Qc = ds["ball_cage_force"].values
+    out["pocket_force_mean"] = float(np.mean(Qc[late]))
+    out["pocket_force_max"] = float(np.max(Qc[late]))
+    out["land_force_mean"] = float(np.mean(np.hypot(Fly, Flz)[late]))
+    # decimated trace for the figures
+    step = max(1, len(t) // 3000)
+    np.savez_compressed(OUT / f"{name}.npz", t=t[::step], y=y[::step], z=z[::step], w=w[::step],
+                        py=ds["poincare_y"].values if "poincare_y" in ds else np.array([]),
+                        pvy=ds["poincare_vy"].values if "poincare_vy" in ds else np.array([]))
+    return out
+
+
+def run_one(name):
+    import hsbearing
+    from hsbearing.dynamics import build_model
+
+    group, desc, over, opts, dur = RUNS[name]
+    case = hsbearing.load_case("zhang2016", **over)
+    t0 = time.time()
+    model = build_model(case, **opts)
+    try:
+        ds = hsbearing.simulate(case, duration=dur, model=model)
+        status = "ok"
+    except Exception as exc:  # SolverError: keep the partial trajectory
+        ds = getattr(exc, "partial", None)
+        status = f"failed: {exc}"
+        if ds is None:
+            return {"name": name, "group": group, "description": desc, "status": status}
+    wall = time.time() - t0
+    out = _metrics(name, ds, case, model)
+    out.update(group=group, description=desc, status=status, wall=wall, duration=dur)
+    print(f"{name}: {wall:.1f} s wall, sigma {out['sigma']:.1f} 1/s, r/c {out['r_final_over_c']:.3f}, "
+          f"{out['summary']['classification']}", flush=True)
+    return out
+
+
+def analytic_table(results):
+    """Free-cage film model of each run: predicted sigma and whirl ratio."""
+    import hsbearing
+    from hsbearing.dynamics import build_model
+    from hsbearing.models import kernel as K
+
+    rows = {}
+    for name, res in results.items():
+        if "summary" not in res:
+            continue
+        group, desc, over, opts, dur = RUNS[name]
+        if not opts.get("damping", True):
+            continue
+        case = hsbearing.load_case("zhang2016", **over)
+        P = build_model(case, **opts).P
+        eta, R, L, c, m = (P[K.P_INDEX[n]] for n in ("eta_film", "R_land", "L_land", "c_land", "m_c"))
+        omega = res["summary"]["mean_cage_speed"]
+        C, Kxy = film_coefficients(eta, R, L, c, omega)
+        s = free_cage_eigenvalue(m, C, omega)
+        rows[name] = {"C": C, "K_xy": Kxy, "sigma_free": s.real, "whirl_ratio_free": s.imag / omega}
+    return rows
+
+
+def figures(results):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    FIG.mkdir(parents=True, exist_ok=True)
+    # 1. r(t)/c of the mechanism runs
+    fig, ax = plt.subplots(figsize=(7, 4))
+    for name, res in results.items():
+        if res.get("group") != "mechanism" or not (OUT / f"{name}.npz").exists():
+            continue
+        d = np.load(OUT / f"{name}.npz")
+        ax.plot(d["t"], np.hypot(d["y"], d["z"]) / res["guide_clearance"], lw=1, label=name)
+    ax.set_xlim(0, SHORT)
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("cage-centre radius / guide clearance")
+    ax.set_yscale("log")
+    ax.set_ylim(1e-2, 1.5)
+    ax.legend(fontsize=7, loc="lower right")
+    ax.set_title("zhang2016 default: cage spiral-out with one term switched off")
+    fig.tight_layout()
+    fig.savefig(FIG / "mechanism_radius.png", dpi=90)
+    plt.close(fig)
+    # 2. sensitivity: r(t)/c per group, and the orbits
+    groups = []
+    for res in results.values():
+        g = res.get("group")
+        if g and g != "mechanism" and g not in groups:
+            groups.append(g)
+    fig, axs = plt.subplots(2, len(groups), figsize=(2.6 * len(groups), 5.2), squeeze=False)
+    for j, g in enumerate(groups):
+        names = ["default"] + [n for n, r in results.items() if r.get("group") == g]
+        for n in names:
+            if not (OUT / f"{n}.npz").exists():
+                continue
+            d = np.load(OUT / f"{n}.npz")
+            c = results[n]["guide_clearance"]
+            lab = "default" if n == "default" else n.split("_", 1)[-1]
+            axs[0, j].plot(d["t"], np.hypot(d["y"], d["z"]) / c, lw=0.8, label=lab)
+            k = d["t"] > d["t"][-1] - 0.2
+            axs[1, j].plot(d["y"][k] * 1e3, d["z"][k] * 1e3, lw=0.5, label=lab)
+        axs[0, j].set_title(g, fontsize=9)
+        axs[0, j].set_ylim(0, 1.1)
+        axs[0, j].set_xlabel("time [s]", fontsize=8)
+        axs[0, j].legend(fontsize=6)
+        axs[1, j].set_aspect("equal")
+        axs[1, j].set_xlabel("D_Y [mm]", fontsize=8)
+        axs[1, j].tick_params(labelsize=6)
+        axs[0, j].tick_params(labelsize=6)
+    axs[0, 0].set_ylabel("r / c", fontsize=8)
+    axs[1, 0].set_ylabel("D_Z [mm] (last 0.2 s)", fontsize=8)
+    fig.tight_layout()
+    fig.savefig(FIG / "sensitivity.png", dpi=80)
+    plt.close(fig)
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("-j", "--jobs", type=int, default=2)
+    ap.add_argument("--only", nargs="*", help="run only these names (others are reused from results.json)")
+    ap.add_argument("--figures-only", action="store_true")
+    a = ap.parse_args(argv)
+    OUT.mkdir(parents=True, exist_ok=True)
+    store = OUT / "results.json"
+    results = json.loads(store.read_text()) if store.exists() else {}
+    if not a.figures_only:
+        todo = a.only if a.only else [n for n in RUNS if n not in results]
+        t0 = time.time()
+        with ProcessPoolExecutor(max_workers=a.jobs) as ex:
+            for res in ex.map(run_one, todo):
+                results[res["name"]] = res
+                store.write_text(json.dumps(results, indent=1, default=float))
+        print(f"study wall {time.time() - t0:.0f} s", file=sys.stderr)
+    an = analytic_table(results)
+    for n, v in an.items():
+        results[n]["analytic"] = v
+    store.write_text(json.dumps(results, indent=1, default=float))
+    figures(results)
+    # table
+    print("| run | r/c (last 50 ms) | whirl ratio (FFT / on land) | sigma sim [1/s] | sigma free cage [1/s] | t(r>0.9c) [s] "
+          "| W_land / W_pocket [uJ] | mean slip | class (conf.) |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    for n, r in results.items():
+        if "summary" not in r:
+            print(f"| {n} | {r.get('status')} |")
+            continue
+        s = r["summary"]
+        sf = r.get("analytic", {}).get("sigma_free", float("nan"))
+        print(f"| {n} | {r['r_final_over_c']:.3f} | {s['whirl_frequency_ratio']:.3f} / {r['whirl_ratio_on_land']:.3f} "
+              f"| {r['sigma']:.1f} | {sf:.1f} | {r['t_land']:.3f} | {r['W_land']*1e6:.2f} / {r['W_pocket']*1e6:.2f} "
+              f"| {s['mean_cage_slip_ratio']:.4f} | {s['classification']} ({s['classification_confidence']:.2f}) |")
+
+
+if __name__ == "__main__":
+    os.environ.setdefault("OMP_NUM_THREADS", "1")
+    main()
