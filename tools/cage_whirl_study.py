@@ -59,6 +59,12 @@ RUNS = {
                    {"bearing.outer_land_diameter": "52.2 mm"}, {}, LONG),
     "guide_c0.4": ("guide clearance", "outer_land_diameter 52.8 mm (c = 0.4 mm)",
                    {"bearing.outer_land_diameter": "52.8 mm"}, {}, LONG),
+    "guide_c0.125": ("guide clearance", "outer_land_diameter 52.25 mm (c = 0.125 mm)",
+                     {"bearing.outer_land_diameter": "52.25 mm"}, {}, LONG),
+    "guide_c0.15": ("guide clearance", "outer_land_diameter 52.3 mm (c = 0.15 mm)",
+                    {"bearing.outer_land_diameter": "52.3 mm"}, {}, LONG),
+    "guide_c0.1_no_gravity": ("guide clearance", "c = 0.1 mm and gravity = 0 (is the weight what holds it?)",
+                              {"bearing.outer_land_diameter": "52.2 mm"}, {"gravity": 0.0}, LONG),
     "pocket_c0.025": ("pocket clearance", "pocket_diameter 9.575 mm (c_p = 0.025 mm)",
                       {"cage.pocket_diameter": "9.575 mm"}, {}, LONG),
     "pocket_c0.1": ("pocket clearance", "pocket_diameter 9.725 mm (c_p = 0.1 mm)",
@@ -100,6 +106,42 @@ def free_cage_eigenvalue(m, C, omega):
     """
     s = (-C + np.sqrt(C * C + 2j * m * C * omega)) / (2.0 * m)
     return complex(s)
+
+
+def free_cage_spiral(m, eta, R, L, c, omega, eps_max=0.95, gravity=9.81, r0_over_c=0.1, t_end=3.0):
+    """Nonlinear free cage on the kernel's film (no balls): growth rate [1/s] by the simulation's metric.
+
+    Integrates m r'' = F_film(r, r') - m g e_y with :func:`hsbearing.models.cage.guide_land_forces`
+    and :func:`~hsbearing.models.cage.smooth_eccentricity` (as in hsbearing.models.kernel.global_rows,
+    without the elastic rub) from r = r0 at rest; returns (sigma, whirl ratio at r = 0.7 c), sigma =
+    ln(0.7/0.25) / (t(0.7 c) - t(0.25 c)) as for the full runs.
+    """
+    from scipy.integrate import solve_ivp
+
+    from hsbearing.models.cage import guide_land_forces, smooth_eccentricity
+
+    def rhs(t, u):
+        y, z, vy, vz = u
+        e = math.hypot(y, z) + 1e-12 * c
+        uy, uz = y / e, z / e
+        eps = smooth_eccentricity(e / c, eps_max)
+        Fr, Ft = guide_land_forces(eps, (y * vy + z * vz) / e / c, omega, (y * vz - z * vy) / e**2, eta, R, L, c)
+        return [vy, vz, (Fr * uy - Ft * uz) / m - gravity, (Fr * uz + Ft * uy) / m]
+
+    def hit(level):
+        ev = lambda t, u: math.hypot(u[0], u[1]) - level * c  # noqa: E731
+        ev.terminal = level > 0.5
+        ev.direction = 1
+        return ev
+
+    sol = solve_ivp(rhs, (0.0, t_end), [r0_over_c * c, 0.0, 0.0, 0.0], method="LSODA", rtol=1e-8,
+                    atol=1e-12 * c, events=[hit(0.25), hit(0.7)])
+    t25, t70 = sol.t_events
+    if len(t70) == 0 or len(t25) == 0:
+        return float("nan"), float("nan")
+    y, z, vy, vz = sol.y_events[1][0]
+    whirl = (y * vz - z * vy) / (y * y + z * z)
+    return math.log(0.7 / 0.25) / (t70[0] - t25[-1]), whirl / omega
 
 
 # ----------------------------------------------------------------------------------------------
@@ -196,6 +238,12 @@ def run_one(name):
     return out
 
 
+def model_defaults():
+    from hsbearing.dynamics import MODEL_DEFAULTS
+
+    return dict(MODEL_DEFAULTS)
+
+
 def analytic_table(results):
     """Free-cage film model of each run: predicted sigma and whirl ratio."""
     import hsbearing
@@ -215,8 +263,60 @@ def analytic_table(results):
         omega = res["summary"]["mean_cage_speed"]
         C, Kxy = film_coefficients(eta, R, L, c, omega)
         s = free_cage_eigenvalue(m, C, omega)
-        rows[name] = {"C": C, "K_xy": Kxy, "sigma_free": s.real, "whirl_ratio_free": s.imag / omega}
+        opt = dict(model_defaults(), **{k: v for k, v in opts.items() if k in model_defaults()})
+        sig_nl, wr_nl = free_cage_spiral(m, eta, R, L, c, omega, opt["land_eps_max"], opt["gravity"])
+        rows[name] = {"C": C, "K_xy": Kxy, "sigma_free": s.real, "whirl_ratio_free": s.imag / omega,
+                      "sigma_free_nonlinear": sig_nl, "whirl_ratio_free_nonlinear": wr_nl}
     return rows
+
+
+def growth_phase(name, res, lo=0.1, hi=0.5):
+    """Whirl ratio and growth rate while the cage spirals from r = lo c to hi c (last such passage).
+
+    From the decimated trace: phase rate of y + i z over the mean cage speed, and the slope of ln r.
+    With the linearised film damping C_f (eps -> 0, :func:`film_coefficients`) and a ball-set
+    'rotating damper' c_b turning with the cage (docs/validation/cage_whirl.md), the whirl turns at
+    rho omega = (C_f omega/2 + c_b omega)/(C_f + c_b), so c_b = C_f (rho - 1/2)/(1 - rho).
+    """
+    f = OUT / f"{name}.npz"
+    out = {"growth_whirl_ratio": float("nan"), "growth_sigma_early": float("nan"), "c_b_estimate": float("nan")}
+    if not f.exists() or "guide_clearance" not in res:
+        return out
+    d = np.load(f)
+    t, y, z, w = d["t"], d["y"], d["z"], d["w"]
+    c = res["guide_clearance"]
+    r = np.hypot(y, z)
+    k_hi = np.nonzero(r > hi * c)[0]
+    if not k_hi.size:
+        return out
+    k1 = k_hi[0]
+    below = np.nonzero(r[:k1] < lo * c)[0]
+    k0 = below[-1] if below.size else 0
+    if k1 - k0 < 20:
+        return out
+    sl = slice(k0, k1 + 1)
+    ph = np.unwrap(np.arctan2(z[sl], y[sl]))
+    rho = np.polyfit(t[sl], ph, 1)[0] / np.mean(w[sl])
+    out["growth_whirl_ratio"] = float(rho)
+    out["growth_sigma_early"] = float(np.polyfit(t[sl], np.log(r[sl]), 1)[0])
+    Cf = res.get("analytic", {}).get("C")
+    if Cf is not None and 0.5 < rho < 1.0:
+        out["c_b_estimate"] = float(Cf * (rho - 0.5) / (1.0 - rho))
+    return out
+
+
+def two_damper_fit(sigma, rho, omega, C_f):
+    """Effective whirling mass M [kg] and ball-set rotating damping c_b [N s/m] from a measured growth.
+
+    Model: M z'' = -C_f (z' - i (omega/2) z) - c_b (z' - i omega z) (complex z = y + i z): the film is a
+    damper turning at omega/2 (its cross-coupled stiffness), the balls a damper turning with the cage.
+    Its root s = sigma + i rho omega gives, exactly, A = nu (nu^2 + sigma^2)/(nu^2 - sigma^2) (nu = rho
+    omega), c_b = C_f (omega/2 - A)/(A - omega), M = (C_f + c_b) sigma / (nu^2 - sigma^2).
+    """
+    nu = rho * omega
+    A = nu * (nu * nu + sigma * sigma) / (nu * nu - sigma * sigma)
+    c_b = C_f * (0.5 * omega - A) / (A - omega)
+    return (C_f + c_b) * sigma / (nu * nu - sigma * sigma), c_b
 
 
 def figures(results):
@@ -296,21 +396,33 @@ def main(argv=None):
     an = analytic_table(results)
     for n, v in an.items():
         results[n]["analytic"] = v
+    for n, r in results.items():
+        r.update(growth_phase(n, r))
+        Cf = r.get("analytic", {}).get("C")
+        if Cf and np.isfinite(r.get("growth_whirl_ratio", np.nan)) and 0.5 < r["growth_whirl_ratio"] < 1:
+            M, cb = two_damper_fit(r["growth_sigma_early"], r["growth_whirl_ratio"], r["summary"]["mean_cage_speed"], Cf)
+            r["two_damper_M"], r["two_damper_c_b"] = M, cb
+            print(f"two-damper fit {n}: M_eff = {M * 1e3:.2f} g (cage {r['cage_mass'] * 1e3:.2f} g), c_b = {cb:.2f} N s/m, "
+                  f"C_f = {Cf:.3g} N s/m")
     store.write_text(json.dumps(results, indent=1, default=float))
     figures(results)
     # table
     print("| run | r/c (last 50 ms) | whirl ratio (FFT / on land) | sigma sim [1/s] | sigma free cage [1/s] | t(r>0.9c) [s] "
-          "| W_land / W_pocket [uJ] | mean slip | class (conf.) |")
-    print("|---|---|---|---|---|---|---|---|---|")
+          "| sigma free cage, nonlinear [1/s] | W_land / W_pocket [uJ] | mean slip | class (conf.) "
+          "| growth phase 0.1-0.5 c: whirl ratio, sigma [1/s] | C_f [N s/m] | c_b est. [N s/m] |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for n, r in results.items():
         if "summary" not in r:
             print(f"| {n} | {r.get('status')} |")
             continue
         s = r["summary"]
         sf = r.get("analytic", {}).get("sigma_free", float("nan"))
+        snl = r.get("analytic", {}).get("sigma_free_nonlinear", float("nan"))
         print(f"| {n} | {r['r_final_over_c']:.3f} | {s['whirl_frequency_ratio']:.3f} / {r['whirl_ratio_on_land']:.3f} "
-              f"| {r['sigma']:.1f} | {sf:.1f} | {r['t_land']:.3f} | {r['W_land']*1e6:.2f} / {r['W_pocket']*1e6:.2f} "
-              f"| {s['mean_cage_slip_ratio']:.4f} | {s['classification']} ({s['classification_confidence']:.2f}) |")
+              f"| {r['sigma']:.1f} | {sf:.1f} | {r['t_land']:.3f} | {snl:.1f} | {r['W_land']*1e6:.2f} / {r['W_pocket']*1e6:.2f} "
+              f"| {s['mean_cage_slip_ratio']:.4f} | {s['classification']} ({s['classification_confidence']:.2f}) "
+              f"| {r['growth_whirl_ratio']:.3f}, {r['growth_sigma_early']:.1f} | {r.get('analytic', {}).get('C', float('nan')):.3g} "
+              f"| {r['c_b_estimate']:.3g} |")
 
 
 if __name__ == "__main__":
