@@ -85,3 +85,31 @@ def test_growth_rate_scales_with_clearance_cubed():
 
     assert sigma(0.1e-3) / sigma(0.2e-3) == pytest.approx(1 / 8, rel=0.02)
     assert sigma(0.2e-3) == pytest.approx(M * OMEGA**2 / (4 * _damping()), rel=0.02)
+
+
+def test_full_model_whirl_lies_between_film_and_ball_set():
+    """Regression of the mechanism found in docs/validation/cage_whirl.md (not a literature value).
+
+    Default zhang2016 case, 0.07 s: while the cage spirals out (0.1 c < r < 0.5 c) it whirls forward
+    between the film's w/2 and the ball set's w (measured 0.61), and the land film does negative work
+    on the cage translation (the energy enters through the pockets).  A sign error in the film or the
+    pocket coupling would break one of these.
+    """
+    import hsbearing
+    from hsbearing.models.geometry import derive
+
+    case = hsbearing.load_case("zhang2016")
+    ds = hsbearing.simulate(case, duration=0.07, annotate=False)
+    c = derive(case).guide_clearance
+    t = ds["time"].values
+    y, z = ds["cage_center_y"].values, ds["cage_center_z"].values
+    vy, vz = ds["cage_velocity_y"].values, ds["cage_velocity_z"].values
+    r = np.hypot(y, z)
+    k1 = np.nonzero(r > 0.5 * c)[0][0]
+    k0 = np.nonzero(r[:k1] < 0.1 * c)[0][-1]
+    sl = slice(k0, k1 + 1)
+    ratio = np.polyfit(t[sl], np.unwrap(np.arctan2(z[sl], y[sl])), 1)[0] / np.mean(ds["cage_speed"].values[sl])
+    assert 0.52 < ratio < 0.9
+    P_land = ds["cage_land_force_y"].values * vy + ds["cage_land_force_z"].values * vz
+    sel = t <= t[k1]
+    assert np.trapezoid(P_land[sel], t[sel]) < 0

@@ -53,6 +53,19 @@ RUNS = {
     "no_ehl_rolling": ("mechanism", "EHL rolling force F_R off", {}, {"ehl_rolling": False}, SHORT),
     "no_film": ("mechanism", "damping=False: no guide-land film, no pocket squeeze film, no contact damping",
                 {}, {"damping": False}, SHORT),
+    "no_traction": ("mechanism", "friction=False: no race traction, no pocket/land friction (balls not tied to the races)",
+                    {}, {"friction": False}, SHORT),
+    "no_traction_no_gravity": ("mechanism", "friction=False and gravity = 0 (clean linear growth)",
+                               {}, {"friction": False, "gravity": 0.0}, SHORT),
+    "pocket_film_min_x4": ("mechanism", "pocket squeeze-film floor h_min 0.5 -> 2 um (weaker pocket film damping)",
+                           {}, {"pocket_film_min": 2e-6}, SHORT),
+    "pocket_film_min_x0.25": ("mechanism", "pocket squeeze-film floor h_min 0.5 -> 0.125 um (stronger pocket film damping)",
+                              {}, {"pocket_film_min": 0.125e-6}, SHORT),
+    "tilt_frozen": ("mechanism", "cage diametral inertia x100 (1.13e-4 kg m^2): cage tilt practically frozen",
+                    {"cage.diametral_inertia": "1.1331598802612628e-4 kg*m^2"}, {}, SHORT),
+    "tilt_frozen_no_gravity": ("mechanism", "tilt frozen (I_d x100) and gravity = 0",
+                               {"cage.diametral_inertia": "1.1331598802612628e-4 kg*m^2"}, {"gravity": 0.0}, SHORT),
+    "contact_damping_0.02": ("mechanism", "ball/race contact damping ratio 0.1 -> 0.02", {}, {"contact_damping_ratio": 0.02}, SHORT),
     "land_eps_max_0.8": ("mechanism", "film saturation eps_max 0.95 -> 0.8", {}, {"land_eps_max": 0.8}, SHORT),
     # --- 2. sensitivity to the inputs the paper does not give (0.6 s)
     "guide_c0.1": ("guide clearance", "outer_land_diameter 52.2 mm (c = 0.1 mm)",
@@ -376,14 +389,127 @@ def figures(results):
     plt.close(fig)
 
 
+def linear_modes(t_settle=0.04, n_snap=3, **opts):
+    """Eigenvalues of the full model's Jacobian at the centred steady state (gravity off).
+
+    Integrates the default case for ``t_settle`` with gravity = 0 (the cage stays centred to round-off),
+    then evaluates the compiled Jacobian (``DynamicModel.jac``) at ``n_snap`` instants 1/(3 Z f_c)
+    apart (the ball set rotates, so the linearisation is only approximately autonomous) and returns,
+    per instant, the unstable eigenvalues (real part > 1 1/s) with their whirl ratio Im/omega_c and the
+    share of the eigenvector (scaled by :attr:`DynamicModel.hscale`) in each state group.
+    """
+    import hsbearing
+    from hsbearing.dynamics import build_model
+    from hsbearing.solvers.cvode import integrate
+    from hsbearing.solvers.state import BALL_STATES, CAGE_STATES
+
+    case = hsbearing.load_case("zhang2016")
+    model = build_model(case, gravity=0.0, **opts)
+    L = model.layout
+    Z = L.Z
+    wc = float(model.y0[L.cage("phidot_c")])
+    dt_snap = 2 * math.pi / wc / (3 * Z)
+    t_eval = np.concatenate([[0.0, t_settle], t_settle + dt_snap * np.arange(1, n_snap)])
+    res = integrate(model.rhs, model.y0, t_eval, rtol=1e-7, atol=1e-10, jacfn=model.jac)
+    out = []
+    names = [f"ball {n}" for n in BALL_STATES] + [f"cage {n}" for n in CAGE_STATES] + ["inner ring"]
+    for k in range(1, len(res.t)):
+        y = res.y[k]
+        J = np.zeros((L.size, L.size))
+        model.jac(res.t[k], y, np.zeros(L.size), J)
+        lam, V = np.linalg.eig(J)
+        wcage = float(y[L.cage("phidot_c")])
+        rows = []
+        for i in np.nonzero((lam.real > 1.0) & (lam.imag >= 0))[0]:
+            v = np.abs(V[:, i]) / model.hscale  # back to physical units relative to typical scales
+            v = np.abs(V[:, i]) * 0 + np.abs(V[:, i]) / np.maximum(model.hscale, 1e-30)
+            share = {}
+            for j, n in enumerate(BALL_STATES):
+                share[f"ball {n}"] = float(np.sum(v[j * Z:(j + 1) * Z] ** 2))
+            for j, n in enumerate(CAGE_STATES):
+                share[f"cage {n}"] = float(v[L.cage0 + j] ** 2)
+            share["inner ring"] = float(np.sum(v[L.ring0:] ** 2))
+            tot = sum(share.values())
+            share = {n: share[n] / tot for n in names if share[n] / tot > 0.02}
+            rows.append({"sigma": float(lam[i].real), "whirl_ratio": float(lam[i].imag / wcage), "share": share})
+        out.append({"t": float(res.t[k]), "cage_radius": float(math.hypot(y[L.cage("y_c")], y[L.cage("z_c")])),
+                    "omega_c": wcage, "unstable": rows})
+    return out
+
+
+def force_decomposition(duration=0.26):
+    """Forces on the cage in the whirl frame during the clean linear growth (default case, gravity off).
+
+    Runs the default case without gravity (the cage leaves the centre from round-off, a clean
+    exponential) and, for r in [0.01, 0.05], [0.05, 0.2], [0.2, 0.5] c, returns the medians of the
+    pocket force (m a - F_land) and of the land-film force per unit eccentricity, split into the radial
+    (outward +) and tangential (forward +) components, with the whirl ratio and growth rate, and the
+    rms ball-in-pocket offset r_p (theta_b - phi_c) against the rms cage eccentricity.
+    """
+    import hsbearing
+    from hsbearing.models.geometry import derive
+
+    case = hsbearing.load_case("zhang2016")
+    g = derive(case)
+    m, c = g.cage_mass, g.guide_clearance
+    ds = hsbearing.simulate(case, duration=duration, gravity=0.0)
+    t = ds["time"].values
+    y, z = ds["cage_center_y"].values, ds["cage_center_z"].values
+    vy, vz = ds["cage_velocity_y"].values, ds["cage_velocity_z"].values
+    Fly, Flz = ds["cage_land_force_y"].values, ds["cage_land_force_z"].values
+    Fpy, Fpz = m * np.gradient(vy, t) - Fly, m * np.gradient(vz, t) - Flz
+    r = np.hypot(y, z)
+    r = np.where(r > 0, r, np.nan)
+    uy, uz = y / r, z / r
+
+    def rad(fy, fz):
+        return fy * uy + fz * uz
+
+    def tan(fy, fz):
+        return -fy * uz + fz * uy
+
+    w = ds["cage_speed"].values
+    rows = []
+    for lo, hi in ((0.01, 0.05), (0.05, 0.2), (0.2, 0.5)):
+        k = (r > lo * c) & (r < hi * c) & (t > 0.05)
+        if k.sum() < 20:
+            continue
+        nu = float(np.median(tan(vy, vz)[k] / r[k]))
+        sig = float(np.median(rad(vy, vz)[k] / r[k]))
+        th = ds["ball_orbit_angle"].values[k] - ds["cage_angle"].values[k][:, None]
+        th = th - th.mean(0)
+        rows.append(dict(
+            r_lo=lo, r_hi=hi, whirl_ratio=nu / float(np.median(w[k])), sigma=sig, omega_c=float(np.median(w[k])),
+            pocket_radial=float(np.median(rad(Fpy, Fpz)[k] / r[k])), pocket_tangential=float(np.median(tan(Fpy, Fpz)[k] / r[k])),
+            land_radial=float(np.median(rad(Fly, Flz)[k] / r[k])), land_tangential=float(np.median(tan(Fly, Flz)[k] / r[k])),
+            cage_inertia_radial=m * (sig**2 - nu**2), cage_inertia_tangential=m * 2 * sig * nu,
+            ball_offset_rms=float(np.sqrt(np.mean(th**2))) * 0.5 * g.dm, cage_e_rms=float(np.sqrt(np.mean(r[k] ** 2))),
+            pocket_force_mean=float(ds["ball_cage_force"].values[k].mean()),
+            pocket_force_min=float(ds["ball_cage_force"].values[k].min())))
+    return rows
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("-j", "--jobs", type=int, default=2)
     ap.add_argument("--only", nargs="*", help="run only these names (others are reused from results.json)")
     ap.add_argument("--figures-only", action="store_true")
+    ap.add_argument("--decompose", action="store_true", help="force decomposition in the whirl frame (one 0.26 s run)")
     a = ap.parse_args(argv)
     OUT.mkdir(parents=True, exist_ok=True)
     store = OUT / "results.json"
+    if a.decompose:
+        rows = force_decomposition()
+        (OUT / "decomposition.json").write_text(json.dumps(rows, indent=1))
+        print("| r/c | whirl ratio | sigma [1/s] | pocket F_r/e, F_t/e [N/m] | land F_r/e, F_t/e [N/m] "
+              "| m(sigma^2-nu^2), 2 m sigma nu [N/m] | ball-in-pocket offset / e (rms) | pocket force mean, min [N] |")
+        print("|---|---|---|---|---|---|---|---|")
+        for q in rows:
+            print(f"| {q['r_lo']}-{q['r_hi']} | {q['whirl_ratio']:.3f} | {q['sigma']:.1f} | {q['pocket_radial']:.0f}, "
+                  f"{q['pocket_tangential']:.0f} | {q['land_radial']:.0f}, {q['land_tangential']:.0f} | "
+                  f"{q['cage_inertia_radial']:.0f}, {q['cage_inertia_tangential']:.0f} | "
+                  f"{q['ball_offset_rms'] / q['cage_e_rms']:.2f} | {q['pocket_force_mean']:.3f}, {q['pocket_force_min']:.3f} |")
+        return
     results = json.loads(store.read_text()) if store.exists() else {}
     if not a.figures_only:
         todo = a.only if a.only else [n for n in RUNS if n not in results]
