@@ -437,7 +437,7 @@ def linear_modes(t_settle=0.04, n_snap=3, **opts):
     return out
 
 
-def force_decomposition(duration=0.26):
+def force_decomposition(duration=0.26, t_min=0.05, bands=((0.01, 0.05), (0.05, 0.2), (0.2, 0.5)), **opts):
     """Forces on the cage in the whirl frame during the clean linear growth (default case, gravity off).
 
     Runs the default case without gravity (the cage leaves the centre from round-off, a clean
@@ -452,12 +452,14 @@ def force_decomposition(duration=0.26):
     case = hsbearing.load_case("zhang2016")
     g = derive(case)
     m, c = g.cage_mass, g.guide_clearance
-    ds = hsbearing.simulate(case, duration=duration, gravity=0.0)
+    opts = dict({"gravity": 0.0}, **opts)
+    grav = opts["gravity"]
+    ds = hsbearing.simulate(case, duration=duration, **opts)
     t = ds["time"].values
     y, z = ds["cage_center_y"].values, ds["cage_center_z"].values
     vy, vz = ds["cage_velocity_y"].values, ds["cage_velocity_z"].values
     Fly, Flz = ds["cage_land_force_y"].values, ds["cage_land_force_z"].values
-    Fpy, Fpz = m * np.gradient(vy, t) - Fly, m * np.gradient(vz, t) - Flz
+    Fpy, Fpz = m * np.gradient(vy, t) - Fly + m * grav, m * np.gradient(vz, t) - Flz
     r = np.hypot(y, z)
     r = np.where(r > 0, r, np.nan)
     uy, uz = y / r, z / r
@@ -470,8 +472,8 @@ def force_decomposition(duration=0.26):
 
     w = ds["cage_speed"].values
     rows = []
-    for lo, hi in ((0.01, 0.05), (0.05, 0.2), (0.2, 0.5)):
-        k = (r > lo * c) & (r < hi * c) & (t > 0.05)
+    for lo, hi in bands:
+        k = (r > lo * c) & (r < hi * c) & (t > t_min)
         if k.sum() < 20:
             continue
         nu = float(np.median(tan(vy, vz)[k] / r[k]))
@@ -499,16 +501,32 @@ def main(argv=None):
     OUT.mkdir(parents=True, exist_ok=True)
     store = OUT / "results.json"
     if a.decompose:
-        rows = force_decomposition()
-        (OUT / "decomposition.json").write_text(json.dumps(rows, indent=1))
-        print("| r/c | whirl ratio | sigma [1/s] | pocket F_r/e, F_t/e [N/m] | land F_r/e, F_t/e [N/m] "
-              "| m(sigma^2-nu^2), 2 m sigma nu [N/m] | ball-in-pocket offset / e (rms) | pocket force mean, min [N] |")
-        print("|---|---|---|---|---|---|---|---|")
+        variants = {"default, gravity 0": dict(),
+                    "default (with gravity)": dict(gravity=9.81, t_min=0.01, bands=((0.25, 0.6),), duration=0.08),
+                    "friction=False (with gravity)": dict(gravity=9.81, t_min=0.01, bands=((0.25, 0.6),), duration=0.09,
+                                                          friction=False)}
+        allrows = []
+        for lab, kw in variants.items():
+            for q in force_decomposition(**kw):
+                q["variant"] = lab
+                allrows.append(q)
+        (OUT / "decomposition.json").write_text(json.dumps(allrows, indent=1))
+        rows = allrows
+        print("| run | r/c | whirl ratio | sigma [1/s] | pocket F_r/e, F_t/e [N/m] | land F_r/e, F_t/e [N/m] "
+              "| m(sigma^2-nu^2), 2 m sigma nu [N/m] | ball-in-pocket offset / e (rms) | pocket force mean, min [N] "
+              "| ball inertia (Z/2) m_b [(w-nu)^2-sigma^2], (Z/2) m_b 2 sigma (w-nu) [N/m] |")
+        print("|---|---|---|---|---|---|---|---|---|---|")
+        from hsbearing.models.geometry import derive as _derive
+        import hsbearing as _h
+        _g = _derive(_h.load_case("zhang2016"))
+        mZ = 0.5 * _g.Z * _g.ball_mass
         for q in rows:
-            print(f"| {q['r_lo']}-{q['r_hi']} | {q['whirl_ratio']:.3f} | {q['sigma']:.1f} | {q['pocket_radial']:.0f}, "
+            nu, w, sg = q["whirl_ratio"] * q["omega_c"], q["omega_c"], q["sigma"]
+            print(f"| {q['variant']} | {q['r_lo']}-{q['r_hi']} | {q['whirl_ratio']:.3f} | {q['sigma']:.1f} | {q['pocket_radial']:.0f}, "
                   f"{q['pocket_tangential']:.0f} | {q['land_radial']:.0f}, {q['land_tangential']:.0f} | "
                   f"{q['cage_inertia_radial']:.0f}, {q['cage_inertia_tangential']:.0f} | "
-                  f"{q['ball_offset_rms'] / q['cage_e_rms']:.2f} | {q['pocket_force_mean']:.3f}, {q['pocket_force_min']:.3f} |")
+                  f"{q['ball_offset_rms'] / q['cage_e_rms']:.2f} | {q['pocket_force_mean']:.3f}, {q['pocket_force_min']:.3f} "
+                  f"| {mZ * ((w - nu) ** 2 - sg**2):.0f}, {mZ * 2 * sg * (w - nu):.0f} |")
         return
     results = json.loads(store.read_text()) if store.exists() else {}
     if not a.figures_only:
