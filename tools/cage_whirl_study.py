@@ -437,6 +437,50 @@ def linear_modes(t_settle=0.04, n_snap=3, **opts):
     return out
 
 
+def coupled_cage_root(C_f, omega, m_c, m_b, Z, c_t):
+    """Unstable root s = sigma + i nu [1/s] of the linear cage + film + dragged-ball model.
+
+    z = D_Y + i D_Z ~ e^{st}.  The film is a damper turning at omega/2 (:func:`film_coefficients`); each
+    ball stays on its pocket wall (preloaded by the land drag torque), so its position relative to the
+    ball set (turning at omega) follows the cage, and it reacts with its inertia m_b and the race
+    traction c_t [N s/m per ball] resisting its velocity relative to the ball set; summed over the
+    ball set (the tangential projection averages to Z/2):
+
+        m_c s^2 + C_f (s - i omega/2) + (Z/2) [m_b (s - i omega)^2 + c_t (s - i omega)] = 0.
+    """
+    a = m_c + 0.5 * Z * m_b
+    b = C_f + 0.5 * Z * c_t - 1j * Z * m_b * omega
+    cc = -0.5j * C_f * omega - 0.5 * Z * m_b * omega**2 - 0.5j * Z * c_t * omega
+    r = np.roots([a, b, cc])
+    return complex(r[np.argmax(r.real)])
+
+
+def ball_force_regression(ds, c, dm, lo=0.02, hi=0.3, t_min=0.05):
+    """Per-ball force modulations regressed on the ball's position s, velocity s' and acceleration s''
+    relative to the ball set (s = r_p (theta_b - mean_j theta_b), its time mean removed), over the
+    samples with lo c < r < hi c.  Returns {variable: (k [N/m], c [N s/m], m [kg], R^2)}."""
+    t = ds["time"].values
+    r = np.hypot(ds["cage_center_y"].values, ds["cage_center_z"].values)
+    k = (r > lo * c) & (r < hi * c) & (t > t_min)
+    th = ds["ball_orbit_angle"].values
+    d = th - th.mean(1, keepdims=True)
+    sp = 0.5 * dm * (d - d[k].mean(0))
+    sd = np.gradient(sp, t, axis=0)
+    sdd = np.gradient(sd, t, axis=0)
+    A = np.column_stack([sp[k].ravel(), sd[k].ravel(), sdd[k].ravel()])
+    out = {}
+    for n in ("ball_cage_force", "ball_cage_friction", "inner_traction_rolling", "outer_traction_rolling",
+              "ball_drag_force", "inner_rolling_force", "outer_rolling_force"):
+        if n not in ds:
+            continue
+        X = ds[n].values
+        X = (X - X.mean(1, keepdims=True))[k].ravel()
+        coef = np.linalg.lstsq(A, X, rcond=None)[0]
+        r2 = 1 - np.sum((X - A @ coef) ** 2) / max(np.sum((X - X.mean()) ** 2), 1e-300)
+        out[n] = (float(coef[0]), float(coef[1]), float(coef[2]), float(r2))
+    return out
+
+
 def force_decomposition(duration=0.26, t_min=0.05, bands=((0.01, 0.05), (0.05, 0.2), (0.2, 0.5)), **opts):
     """Forces on the cage in the whirl frame during the clean linear growth (default case, gravity off).
 
@@ -472,6 +516,20 @@ def force_decomposition(duration=0.26, t_min=0.05, bands=((0.01, 0.05), (0.05, 0
 
     w = ds["cage_speed"].values
     rows = []
+    if opts["gravity"] == 0.0:
+        reg = ball_force_regression(ds, c, g.dm)
+        print("per-ball force modulation vs ball position s, velocity s', acceleration s'' relative to the ball set:")
+        for n, (ks, cs, ms, r2) in reg.items():
+            print(f"  {n:26s} {ks:8.1f} N/m  {cs:8.3f} N s/m  {ms * 1e3:7.3f} g   R^2 {r2:.3f}")
+        c_t = -(reg["inner_traction_rolling"][1] + reg["outer_traction_rolling"][1])
+        rows_theory = {}
+        for lab, Cf in (("c 0.1 mm", 196.0), ("c 0.125 mm", 100.0), ("c 0.15 mm", 58.0), ("c 0.2 mm (default)", 24.5),
+                        ("c 0.4 mm / L 5.5 mm", 3.06), ("L 3 mm", 0.497), ("no film", 0.0)):
+            sr = coupled_cage_root(Cf, float(np.median(w)), m, g.ball_mass, g.Z, c_t)
+            rows_theory[lab] = (Cf, sr.real, sr.imag / float(np.median(w)))
+        print(f"coupled linear theory with c_t = {c_t:.3f} N s/m per ball (race traction, regressed above):")
+        for lab, (Cf, sg, rho) in rows_theory.items():
+            print(f"  {lab:22s} C_f {Cf:7.2f} N s/m -> sigma {sg:6.1f} 1/s, whirl ratio {rho:.3f}")
     for lo, hi in bands:
         k = (r > lo * c) & (r < hi * c) & (t > t_min)
         if k.sum() < 20:
