@@ -527,6 +527,7 @@ def force_decomposition(duration=0.26, t_min=0.05, bands=((0.01, 0.05), (0.05, 0
                         ("c 0.4 mm / L 5.5 mm", 3.06), ("L 3 mm", 0.497), ("no film", 0.0)):
             sr = coupled_cage_root(Cf, float(np.median(w)), m, g.ball_mass, g.Z, c_t)
             rows_theory[lab] = (Cf, sr.real, sr.imag / float(np.median(w)))
+        (OUT / "ball_traction.json").write_text(json.dumps({"c_t": c_t, "omega_c": float(np.median(w)), "regression": reg}, indent=1))
         print(f"coupled linear theory with c_t = {c_t:.3f} N s/m per ball (race traction, regressed above):")
         for lab, (Cf, sg, rho) in rows_theory.items():
             print(f"  {lab:22s} C_f {Cf:7.2f} N s/m -> sigma {sg:6.1f} 1/s, whirl ratio {rho:.3f}")
@@ -547,6 +548,60 @@ def force_decomposition(duration=0.26, t_min=0.05, bands=((0.01, 0.05), (0.05, 0
             pocket_force_mean=float(ds["ball_cage_force"].values[k].mean()),
             pocket_force_min=float(ds["ball_cage_force"].values[k].min())))
     return rows
+
+
+def theory_figure(results):
+    """Growth rate and whirl ratio vs film damping C_f: coupled linear theory and the simulated runs."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import hsbearing
+    from hsbearing.models.geometry import derive
+
+    f = OUT / "ball_traction.json"
+    if not f.exists():
+        return
+    bt = json.loads(f.read_text())
+    g = derive(hsbearing.load_case("zhang2016"))
+    w = bt["omega_c"]
+    Cf = np.logspace(-1, 2.6, 200)
+    roots = [coupled_cage_root(x, w, g.cage_mass, g.ball_mass, g.Z, bt["c_t"]) for x in Cf]
+    free = [free_cage_eigenvalue(g.cage_mass, x, w) for x in Cf]
+    fig, ax = plt.subplots(1, 2, figsize=(9, 3.6))
+    ax[0].loglog(Cf, [r.real for r in roots], "k-", label="cage + film + dragged balls (theory)")
+    ax[0].loglog(Cf, [r.real for r in free], "k:", label="cage on the film alone")
+    ax[1].semilogx(Cf, [r.imag / w for r in roots], "k-")
+    ax[1].semilogx(Cf, [r.imag / w for r in free], "k:")
+    sims = {"default": "default", "no_gravity": "default, g = 0", "guide_c0.15": "c 0.15 mm", "guide_c0.4": "c 0.4 mm",
+            "mass_x0.5": "m_c x0.5", "mass_x2": "m_c x2", "pocket_c0.25": "c_p 0.25 mm"}
+    for n, lab in sims.items():
+        r = results.get(n)
+        if not r or not np.isfinite(r.get("growth_whirl_ratio", np.nan)):
+            continue
+        C = r["analytic"]["C"]
+        ax[0].loglog(C, r["growth_sigma_early"], "o", label=lab)
+        ax[1].semilogx(C, r["growth_whirl_ratio"], "o")
+    # the clean exponential at c = 0.1 mm without gravity (0.2-0.6 s of the trace)
+    d = OUT / "guide_c0.1_no_gravity.npz"
+    if d.exists():
+        q = np.load(d)
+        k = q["t"] > 0.2
+        sg = np.polyfit(q["t"][k], np.log(np.hypot(q["y"][k], q["z"][k])), 1)[0]
+        rho = np.polyfit(q["t"][k], np.unwrap(np.arctan2(q["z"][k], q["y"][k])), 1)[0] / np.mean(q["w"][k])
+        C = results["guide_c0.1_no_gravity"]["analytic"]["C"]
+        ax[0].loglog(C, sg, "s", label="c 0.1 mm, g = 0")
+        ax[1].semilogx(C, rho, "s")
+    ax[0].set_xlabel("guide-land film damping C_f [N s/m]")
+    ax[0].set_ylabel("growth rate sigma [1/s]")
+    ax[1].set_xlabel("guide-land film damping C_f [N s/m]")
+    ax[1].set_ylabel("whirl ratio nu / omega_c (growth phase)")
+    ax[1].set_ylim(0.4, 1.0)
+    ax[0].legend(fontsize=6)
+    fig.suptitle(f"linear theory (c_t = {bt['c_t']:.2f} N s/m per ball from the traction regression) vs simulations", fontsize=8)
+    fig.tight_layout()
+    fig.savefig(FIG / "linear_theory.png", dpi=90)
+    plt.close(fig)
 
 
 def main(argv=None):
@@ -608,6 +663,7 @@ def main(argv=None):
                   f"C_f = {Cf:.3g} N s/m")
     store.write_text(json.dumps(results, indent=1, default=float))
     figures(results)
+    theory_figure(results)
     # table
     print("| run | r/c (last 50 ms) | whirl ratio (FFT / on land) | sigma sim [1/s] | sigma free cage [1/s] | t(r>0.9c) [s] "
           "| sigma free cage, nonlinear [1/s] | W_land / W_pocket [uJ] | mean slip | class (conf.) "
