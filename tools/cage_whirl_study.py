@@ -78,6 +78,10 @@ RUNS = {
                     {"bearing.outer_land_diameter": "52.3 mm"}, {}, LONG),
     "guide_c0.1_no_gravity": ("guide clearance", "c = 0.1 mm and gravity = 0 (is the weight what holds it?)",
                               {"bearing.outer_land_diameter": "52.2 mm"}, {"gravity": 0.0}, LONG),
+    "guide_c0.4_no_gravity": ("guide clearance", "c = 0.4 mm and gravity = 0 (clean linear growth for the theory check)",
+                              {"bearing.outer_land_diameter": "52.8 mm"}, {"gravity": 0.0}, SHORT),
+    "land_L5.5_no_gravity": ("land width", "land 5.5 mm and gravity = 0 (clean linear growth for the theory check)",
+                             {}, {"land_length": 5.5e-3, "gravity": 0.0}, SHORT),
     "pocket_c0.025": ("pocket clearance", "pocket_diameter 9.575 mm (c_p = 0.025 mm)",
                       {"cage.pocket_diameter": "9.575 mm"}, {}, LONG),
     "pocket_c0.1": ("pocket clearance", "pocket_diameter 9.725 mm (c_p = 0.1 mm)",
@@ -550,6 +554,28 @@ def force_decomposition(duration=0.26, t_min=0.05, bands=((0.01, 0.05), (0.05, 0
     return rows
 
 
+def clean_growth_labels():
+    return {"no_gravity": "c 0.2 mm, g = 0", "guide_c0.1_no_gravity": "c 0.1 mm, g = 0",
+            "guide_c0.4_no_gravity": "c 0.4 mm, g = 0", "land_L5.5_no_gravity": "L 5.5 mm, g = 0"}
+
+
+def clean_growth(name, results):
+    """(sigma [1/s], whirl ratio, C_f [N s/m]) of the exponential growth of a gravity-free run, or None."""
+    f = OUT / f"{name}.npz"
+    if not f.exists() or name not in results or "analytic" not in results[name]:
+        return None
+    q = np.load(f)
+    t, y, z, w = q["t"], q["y"], q["z"], q["w"]
+    c = results[name]["guide_clearance"]
+    r = np.hypot(y, z)
+    k = (t > 0.2) if name == "guide_c0.1_no_gravity" else ((r > 0.01 * c) & (r < 0.3 * c) & (t > 0.02))
+    if k.sum() < 20:
+        return None
+    sg = np.polyfit(t[k], np.log(r[k]), 1)[0]
+    rho = np.polyfit(t[k], np.unwrap(np.arctan2(z[k], y[k])), 1)[0] / np.mean(w[k])
+    return float(sg), float(rho), float(results[name]["analytic"]["C"])
+
+
 def theory_figure(results):
     """Growth rate and whirl ratio vs film damping C_f: coupled linear theory and the simulated runs."""
     import matplotlib
@@ -573,7 +599,7 @@ def theory_figure(results):
     ax[0].loglog(Cf, [r.real for r in free], "k:", label="cage on the film alone")
     ax[1].semilogx(Cf, [r.imag / w for r in roots], "k-")
     ax[1].semilogx(Cf, [r.imag / w for r in free], "k:")
-    sims = {"default": "default", "no_gravity": "default, g = 0", "guide_c0.15": "c 0.15 mm", "guide_c0.4": "c 0.4 mm",
+    sims = {"default": "default", "guide_c0.15": "c 0.15 mm", "guide_c0.4": "c 0.4 mm",
             "mass_x0.5": "m_c x0.5", "mass_x2": "m_c x2", "pocket_c0.25": "c_p 0.25 mm"}
     for n, lab in sims.items():
         r = results.get(n)
@@ -582,16 +608,13 @@ def theory_figure(results):
         C = r["analytic"]["C"]
         ax[0].loglog(C, r["growth_sigma_early"], "o", label=lab)
         ax[1].semilogx(C, r["growth_whirl_ratio"], "o")
-    # the clean exponential at c = 0.1 mm without gravity (0.2-0.6 s of the trace)
-    d = OUT / "guide_c0.1_no_gravity.npz"
-    if d.exists():
-        q = np.load(d)
-        k = q["t"] > 0.2
-        sg = np.polyfit(q["t"][k], np.log(np.hypot(q["y"][k], q["z"][k])), 1)[0]
-        rho = np.polyfit(q["t"][k], np.unwrap(np.arctan2(q["z"][k], q["y"][k])), 1)[0] / np.mean(q["w"][k])
-        C = results["guide_c0.1_no_gravity"]["analytic"]["C"]
-        ax[0].loglog(C, sg, "s", label="c 0.1 mm, g = 0")
-        ax[1].semilogx(C, rho, "s")
+    # clean exponentials without gravity (0.01-0.3 c; c = 0.1 mm: 0.2-0.6 s, it stays below 0.01 c)
+    for n, lab in clean_growth_labels().items():
+        q = clean_growth(n, results)
+        if q is None:
+            continue
+        ax[0].loglog(q[2], q[0], "s", mfc="none", ms=8, label=lab)
+        ax[1].semilogx(q[2], q[1], "s", mfc="none", ms=8)
     ax[0].set_xlabel("guide-land film damping C_f [N s/m]")
     ax[0].set_ylabel("growth rate sigma [1/s]")
     ax[1].set_xlabel("guide-land film damping C_f [N s/m]")
