@@ -608,3 +608,25 @@ def test_real_dynamic_run_is_annotated(case, tmp_path):
     assert ds["poincare_y"].size >= 5  # ~14 cage revolutions, at most 60 % discarded
     assert np.all(np.hypot(ds.cage_center_y, ds.cage_center_z) <= 1.05 * ds.attrs["guide_clearance"])
     assert plot_run(ds, tmp_path / "run.png").exists()
+
+
+def test_fixed_point_cage_is_one_period_not_undetermined():
+    """A cage held still at an offset (noise-level motion << guide clearance) is a fixed point of the
+    section: "1 period" (cage_whirl.md finding; the classifier's scale floor is half the clearance)."""
+    import xarray as xr
+
+    from hsbearing.analysis import annotate
+
+    rng = np.random.default_rng(3)
+    t = np.arange(0, 0.6, 5e-5)
+    w = 600.0
+    y = 8e-6 + 2e-8 * rng.standard_normal(t.size)  # 8 um offset, 20 nm noise, clearance 200 um
+    z = -3e-6 + 2e-8 * rng.standard_normal(t.size)
+    ds = xr.Dataset(
+        {"cage_speed": ("time", np.full(t.size, w)), "cage_center_y": ("time", y), "cage_center_z": ("time", z),
+         "cage_angle": ("time", w * t)},
+        coords={"time": t},
+        attrs={"guide_clearance": 2e-4},
+    )
+    out = annotate(ds, None)
+    assert out.attrs["classification"] == "1 period", out.attrs["classification_reason"]

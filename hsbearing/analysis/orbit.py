@@ -225,6 +225,16 @@ def annotate(ds: xr.Dataset, case=None, *, alpha=None, section: str = "cage_revo
     ds["poincare_y"] = _var("poincare_y", pts[:, 0])
     ds["poincare_vy"] = _var("poincare_vy", pts[:, 1])
     orbit = np.column_stack([np.asarray(ds["cage_center_y"].values, float)[mask], _pc.cage_velocity(ds, "y")[mask]])
+    gc = float(ds.attrs.get("guide_clearance", float("nan")))
+    if "scale" not in classify_kw and math.isfinite(gc) and gc > 0 and orbit.size:
+        # Fixed-point floor: a cage held still at an offset has an attractor far smaller than its
+        # clearance, and normalising by its own (noise-sized) extent would call the scatter aperiodic.
+        # The tolerance is measured against at least half the guide clearance (and that radius swept
+        # at the mean cage speed for V_Y), so section points within 1 % of the clearance (tol 0.02 of
+        # 0.5 c) form one cluster -> "1 period".  Whirl orbits that use the clearance are unaffected.
+        w_c = float(np.nanmean(np.abs(ds["cage_speed"].values[mask]))) if mask.any() else 0.0
+        floor = np.array([0.5 * gc, 0.5 * gc * max(w_c, 1e-12)])
+        classify_kw = dict(classify_kw, scale=np.maximum(np.ptp(orbit, axis=0), floor))
     label, conf, det = _classify(pts, signal=orbit, **classify_kw)
     ds.attrs.update(
         classification=label,
