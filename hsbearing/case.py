@@ -157,6 +157,7 @@ SCHEMA: dict[str, dict[str, Field]] = {
         "width": _f("length", "cage width", positive=True),
         "pocket_diameter": _f("length", "cage pocket diameter d_p", positive=True),
         "pocket_clearance": _f("length", "pocket clearance (d_p - D)/2 if pocket_diameter absent", nonneg=True),
+        "guide_land_width": _f("length", "axial length of the cage/guide-land film (default: cage width)", positive=True),
         "mass": _f("mass", "cage mass m_c (computed from geometry and density if absent)", positive=True),
         "axial_inertia": _f("inertia", "cage polar moment of inertia", positive=True),
         "diametral_inertia": _f("inertia", "cage diametral moment of inertia", positive=True),

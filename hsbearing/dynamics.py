@@ -39,7 +39,7 @@ MODEL_DEFAULTS = {
     "pocket_eps": 1e-7,  # m, regularisation of the ball-in-pocket offset near zero
     "drag_coefficient": 0.5,  # C_D of a sphere (Re ~ 1e3..1e5)
     "drag_v0": 0.01,  # m/s
-    "land_length": None,  # m, guide-land film length (None: cage width)
+    "land_length": None,  # m, guide-land film length (None: [cage] guide_land_width, else the cage width)
     "land_eps_max": 0.95,  # saturation of the guide-land eccentricity ratio
     "land_contact_K": 6e9,  # N/m^1.5, elastic rub of the cage on the land beyond the clearance
     "gravity": 9.81,  # m/s^2 along -Y (horizontal shaft); 0 switches it off
@@ -202,7 +202,7 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
         rho_e=mixture_density(case.lubricant.density, case.lubricant.oil_volume_fraction),
         C_D=opt["drag_coefficient"], v0_D=opt["drag_v0"],
         m_c=g.cage_mass, Ip_c=g.cage_axial_inertia, Id_c=g.cage_diametral_inertia,
-        R_land=0.5 * cg.outside_diameter, L_land=opt["land_length"] or cg.width, c_land=g.guide_clearance,
+        R_land=0.5 * cg.outside_diameter, L_land=opt["land_length"] or cg.guide_land_width or cg.width, c_land=g.guide_clearance,
         eps_max=opt["land_eps_max"], K_land=opt["land_contact_K"],
         m_i=g.inner_ring_mass, Ip_i=g.inner_ring_axial_inertia, Id_i=g.inner_ring_diametral_inertia,
         F_x=op.axial_load, F_y=op.radial_load, F_z=op.radial_load_z, M_y=op.moment_y, M_z=op.moment_z,
