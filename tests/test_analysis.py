@@ -630,3 +630,13 @@ def test_fixed_point_cage_is_one_period_not_undetermined():
     )
     out = annotate(ds, None)
     assert out.attrs["classification"] == "1 period", out.attrs["classification_reason"]
+
+
+def test_summary_carries_model_scalars_for_sweeps():
+    """Sweep tables take every scalar a model stores (the gyro bearing's rfmc/sfmc), not only cage metrics."""
+    import hsbearing
+    from hsbearing.analysis import summary
+
+    ds = hsbearing.simulate("jiang2014_gyro", duration=0.05)
+    s = summary(ds)
+    assert s["rfmc"] == pytest.approx(float(ds["rfmc"])) and s["rfmc"] > 0

@@ -299,4 +299,8 @@ def summary(ds: xr.Dataset, case=None) -> dict[str, Any]:
     gc = ds.attrs.get("guide_clearance")
     gc = float(gc) if gc is not None else float("nan")
     out["guide_clearance_used"] = out["whirl_radius_max"] / gc if np.isfinite(gc) and gc > 0 else float("nan")
+    # every other scalar result the model stored (e.g. the gyro bearing's sfmc, sfmo, rfmc)
+    for name, var in ds.data_vars.items():
+        if var.ndim == 0 and name not in out and var.dtype.kind in "fiu":
+            out[name] = float(var.values)
     return out
