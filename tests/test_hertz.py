@@ -4,7 +4,8 @@
 - the pressure p = p_max sqrt(1 - (x/b)^2 - (y/a)^2) integrated numerically returns the load;
 - Q = K delta^1.5 consistency and the exact-vs-Hamrock-Brewe approximation within the accuracy
   its authors state (Hamrock & Brewe 1983: a few per cent over 1 <= Ry/Rx <= 100);
-- the curvature-difference relation solved for k is satisfied.
+- the curvature-difference relation solved for k is satisfied;
+- the semi-axes against the published table of Hertz coefficients m, n (Timoshenko & Goodier 1970, Sec. 149).
 """
 
 import numpy as np
@@ -86,3 +87,26 @@ def test_reduced_modulus_dissimilar():
     Ep = reduced_modulus(208e9, 0.3, 2.8e9, 0.4)
     assert Ep == pytest.approx(2.0 / ((1 - 0.09) / 208e9 + (1 - 0.16) / 2.8e9))
     assert 2 * 2.8e9 / (1 - 0.16) * 0.95 < Ep < 2 * 2.8e9 / (1 - 0.16)
+
+
+# Timoshenko & Goodier, *Theory of Elasticity*, 3rd ed. (1970), Sec. 149, table of the Hertz coefficients
+# m, n against theta, cos(theta) = (B - A)/(A + B):  a = m [3 pi F (k1 + k2) / (4 (A + B))]^(1/3), b = n [...]^(1/3),
+# k_i = (1 - nu_i^2)/(pi E_i), A + B = (1/Rx + 1/Ry)/2.  Printed to three decimals -> 0.3 % tolerance.
+TIMOSHENKO = [  # theta [deg], m, n
+    (30, 2.731, 0.493), (35, 2.397, 0.530), (40, 2.136, 0.567), (45, 1.926, 0.604), (50, 1.754, 0.641),
+    (55, 1.611, 0.678), (60, 1.486, 0.717), (65, 1.378, 0.759), (70, 1.284, 0.802), (75, 1.202, 0.846),
+    (80, 1.128, 0.893), (85, 1.061, 0.944), (90, 1.000, 1.000),
+]
+
+
+@pytest.mark.parametrize("theta,m,n", TIMOSHENKO)
+def test_semi_axes_against_timoshenko_goodier_table(theta, m, n):
+    F = np.cos(np.radians(theta))
+    Rx = 0.01
+    Ry = Rx * (1 + F) / (1 - F)
+    Q = 1000.0
+    c = point_contact(Rx, Ry, Q, E_STEEL, NU_STEEL, E_STEEL, NU_STEEL)
+    k1 = (1 - NU_STEEL**2) / (np.pi * E_STEEL)
+    base = (3 * np.pi * Q * 2 * k1 / (4 * 0.5 * (1 / Rx + 1 / Ry))) ** (1 / 3)
+    assert float(c.a) == pytest.approx(m * base, rel=3e-3)
+    assert float(c.b) == pytest.approx(n * base, rel=3e-3)
