@@ -3,7 +3,7 @@
 - circular limit against the closed form (Johnson, *Contact Mechanics*, 1985, Eqs. 4.22-4.23);
 - the pressure p = p_max sqrt(1 - (x/b)^2 - (y/a)^2) integrated numerically returns the load;
 - Q = K delta^1.5 consistency and the exact-vs-Hamrock-Brewe approximation within the accuracy
-  its authors state (Hamrock & Brewe 1983: a few per cent over 1 <= Ry/Rx <= 100);
+  of a curve fit (Hamrock & Brewe 1983), checked up to Ry/Rx = 30 (ball/race contacts);
 - the curvature-difference relation solved for k is satisfied;
 - the semi-axes against the published table of Hertz coefficients m, n (Timoshenko & Goodier 1970, Sec. 149).
 """
