@@ -17,8 +17,6 @@ the target directory, then rename).
 from __future__ import annotations
 
 import math
-import os
-import tempfile
 import tomllib
 from pathlib import Path
 
@@ -29,24 +27,20 @@ __all__ = ["plot_run", "title_lines"]
 _RPM = 60.0 / (2.0 * math.pi)
 
 
-def _save(fig, path: Path) -> Path:
+def save_figure(fig, path, dpi: int = 110) -> Path:
+    """Save a matplotlib figure atomically (temporary file, then rename) and return its path."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
+    from hsbearing.results import atomic_write
+
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
     FigureCanvasAgg(fig)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.stem}.", suffix=path.suffix or ".png", dir=path.parent)
-    os.close(fd)
-    try:
-        fig.savefig(tmp, dpi=110)
-        os.replace(tmp, path)
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except FileNotFoundError:
-            pass
-        raise
+    with atomic_write(path, suffix=path.suffix or ".png") as tmp:
+        fig.savefig(tmp, dpi=dpi, format=(path.suffix.lstrip(".") or "png"))
     return path
+
+
+_save = save_figure
 
 
 def _case_labels(ds) -> dict[str, str]:

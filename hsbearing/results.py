@@ -22,7 +22,7 @@ from typing import Any, Mapping
 import numpy as np
 import xarray as xr
 
-__all__ = ["Variable", "VARIABLES", "register", "make_dataset", "write_netcdf", "open_run", "solver_attrs"]
+__all__ = ["Variable", "VARIABLES", "register", "make_dataset", "write_netcdf", "open_run", "solver_attrs", "atomic_write"]
 
 
 @dataclass(frozen=True)
@@ -139,31 +139,50 @@ def standard_attrs(case=None, status: str = "ok", **extra) -> dict[str, Any]:
     return _clean_attrs(attrs)
 
 
+class atomic_write:
+    """Context manager yielding a temporary path next to ``path``; renamed onto ``path`` on success.
+
+    On any exception the temporary file is removed and ``path`` is untouched, so readers (and an
+    interrupted run) never see half a file.  The file gets ordinary umask permissions.
+    """
+
+    def __init__(self, path: str | os.PathLike, suffix: str = ".tmp"):
+        self.path = Path(path)
+        self.suffix = suffix
+
+    def __enter__(self) -> Path:
+        self.path.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(prefix=f".{self.path.name}.", suffix=self.suffix, dir=self.path.parent)
+        os.close(fd)
+        self.tmp = Path(tmp)
+        return self.tmp
+
+    def __exit__(self, exc_type, exc, tb) -> bool:
+        if exc_type is None:
+            umask = os.umask(0)
+            os.umask(umask)
+            os.chmod(self.tmp, 0o666 & ~umask)  # mkstemp creates 0600
+            os.replace(self.tmp, self.path)
+        else:
+            try:
+                os.unlink(self.tmp)
+            except FileNotFoundError:
+                pass
+        return False
+
+
 def write_netcdf(ds: xr.Dataset, path: str | os.PathLike) -> Path:
-    """Write ``ds`` to ``path`` atomically (temporary file in the same directory, then rename)."""
+    """Write ``ds`` to ``path`` atomically (temporary file in the same directory, then rename), zlib-compressed."""
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    os.close(fd)
-    try:
-        ds = ds.copy()
-        ds.attrs = _clean_attrs(ds.attrs)
-        encoding = {
-            name: {"zlib": True, "complevel": 4, "shuffle": True}
-            for name, var in ds.variables.items()
-            if var.dtype.kind in "fiub" and var.ndim > 0
-        }
+    ds = ds.copy()
+    ds.attrs = _clean_attrs(ds.attrs)
+    encoding = {
+        name: {"zlib": True, "complevel": 4, "shuffle": True}
+        for name, var in ds.variables.items()
+        if var.dtype.kind in "fiub" and var.ndim > 0
+    }
+    with atomic_write(path) as tmp:
         ds.to_netcdf(tmp, engine="netcdf4", format="NETCDF4", encoding=encoding)
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)  # mkstemp creates 0600; give the archive ordinary permissions
-        os.replace(tmp, path)
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except FileNotFoundError:
-            pass
-        raise
     return path
 
 

@@ -37,7 +37,7 @@ import numpy as np
 import xarray as xr
 
 from hsbearing.case import CaseError, load_case, parse_quantity
-from hsbearing.results import open_run, write_netcdf
+from hsbearing.results import open_run, write_netcdf, atomic_write
 from hsbearing import sweeps
 
 __all__ = ["list_studies", "load_study", "run_study", "normalise_label", "write_report", "cli_main"]
@@ -315,9 +315,8 @@ def write_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, info:
                     lines.append(f"- {tid}: {where}: {pt['status'].item()}: {pt['error'].item()}")
         lines.append("")
     path = out / "report.md"
-    tmp = path.with_name(".report.md.tmp")
-    tmp.write_text("\n".join(lines))
-    os.replace(tmp, path)
+    with atomic_write(path) as tmp:
+        tmp.write_text("\n".join(lines))
     return path
 
 
@@ -387,10 +386,9 @@ def _axis_values(ds: xr.Dataset, key: str, dim: str) -> tuple[np.ndarray, str]:
 
 
 def _save(fig, path: Path) -> Path:
-    tmp = path.with_name(f".{path.stem}.tmp.png")
-    fig.savefig(tmp, dpi=110)
-    os.replace(tmp, path)
-    return path
+    from hsbearing.plotting import save_figure
+
+    return save_figure(fig, path)
 
 
 def _plot_slip(ds: xr.Dataset, t: dict, oils: list[str], path: Path) -> Path | None:

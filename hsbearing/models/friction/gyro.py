@@ -967,7 +967,6 @@ def study(case, key: str, values, *, duration=None, **kw):
     ``cage.pocket_depth = D_w/2 + A``.  Returns ``{value: Dataset}`` (runs in
     this process; for process pools / dask use :func:`hsbearing.sweep`).
     """
-    from hsbearing.case import load_case
 
     out = {}
     for v in values:
@@ -1007,9 +1006,9 @@ def plot_run(ds, path) -> Path:
     if ds.attrs.get("status", "ok") != "ok":
         title += f" [{ds.attrs['status']}]"
     fig.suptitle(title, fontsize=9)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=110)
-    return path
+    from hsbearing.plotting import save_figure
+
+    return save_figure(fig, path)
 
 
 def start_ensemble(case, n: int = 5, duration: float | None = None, **kw):

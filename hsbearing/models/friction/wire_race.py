@@ -66,7 +66,6 @@ import math
 import re
 import sys
 from dataclasses import dataclass
-from typing import Iterable, Sequence
 
 import numpy as np
 import xarray as xr
@@ -577,7 +576,9 @@ def plot_torque_vs_preload(ds: xr.Dataset, path, measured: dict | None = None, p
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7, loc="upper left")
     fig.tight_layout()
-    fig.savefig(path)
+    from hsbearing.plotting import save_figure
+
+    save_figure(fig, path)
     plt.close(fig)
     return path
 
