@@ -86,6 +86,8 @@ def cmd_run(args) -> int:
 
     case = _load(args)
     duration = parse_quantity(args.duration, "time", source="--duration", key="duration") if args.duration else None
+    if duration is not None and not duration > 0:
+        raise CaseError("--duration", "duration", f"must be positive, got {args.duration!r}")
     out = Path(args.output) if args.output else _default_out(case, ".nc", f"duration={duration}")
     try:
         ds = simulate(case, duration=duration, progress=not args.quiet)

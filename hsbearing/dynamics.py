@@ -141,7 +141,8 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
     ----------
     case : hsbearing.case.Case (angular_contact or deep_groove)
     friction : traction, pocket friction, guide-land friction moment (False: frictionless)
-    damping : contact damping, squeeze and guide-land films (False: conservative contacts)
+    damping : contact damping, squeeze and guide-land films (False: conservative contacts; this also
+        switches off the dissipative EHL rolling force, whatever ``ehl_rolling`` says)
     ehl_rolling : EHL rolling force F_R (and F_H)
     drag : air-oil drag F_D on the balls
     initial : "quasistatic" (initial state from :func:`hsbearing.solvers.quasistatic.solve_case`)
