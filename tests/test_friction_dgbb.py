@@ -262,6 +262,10 @@ def test_symmetric_zero_force_prl_is_0347():
 
     c = brentq(lambda c: sp.strip_force_2prl(c, -c), 0.1, 0.9)
     assert c == pytest.approx(0.3473, abs=1e-4)
+    assert 3 * c - c**3 == pytest.approx(1.0, abs=1e-12)  # zero net strip force (Jones 1959)
+    assert _heathcote_integral(c) == pytest.approx(0.16114, abs=1e-5)
+    cs = np.linspace(0.05, 0.95, 91)
+    assert np.all(_heathcote_integral(cs) >= _heathcote_integral(c) - 1e-12)  # c* minimises the dissipation
 
 
 def test_pure_spin_moment_upper_bound():
@@ -429,22 +433,23 @@ def test_quasistatic_contacts_centrifugal_raises_high_speed_torque():
 
 
 def _jones_c():
-    """Symmetric 2-PRL location with zero net strip force: 3 c - c^3 = 1 (Jones 1959, flat contact)."""
-    from scipy.optimize import brentq
-
-    return brentq(lambda c: 3.0 * c - c**3 - 1.0, 0.0, 1.0)
+    return sp.jones_prl_symmetric()
 
 
 def _heathcote_integral(c):
-    """int_-1^1 3/4 (1 - xi^2) |xi^2 - c^2| dxi = 1/5 - c^2 + 2 c^3 - 2 c^5 / 5 (Hertz strip load, quadratic slip)."""
-    return 0.2 - c**2 + 2.0 * c**3 - 0.4 * c**5
+    return sp.heathcote_integral(c)
 
 
 def test_heathcote_integral_closed_form():
+    """sliding_prl.heathcote_integral against quadrature; Jones' c* = 0.347 is its minimiser."""
     c = _jones_c()
     num, _ = quad(lambda x: 0.75 * (1 - x * x) * abs(x * x - c * c), -1, 1, points=[-c, c])
     assert _heathcote_integral(c) == pytest.approx(num, rel=1e-10)
     assert c == pytest.approx(0.3473, abs=1e-4)
+    assert 3 * c - c**3 == pytest.approx(1.0, abs=1e-12)  # zero net strip force (Jones 1959)
+    assert _heathcote_integral(c) == pytest.approx(0.16114, abs=1e-5)
+    cs = np.linspace(0.05, 0.95, 91)
+    assert np.all(_heathcote_integral(cs) >= _heathcote_integral(c) - 1e-12)  # c* minimises the dissipation
 
 
 def test_pure_radial_differential_sliding_is_the_heathcote_closed_form():
@@ -453,11 +458,10 @@ def test_pure_radial_differential_sliding_is_the_heathcote_closed_form():
     rigid-body kinematics omega_m = (d_m - D)/(2 d_m), omega_B = (d_m^2 - D^2)/(2 d_m D) (cage frame;
     Harris & Kotzalas Vol. 2, Ch. 2).  Our Newton/strip solution agrees to < 1 % -- so the +69 % of
     Table 3 is not a numerical artefact of the rebuilt equilibrium."""
-    psi, Q, al, states = _ball_state(0, 500)
+    _, _, _, states = _ball_state(0, 500)
     D, dm = 9.525e-3, 46e-3
     wm = (dm - D) / (2 * dm)
     wB = (dm**2 - D**2) / (2 * dm * D)
-    I = _heathcote_integral(_jones_c())
     ours = [0.0, 0.0]
     closed = [0.0, 0.0]
     for st in states:
@@ -468,7 +472,7 @@ def test_pure_radial_differential_sliding_is_the_heathcote_closed_form():
         assert abs(b.omega_ball[0]) == pytest.approx(wB, rel=3e-3)
         for k, grad in ((0, wB + (1.0 - wm)), (1, wB - wm)):  # inner: ball + race; outer: ball - race
             ours[k] += b.contact_powers[k][1] + b.contact_powers[k][2]
-            closed[k] += st.Q[k] * st.a[k] ** 2 * grad / (2 * st.R[k]) * I
+            closed[k] += sp.heathcote_slip_power(st.Q[k], st.a[k], st.R[k], grad)
     for k in range(2):
         assert ours[k] == pytest.approx(closed[k], rel=0.01)
 

@@ -91,6 +91,9 @@ __all__ = [
     "strip_spin_moment_2prl",
     "strip_spin_moment_1prl",
     "spinning_moment_pure_spin",
+    "jones_prl_symmetric",
+    "heathcote_integral",
+    "heathcote_slip_power",
     "ContactState",
     "BallFriction",
     "solve_ball",
@@ -167,6 +170,38 @@ def spinning_moment_pure_spin(mu, Q, a, E2):
     E2 : complete elliptic integral of the second kind of modulus (1 - b^2/a^2)^0.5.
     """
     return 0.375 * mu * Q * a * E2  # [S], Eq. 5
+
+
+def jones_prl_symmetric():
+    """Symmetric PRL location c* [-] (|x| = c* a) of a contact with zero net rolling-direction force.
+
+    Strip theory with the Hertz line load and a slip quadratic in x: 2-PRL force (Eq. 10 with
+    c2 = -c1) zero <=> 3 c - c^3 = 1, c* = 0.34730 ([J]; [H], Ch. 2, "0.347 a").
+    """
+    # root of c^3 - 3c + 1 = 0 in (0, 1): c = 2 cos(4 pi / 9)
+    return 2.0 * math.cos(4.0 * math.pi / 9.0)  # [J]
+
+
+def heathcote_integral(c):
+    """I(c) = int_-1^1 3/4 (1 - xi^2) |xi^2 - c^2| dxi = 1/5 - c^2 + 2 c^3 - 2 c^5 / 5  [-].
+
+    Hertz strip load times the magnitude of a quadratic (Heathcote) slip with PRLs at +-c a;
+    minimal at c = c* (:func:`jones_prl_symmetric`), I(c*) = 0.16114.
+    """
+    c = np.asarray(c, dtype=float)
+    return 0.2 - c**2 + 2.0 * c**3 - 0.4 * c**5  # [H], Ch. 2 (strip theory)
+
+
+def heathcote_slip_power(Q, a, R, omega_rel, mu=1.0):
+    """Differential-slip (Heathcote) power of one contact at zero contact angle [W].
+
+    P = mu Q a^2 omega_rel / (2 R) I(c*): rolling-direction slip v = omega_rel (x^2 - c*^2 a^2) / (2 R)
+    across a contact whose deformed surface has radius R ([H], Ch. 2; [J]; [S] Eqs. 16-19 in
+    substance).  omega_rel [rad/s] is |omega_B + Omega_k| at the inner and |omega_B - Omega_k| at
+    the outer race (cage frame: ball rotation and race speed relative to the cage); Q [N], a, R [m].
+    Used as the independent check of the numerical solution under pure radial load.
+    """
+    return mu * Q * a**2 * omega_rel / (2.0 * R) * heathcote_integral(jones_prl_symmetric())  # [H], Ch. 2
 
 
 # --------------------------------------------------------------------------- contact states
