@@ -167,6 +167,9 @@ def cmd_plot(args) -> int:
         ds = open_run(path)
     except Exception as exc:
         raise CaseError(str(path), None, f"not a readable netCDF archive ({type(exc).__name__})") from None
+    if "sweep_vary" in ds.attrs:  # sweep/study summary: one dimension per varied key, no single run to draw
+        raise CaseError(str(path), None, "a sweep summary has no run figure; plot one of the per-point archives "
+                                         "next to it, or open it with hsbearing.open_run")
     png = plotting.plot_run(ds, Path(args.output) if args.output else path.with_suffix(".png"))
     print(f"figure: {png}")
     return 0

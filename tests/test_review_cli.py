@@ -46,3 +46,19 @@ def test_ball_spin_speed_same_definition_quasistatic_and_dynamic():
     spin_dyn = float(ds.ball_spin_speed.isel(time=0).mean())
     spin_qs = float(qs.ball_spin_speed.mean())
     assert np.isclose(spin_dyn, spin_qs, rtol=0.02)  # 16-19 % apart at the time of review
+
+
+def test_plot_of_a_sweep_summary_is_bad_input_not_a_traceback(tmp_path, capsys):
+    import xarray as xr
+
+    # the shape of DIR/sweep.nc: one dimension per varied key and the sweep attrs
+    ds = xr.Dataset({"mean_cage_slip_ratio": ("axial_load", np.array([0.01, 0.02]))},
+                    coords={"axial_load": [100.0, 500.0]},
+                    attrs={"sweep_vary": "axial_load", "title": "hsbearing sweep"})
+    path = tmp_path / "sweep.nc"
+    ds.to_netcdf(path)
+    rc = main(["plot", str(path)])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert rc == 2
+    assert len(err) == 1 and "a sweep summary has no run figure" in err[0]
+    assert not path.with_suffix(".png").exists()
