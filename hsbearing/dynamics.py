@@ -126,11 +126,9 @@ class DynamicModel:
 def _oil(case):
     from hsbearing.models import ehl, traction
 
-    oil = traction.OILS[case.lubricant.oil]
-    eta0 = case.lubricant.dynamic_viscosity or oil.eta0
-    alpha = case.lubricant.pressure_viscosity_coefficient or oil.alpha
-    eta = float(ehl.viscosity_at_temperature(eta0, oil.beta, case.lubricant.temperature))
-    return eta, alpha, traction.law_id(case.lubricant.oil, case.lubricant.traction_law)
+    # one precedence rule for the inlet viscosity, shared with the quasi-static solver (which builds y0)
+    lub = ehl.lubricant_parameters(case)
+    return lub["eta"], lub["alpha"], traction.law_id(case.lubricant.oil, case.lubricant.traction_law)
 
 
 def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rolling: bool = True,
@@ -398,7 +396,9 @@ def to_dataset(model: DynamicModel, t, Y, stats, status="ok", annotate: bool = T
     G = K.GAUX_INDEX
     geom = derive(case)
     wth = theoretical_cage_speed(geom, case.operating.inner_speed, case.operating.outer_speed)
-    spin = np.sqrt(u["omega_x"] ** 2 + u["omega_y"] ** 2 + u["omega_z"] ** 2)
+    # ball spin = magnitude of the ball's angular velocity relative to the orbiting (cage) frame, omega_R of
+    # Harris (the frame turns at thetadot_b about X = the ball's x axis); the quasi-static dataset uses the same
+    spin = np.sqrt((u["omega_x"] - u["thetadot_b"]) ** 2 + u["omega_y"] ** 2 + u["omega_z"] ** 2)
     data = {
         "inner_contact_load": aux[..., A["Q_i"]], "outer_contact_load": aux[..., A["Q_o"]],
         "inner_contact_angle": aux[..., A["alpha_i"]], "outer_contact_angle": aux[..., A["alpha_o"]],

@@ -62,7 +62,7 @@ for _n, _d, _u, _l in [
     ("cage_center_y", ("time",), "m", "cage mass-centre displacement along Y"),
     ("cage_center_z", ("time",), "m", "cage mass-centre displacement along Z"),
     ("ball_orbit_speed", ("time", "ball"), "rad/s", "ball orbital (revolution) speed about the bearing axis"),
-    ("ball_spin_speed", ("time", "ball"), "rad/s", "ball angular speed about its own centre (magnitude)"),
+    ("ball_spin_speed", ("time", "ball"), "rad/s", "magnitude of the ball angular velocity relative to the orbiting (cage) frame, omega_R"),
     ("inner_ring_axial_displacement", ("time",), "m", "inner-ring displacement along the bearing axis X"),
 ]:
     register(_n, _d, _u, _l)

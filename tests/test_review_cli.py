@@ -2,7 +2,7 @@
 
 * A non-positive ``--duration`` is bad input on the command line: exit 2, one line naming
   ``--duration`` (not the case file), nothing written.
-* Two strict xfails pin open review findings, so that the owners see them turn green when fixed:
+* Two tests pin review findings fixed by the lead:
   finding 1 (``ball_spin_speed`` has different definitions in the quasi-static and dynamic datasets)
   and finding 2 (the dynamic model ignores ``lubricant.kinematic_viscosity``).
 """
@@ -25,7 +25,6 @@ def test_run_rejects_nonpositive_duration(tmp_path, capsys, value):
     assert not out.exists()
 
 
-@pytest.mark.xfail(strict=True, reason="review finding 2: dynamics._oil ignores lubricant.kinematic_viscosity")
 def test_dynamic_and_quasistatic_use_the_same_viscosity():
     from hsbearing import dynamics
     from hsbearing.models import ehl
@@ -36,8 +35,6 @@ def test_dynamic_and_quasistatic_use_the_same_viscosity():
     assert eta_dyn == pytest.approx(eta_qs, rel=1e-12)  # 0.0036 vs 0.0096 Pa s at the time of review
 
 
-@pytest.mark.xfail(strict=True, reason="review finding 1: ball_spin_speed is |omega_abs| in dynamics, "
-                                       "|omega relative to the cage frame| in the quasi-static dataset")
 def test_ball_spin_speed_same_definition_quasistatic_and_dynamic():
     case = hsbearing.load_case("zhang2016")
     qs = hsbearing.quasi_static(case)

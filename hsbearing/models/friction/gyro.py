@@ -914,7 +914,7 @@ def _assemble(model: GyroModel, res, nsub: int):
         "cage_speed": Ys[:, 9],
         "cage_angle": Ys[:, 3],
         "ball_orbit_speed": Ys[:, 12 + Z:12 + 2 * Z],
-        "ball_spin_speed": Ys[:, 12 + 2 * Z:12 + 3 * Z] - Ys[:, 12 + Z:12 + 2 * Z],
+        "ball_spin_speed": np.abs(Ys[:, 12 + 2 * Z:12 + 3 * Z] - Ys[:, 12 + Z:12 + 2 * Z]),  # |spin - orbit|
         "cage_center_y": Ys[:, 1],
         "cage_center_z": Ys[:, 2],
         "ball_cage_contact_force": diag[idx, :, 0],
