@@ -214,6 +214,8 @@ def build_parser() -> argparse.ArgumentParser:
     sp.add_argument("--vary", action="append", required=True, metavar="KEY=V1,V2,...",
                     help="e.g. --vary axial_load=100,500,1000N --vary oil=4109,4106 (repeatable)")
     sp.add_argument("--zip", action="store_true", help="vary the keys together (zipped lists) instead of the product")
+    sp.add_argument("--keep-going", action="store_true",
+                    help="record points whose values make an invalid case (status 'invalid') and run the rest, instead of exit 2")
     sp.add_argument("-j", "--jobs", type=int, default=None, help="worker processes (default: cores)")
     sp.add_argument("--scheduler", default=None, help="dask.distributed scheduler address tcp://host:port")
     sp.add_argument("--kind", default="run", choices=("run", "quasistatic"), help="what each point computes")

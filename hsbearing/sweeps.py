@@ -1024,9 +1024,10 @@ def print_table(ds: xr.Dataset, file=None) -> None:
 def cli_main(args) -> int:
     """``hsbearing sweep CASE --vary KEY=V1,V2 [--zip] [-j N] [--scheduler ADDR] [--kind] [--duration] -o DIR``.
 
-    Exit code 0 when every point is ok, 1 when some point is not (its status
-    and error are in ``DIR/sweep.nc``; the other points are kept), 2 on bad
-    input (nothing computed).
+    Exit code 0 when every point is ok, 1 when some point failed numerically
+    (its status and error are in ``DIR/sweep.nc``; the other points are
+    kept), 2 on bad input, including a varied value that makes an invalid
+    case (nothing computed or written), unless ``--keep-going``.
     """
     from hsbearing.case import DEFAULT_CASE
 
@@ -1041,6 +1042,16 @@ def cli_main(args) -> int:
     out = Path(args.output)
     if out.exists() and not out.is_dir():
         raise CaseError(str(out), None, "output must be a directory")
+    if not getattr(args, "keep_going", False):
+        # On the command line a value that makes an invalid case is bad input: exit 2 before anything is
+        # computed or written (the library, and --keep-going, record such points as "invalid" and go on).
+        plan = plan_sweep(case, vary, zip=args.zip, kind=args.kind, duration=args.duration)
+        bad = [pt for pt in plan.points if pt.case is None]
+        if bad:
+            where = ", ".join(f"{k}={v}" for k, v in bad[0].overrides.items())
+            more = f" (and {len(bad) - 1} more point(s); --keep-going records them and runs the rest)" if len(bad) > 1 else \
+                " (--keep-going records it and runs the rest)"
+            raise CaseError("--vary", None, f"point {where} is not a valid case: {bad[0].error}{more}")
     ds = run_sweep(case, vary, zip=args.zip, jobs=args.jobs, scheduler=args.scheduler, out_dir=out,
                    kind=args.kind, duration=args.duration, progress=True)
     print_table(ds)

@@ -530,3 +530,18 @@ def test_bad_backend_writes_nothing(tmp_path, monkeypatch):
     with pytest.raises(CaseError, match="cannot connect"):
         _qs_sweep(out, {"axial_load": "1,2kN"}, scheduler="tcp://127.0.0.1:9")
     assert not out.exists()
+
+
+def test_cli_invalid_value_is_bad_input_unless_keep_going(tmp_path, capsys):
+    from hsbearing import cli
+
+    """Contract: bad input exits 2 and writes nothing (review finding 3); --keep-going records it instead."""
+    out = tmp_path / "e"
+    rc = cli.main(["sweep", "zhang2016", "--vary", "inner_conformity=0.49,0.52", "--kind", "quasistatic", "-j", "1",
+                   "-o", str(out)])
+    err = capsys.readouterr().err
+    assert rc == 2 and "inner_conformity=0.49" in err and "--keep-going" in err
+    assert not out.exists()
+    rc = cli.main(["sweep", "zhang2016", "--vary", "inner_conformity=0.49,0.52", "--kind", "quasistatic", "-j", "1",
+                   "--keep-going", "-o", str(out)])
+    assert rc == 1 and (out / "sweep.nc").exists()
