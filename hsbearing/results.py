@@ -58,7 +58,7 @@ for _n, _d, _u, _l in [
     ("inner_contact_angle", ("time", "ball"), "rad", "contact angle at the inner race alpha_i"),
     ("outer_contact_angle", ("time", "ball"), "rad", "contact angle at the outer race alpha_o"),
     ("cage_speed", ("time",), "rad/s", "cage angular speed about the bearing axis omega_c"),
-    ("cage_slip_ratio", ("time",), "1", "cage slip ratio (1 - omega_c/omega_c,theory)"),
+    ("cage_slip_ratio", ("time",), "1", "cage slip ratio (omega_c,th - omega_c)/omega_c,th, epicyclic speed at the nominal contact angle"),
     ("cage_center_y", ("time",), "m", "cage mass-centre displacement along Y"),
     ("cage_center_z", ("time",), "m", "cage mass-centre displacement along Z"),
     ("ball_orbit_speed", ("time", "ball"), "rad/s", "ball orbital (revolution) speed about the bearing axis"),

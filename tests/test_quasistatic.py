@@ -579,3 +579,15 @@ def test_cli_numerical_failure_exit_1(monkeypatch, capsys):
     monkeypatch.setattr(qs, "solve_case", boom)
     assert cli.main(["quasistatic", "zhang2016"]) == 1
     assert "residual" in capsys.readouterr().err
+
+
+def test_contract_names_and_common_solver_attrs():
+    """DESIGN.md: the quasi-static dataset carries the dynamic names without `time` (incl. cage_slip_ratio) and
+    the common solver_* statistics (review finding 4)."""
+    import hsbearing
+
+    ds = hsbearing.quasi_static("zhang2016")
+    assert ds["cage_slip_ratio"].dims == () and abs(float(ds.cage_slip_ratio)) < 0.05
+    for k in ("solver_steps", "solver_rhs_evals", "solver_jac_evals", "solver_wall_time"):
+        assert k in ds.attrs
+    assert math.isnan(float(hsbearing.quasi_static("zhang2016", inner_speed=0.0).cage_slip_ratio))

@@ -795,6 +795,7 @@ def to_dataset(sol: QuasiStaticSolution, case=None, status: str = "ok") -> xr.Da
             np.arctan2(st["si"], st["ci"]), np.arctan2(st["so"], st["co"])).astype(np.int8),
         "ball_gyroscopic_moment": st["Mg"],
         "cage_speed": float(np.mean(st["wm"])),
+        "cage_slip_ratio": _cage_slip(case, float(np.mean(st["wm"])), P.omega_i, P.omega_o),
         "inner_ring_axial_displacement": q[0],
         "inner_ring_radial_displacement_y": q[1],
         "inner_ring_radial_displacement_z": q[2],
@@ -818,7 +819,12 @@ def to_dataset(sol: QuasiStaticSolution, case=None, status: str = "ok") -> xr.Da
         applied_loads=[float(x) for x in P.loads],
         unloaded_balls=int(np.sum((st["Qi"] <= 0) | (st["Qo"] <= 0))),
     )
-    attrs.update(solver_attrs({k: v for k, v in sol.stats.items()}))
+    stats = dict(sol.stats)
+    # the common solver_* names every archive carries (dynamic runs: CVODE steps, rhs and Jacobian evaluations)
+    stats.update(method="quasi-static: scipy root on the ring equilibrium, Newton per ball",
+                 steps=int(stats.get("ring_evaluations", 0)), rhs_evals=int(stats.get("ring_evaluations", 0)),
+                 jac_evals=int(stats.get("jacobian_evaluations", 0)), wall_time=float(stats.get("wall_time_s", 0.0)))
+    attrs.update(solver_attrs(stats))
     full = standard_attrs(case, status=status, **attrs) if case is not None else attrs | {"status": status}
     ds = make_dataset(data, coords={"ball": np.arange(P.Z), "dof": list(DOF_LABELS), "dof2": list(DOF_LABELS)},
                       attrs=full)
@@ -904,6 +910,18 @@ def speed_sweep(case, speeds, **kwargs) -> xr.Dataset:
     ds = ds.assign_coords(inner_speed=("inner_speed", np.asarray(speeds, dtype=float),
                                        {"units": "rad/s", "long_name": "inner-ring speed"}))
     return ds
+
+
+def _cage_slip(case, cage_speed: float, omega_i: float, omega_o: float) -> float:
+    """Cage slip ratio against the epicyclic speed at the nominal contact angle (hsbearing.analysis.slip);
+    nan at standstill or without a case."""
+    if case is None:
+        return float("nan")
+    from hsbearing.analysis.slip import cage_slip_ratio, theoretical_cage_speed
+    from hsbearing.models.geometry import derive
+
+    w_th = theoretical_cage_speed(derive(case), omega_i, omega_o)
+    return float(cage_slip_ratio(cage_speed, w_th)) if w_th else float("nan")
 
 
 def print_summary(ds: xr.Dataset) -> None:
