@@ -455,6 +455,17 @@ def _get_table(raw: dict, table: str) -> dict:
 
 
 def _build(text: str, source: str, overrides: Mapping[str, Any]) -> Case:
+    overridden = {".".join(resolve_key(k, source=f"{source} (override)")) for k in (overrides or {})}
+    try:
+        return _build_checked(text, source, overrides)
+    except CaseError as exc:
+        if exc.key in overridden and not exc.source.endswith("(override)"):
+            # the file is fine; the value given on top of it is not: name the override as the source
+            raise CaseError(f"{exc.source} (override)", exc.key, exc.message) from None
+        raise
+
+
+def _build_checked(text: str, source: str, overrides: Mapping[str, Any]) -> Case:
     try:
         raw = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:

@@ -82,3 +82,11 @@ def test_check_prints_geometry(tmp_path):
     res = _run(["check"], tmp_path)
     assert res.returncode == 0
     assert "free contact angle alpha_0 = 25 deg" in res.stdout
+
+
+def test_bad_override_value_names_the_override(tmp_path):
+    """The case file is fine; the --set value is not (review finding 5)."""
+    res = _run(["check", "zhang2016", "--set", "axial_load=abc"], tmp_path)
+    assert res.returncode == 2 and "(override): operating.axial_load: cannot parse quantity" in res.stderr
+    res = _run(["check", "zhang2016", "--set", "inner_conformity=0.5"], tmp_path)
+    assert res.returncode == 2 and "(override): bearing.inner_conformity" in res.stderr
