@@ -244,7 +244,7 @@ def build_parser() -> argparse.ArgumentParser:
     sp.add_argument("-o", "--output", help="netCDF archive")
     sp.set_defaults(func=cmd_preload)
 
-    sp = sub.add_parser("plot", help="draw the figures of an archive")
+    sp = sub.add_parser("plot", help="draw the figure of a run, quasi-static, friction, preload or gyro archive (not a sweep summary)")
     sp.add_argument("archive", help="netCDF archive written by hsbearing")
     sp.add_argument("-o", "--output", help="PNG path (default: next to the archive)")
     sp.set_defaults(func=cmd_plot)

@@ -4,9 +4,11 @@ References
 ----------
 [1] Harris T. A., Kotzalas M. N., *Rolling Bearing Analysis*, 5th ed., Vol. 2
     (*Advanced Concepts of Bearing Technology*), Ch. 3/5: ball drag in the
-    air-oil mixture F_D = (pi/32) C_D rho_e D^2 (d_m omega_m)^1.95, i.e.
-    1/2 C_D rho_e (pi D^2/4) v^1.95 with v = d_m omega_m / 2 the ball-centre
-    orbital speed.
+    air-oil mixture F_D = (pi/32) C_D rho_e D^2 (d_m omega_m)^1.95.  Read here, in SI,
+    as 1/2 C_D rho_e (pi D^2/4) v^1.95 with v = d_m omega_m / 2 the ball-centre
+    orbital speed; that is (pi/8) 2^-1.95 = pi/30.9 instead of pi/32, i.e. 3.5 %
+    above the printed coefficient.  The 1.95 exponent makes the formula
+    unit-dependent anyway; the drag is a minor term here (docs/validation/cage_whirl.md).
 [2] Zhang W. et al., Chin. J. Aeronaut. 29 (2016), seed 004, Eq. (7) (F_D).
 """
 
