@@ -109,6 +109,8 @@ def plot_run(ds, path) -> Path:
     ratio, the Poincare map and the classification.
     """
     path = Path(path)
+    if "sweep_vary" in ds.attrs:
+        raise ValueError("a sweep summary has no run figure: plot one of its per-point archives")
     if ds.attrs.get("model") == "gyro_ribbon_cage":
         from hsbearing.models.friction import gyro
 
