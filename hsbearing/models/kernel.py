@@ -105,6 +105,19 @@ def _cross(ax, ay, az, bx, by, bz):
     return ay * bz - az * by, az * bx - ax * bz, ax * by - ay * bx
 
 
+@njit(cache=True, inline="always")
+def _surface_velocities(px_, pr_, pt_, x, r, vx, vr, thd, wx, wy, wz, rvx, rvr, rvt, ox, orr, ot, Wx, Wr, Wt):
+    """Ball-surface and race-surface velocities at the point rho = (px_, pr_, pt_) from the ball centre.
+
+    Ball frame (x, r, t): the ball centre moves at (vx, vr, r thd) and spins at (wx, wy, wz); the race
+    centre is at (ox, orr, ot), moves at (rvx, rvr, rvt) and turns at (Wx, Wr, Wt).  Rigid-body
+    kinematics v = v_centre + omega x rho (Harris & Kotzalas Vol. 2, Ch. 1).
+    """
+    bx, br, bt = _cross(wx, wy, wz, px_, pr_, pt_)
+    gx, gr, gt = _cross(Wx, Wr, Wt, x + px_ - ox, r + pr_ - orr, pt_ - ot)
+    return bx + vx, br + vr, bt + r * thd, gx + rvx, gr + rvr, gt + rvt
+
+
 @njit(cache=True)
 def _race_contact(P, qu, qw, Q, nx, nr, nt, x, r, vx, vr, thd, wx, wy, wz,
                   rvx, rvr, rvt, ox, orr, ot, Wx, Wr, Wt, Rx, ke, acoef):
@@ -134,15 +147,8 @@ def _race_contact(P, qu, qw, Q, nx, nr, nt, x, r, vx, vr, thd, wx, wy, wz,
     # contact centre on the ball: rho0 = -(D/2) n
     r0x, r0r, r0t = -D2 * nx, -D2 * nr, -D2 * nt
     # rolling speed: mean surface speed along t1 relative to the moving contact
-    vbx, vbr, vbt = _cross(wx, wy, wz, r0x, r0r, r0t)
-    vbx += vx
-    vbr += vr
-    vbt += r * thd
-    px, pr, pt = x + r0x - ox, r + r0r - orr, r0t - ot
-    vrx, vrr, vrt = _cross(Wx, Wr, Wt, px, pr, pt)
-    vrx += rvx
-    vrr += rvr
-    vrt += rvt
+    vbx, vbr, vbt, vrx, vrr, vrt = _surface_velocities(r0x, r0r, r0t, x, r, vx, vr, thd, wx, wy, wz,
+                                                        rvx, rvr, rvt, ox, orr, ot, Wx, Wr, Wt)
     vcx, vcr, vct = vx, vr, (r + r0r) * thd
     Ut = 0.5 * ((vbx + vrx) * t1x + (vbr + vrr) * t1r + (vbt + vrt) * t1t) - (vcx * t1x + vcr * t1r + vct * t1t)
     U = math.sqrt(Ut * Ut + P[P_UEPS] ** 2)
@@ -161,17 +167,9 @@ def _race_contact(P, qu, qw, Q, nx, nr, nt, x, r, vx, vr, thd, wx, wy, wz,
             rr_ = D2 * (-cp * nr + sp * t2r)
             rt_ = D2 * (-cp * nt)
             ux, ur, ut = sp * nx + cp * t2x, sp * nr + cp * t2r, sp * nt
-            # ball surface velocity
-            bx, br, bt = _cross(wx, wy, wz, rx_, rr_, rt_)
-            bx += vx
-            br += vr
-            bt += r * thd
-            # race surface velocity at the same point
-            px, pr, pt = x + rx_ - ox, r + rr_ - orr, rt_ - ot
-            gx, gr, gt = _cross(Wx, Wr, Wt, px, pr, pt)
-            gx += rvx
-            gr += rvr
-            gt += rvt
+            # ball and race surface velocities at the node
+            bx, br, bt, gx, gr, gt = _surface_velocities(rx_, rr_, rt_, x, r, vx, vr, thd, wx, wy, wz,
+                                                         rvx, rvr, rvt, ox, orr, ot, Wx, Wr, Wt)
             dvx, dvr, dvt = bx - gx, br - gr, bt - gt
             s1 = dvx * t1x + dvr * t1r + dvt * t1t
             s2 = dvx * ux + dvr * ur + dvt * ut
