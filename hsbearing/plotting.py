@@ -299,6 +299,17 @@ def _wrap(text: str, width: int) -> str:
     return "\n".join(textwrap.wrap(text, width))
 
 
+def _per_ball_axes(ax, nb, ylabel: str, title: str, grid_axis: str) -> None:
+    """Labels, ball ticks 1..nb, legend and grid of a per-ball panel."""
+    ax.set_xlabel("ball")
+    ax.set_ylabel(ylabel)
+    ax.set_title(title, fontsize=10)
+    if nb:
+        ax.set_xticks(np.arange(1, nb + 1))
+        ax.legend(fontsize=8)
+    ax.grid(alpha=0.3, axis=grid_axis)
+
+
 def _plot_static(ds, path: Path) -> Path:
     fig = _figure((11, 4.8))
     ax1, ax2 = fig.subplots(1, 2)
@@ -313,22 +324,10 @@ def _plot_static(ds, path: Path) -> Path:
             x = np.arange(1, nb + 1)
             off = -0.2 if "inner" in name else 0.2
             ax1.bar(x + off, q, width=0.4, color=c, label=lab)
-    ax1.set_xlabel("ball")
-    ax1.set_ylabel("contact load [N]")
-    ax1.set_title("contact loads per ball", fontsize=10)
-    if nb:
-        ax1.set_xticks(np.arange(1, nb + 1))
-        ax1.legend(fontsize=8)
-    ax1.grid(alpha=0.3, axis="y")
+    _per_ball_axes(ax1, nb, "contact load [N]", "contact loads per ball", grid_axis="y")
     for name, lab, c in (("inner_contact_angle", "inner race $\\alpha_i$", "C0"), ("outer_contact_angle", "outer race $\\alpha_o$", "C1")):
         if name in ds:
             a = np.degrees(np.atleast_1d(np.asarray(ds[name].values, float)))
             ax2.plot(np.arange(1, len(a) + 1), a, "o-", color=c, label=lab)
-    ax2.set_xlabel("ball")
-    ax2.set_ylabel("contact angle [\N{DEGREE SIGN}]")
-    ax2.set_title("contact angles per ball", fontsize=10)
-    if nb:
-        ax2.set_xticks(np.arange(1, nb + 1))
-        ax2.legend(fontsize=8)
-    ax2.grid(alpha=0.3)
+    _per_ball_axes(ax2, nb, "contact angle [\N{DEGREE SIGN}]", "contact angles per ball", grid_axis="both")
     return _save(fig, path)
