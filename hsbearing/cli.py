@@ -132,16 +132,38 @@ def cmd_quasistatic(args) -> int:
     return 0
 
 
+def _summary_figure(nc: Path, png: Path) -> None:
+    """Draw the figure of a sweep/study summary next to it; a figure that cannot be drawn is a note, not a failure."""
+    from hsbearing import plotting
+    from hsbearing.results import open_run
+
+    if not nc.exists():
+        return
+    try:
+        print(f"figure: {plotting.plot_sweep(open_run(nc), png)}")
+    except Exception as exc:  # the archives are written; the figure is a by-product
+        print(f"hsbearing: no figure for {nc}: {exc}", file=sys.stderr)
+
+
 def cmd_sweep(args) -> int:
     from hsbearing import sweeps
 
-    return sweeps.cli_main(args)
+    rc = sweeps.cli_main(args)
+    if not getattr(args, "no_figure", False):
+        out = Path(args.output)
+        _summary_figure(out / "sweep.nc", out / "sweep.png")
+    return rc
 
 
 def cmd_study(args) -> int:
     from hsbearing import study
 
-    return study.cli_main(args)
+    rc = study.cli_main(args)
+    if not getattr(args, "no_figure", False):
+        out = Path(args.output)
+        for t in study.load_study(args.name).tables:
+            _summary_figure(out / f"{t['id']}.nc", out / f"{t['id']}.png")
+    return rc
 
 
 def cmd_friction(args) -> int:
@@ -167,10 +189,10 @@ def cmd_plot(args) -> int:
         ds = open_run(path)
     except Exception as exc:
         raise CaseError(str(path), None, f"not a readable netCDF archive ({type(exc).__name__})") from None
-    if "sweep_vary" in ds.attrs:  # sweep/study summary: one dimension per varied key, no single run to draw
-        raise CaseError(str(path), None, "a sweep summary has no run figure; plot one of the per-point archives "
-                                         "next to it, or open it with hsbearing.open_run")
-    png = plotting.plot_run(ds, Path(args.output) if args.output else path.with_suffix(".png"))
+    try:  # a sweep/study summary (one dimension per varied key) gets the sweep figure (plotting.plot_sweep)
+        png = plotting.plot_run(ds, Path(args.output) if args.output else path.with_suffix(".png"))
+    except CaseError as exc:  # e.g. a summary with too many lines for one figure: name the archive
+        raise CaseError(str(path), exc.key, exc.message) from None
     print(f"figure: {png}")
     return 0
 
@@ -221,6 +243,7 @@ def build_parser() -> argparse.ArgumentParser:
     sp.add_argument("--kind", default="run", choices=("run", "quasistatic"), help="what each point computes")
     sp.add_argument("--duration", help="simulated time of each run, e.g. 0.05s")
     sp.add_argument("-o", "--output", required=True, help="output directory")
+    sp.add_argument("--no-figure", action="store_true", help="do not draw DIR/sweep.png")
     sp.set_defaults(func=cmd_sweep)
 
     sp = sub.add_parser("study", help="a bundled study (e.g. zhang2016: Tables 3-5 of seed 004)")
@@ -229,6 +252,7 @@ def build_parser() -> argparse.ArgumentParser:
     sp.add_argument("-j", "--jobs", type=int, default=None)
     sp.add_argument("--scheduler", default=None)
     sp.add_argument("--duration", help="simulated time of each run")
+    sp.add_argument("--no-figure", action="store_true", help="do not draw DIR/<table>.png (summary figure of each table)")
     sp.set_defaults(func=cmd_study)
 
     sp = sub.add_parser("friction", help="DGBB friction torque: seed 003 sliding method and SKF 2004 model")
@@ -244,7 +268,8 @@ def build_parser() -> argparse.ArgumentParser:
     sp.add_argument("-o", "--output", help="netCDF archive")
     sp.set_defaults(func=cmd_preload)
 
-    sp = sub.add_parser("plot", help="draw the figure of a run, quasi-static, friction, preload or gyro archive (not a sweep summary)")
+    sp = sub.add_parser("plot", help="draw the figures of a run, quasi-static, friction, preload, gyro archive "
+                                     "or a sweep/study summary")
     sp.add_argument("archive", help="netCDF archive written by hsbearing")
     sp.add_argument("-o", "--output", help="PNG path (default: next to the archive)")
     sp.set_defaults(func=cmd_plot)

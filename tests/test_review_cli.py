@@ -45,17 +45,21 @@ def test_ball_spin_speed_same_definition_quasistatic_and_dynamic():
     assert np.isclose(spin_dyn, spin_qs, rtol=0.02)  # 16-19 % apart at the time of review
 
 
-def test_plot_of_a_sweep_summary_is_bad_input_not_a_traceback(tmp_path, capsys):
+def test_plot_of_a_sweep_summary_writes_the_sweep_figure(tmp_path, capsys):
     import xarray as xr
 
-    # the shape of DIR/sweep.nc: one dimension per varied key and the sweep attrs
+    # finding 10: the shape of DIR/sweep.nc (one dimension per varied key and the sweep attrs) used to be a
+    # TypeError traceback, then a refusal (exit 2); now it gets the sweep figure (plotting.plot_sweep)
     ds = xr.Dataset({"mean_cage_slip_ratio": ("axial_load", np.array([0.01, 0.02]))},
                     coords={"axial_load": [100.0, 500.0]},
                     attrs={"sweep_vary": "axial_load", "title": "hsbearing sweep"})
     path = tmp_path / "sweep.nc"
     ds.to_netcdf(path)
     rc = main(["plot", str(path)])
-    err = capsys.readouterr().err.strip().splitlines()
-    assert rc == 2
-    assert len(err) == 1 and "a sweep summary has no run figure" in err[0]
-    assert not path.with_suffix(".png").exists()
+    out = capsys.readouterr()
+    assert rc == 0, out.err
+    assert out.err == ""
+    png = path.with_suffix(".png")
+    assert out.out.strip() == f"figure: {png}"
+    assert png.stat().st_size > 10_000
+    assert not [p for p in tmp_path.iterdir() if p.name.startswith(".")]  # no temporary left behind
