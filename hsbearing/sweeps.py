@@ -354,7 +354,16 @@ def quasistatic_summary(ds: xr.Dataset) -> dict[str, Any]:
 
 
 def dynamic_summary(ds: xr.Dataset) -> dict[str, Any]:
-    """Scalars of a dynamic run, by :func:`hsbearing.analysis.summary` (the analysis module's)."""
+    """Scalars of a dynamic run, by :func:`hsbearing.analysis.summary` (the analysis module's).
+
+    A gyro ribbon-cage run (``attrs["model"] == "gyro_ribbon_cage"``) is summarised by
+    :func:`hsbearing.models.friction.gyro.summary` instead: SFMC/SFMO/RFMC and their statistics, none
+    of the whirl / classification / contact-load fields, which do not apply to that model.
+    """
+    if ds.attrs.get("model") == "gyro_ribbon_cage":
+        from hsbearing.models.friction import gyro
+
+        return gyro.summary(ds)
     from hsbearing import analysis
 
     s = analysis.summary(ds)
@@ -872,6 +881,8 @@ def _summary_attrs(name: str) -> dict:
 def assemble(plan: SweepPlan, records: Sequence[dict], *, archive_prefix: str = "", attrs: Mapping | None = None) -> xr.Dataset:
     """The sweep Dataset: a dim per varied key (or ``point``), summaries + record variables."""
     shape, dims = plan.shape, plan.dims
+    if plan.base.system == "gyro_ribbon_cage":  # its summary variables are declared there (units, long_name)
+        import hsbearing.models.friction.gyro  # noqa: F401
     names: list[str] = []
     for r in records:
         for k in r.get("summary", {}):
@@ -1006,7 +1017,7 @@ def print_table(ds: xr.Dataset, file=None) -> None:
     """One line per point: varied values, status, a few summary values, error."""
     file = file or sys.stdout
     keys = [v for v in ("mean_cage_slip_ratio", "whirl_amplitude", "classification", "mean_inner_contact_load",
-                        "mean_outer_contact_load", "cage_speed") if v in ds]
+                        "mean_outer_contact_load", "cage_speed", "sfmc", "sfmo", "sfmo_stderr", "rfmc") if v in ds]
     dims = ds["status"].dims
     labels = [c for c in ds.coords if str(c).endswith("_label")]
     for idx in np.ndindex(*ds["status"].shape):

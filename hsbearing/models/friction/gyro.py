@@ -84,6 +84,8 @@ __all__ = [
     "build_model",
     "simulate",
     "starting_moments",
+    "cage_moment_windows",
+    "summary",
     "study",
     "override",
     "plot_run",
@@ -110,6 +112,12 @@ for _n, _d, _u, _l in [
     ("rfmc", (), "N m", "running friction moment at constant rate M_E + M_D + M_S + M_L (seed 000 Sec. 5.1)"),
     ("window_max_moment", ("window",), "N m", "max total friction moment M in each oscillation window (seed 000 Sec. 4)"),
     ("window", ("window",), "1", "index of the oscillation window (0 = start from rest)"),
+    # sweep summary of a gyro run (gyro.summary)
+    ("sfmo_sd", (), "N m", "sample standard deviation (n - 1) of the reversal-window maxima of M (seed 000 Sec. 4)"),
+    ("sfmo_stderr", (), "N m", "standard error of SFMO: sfmo_sd / sqrt(reversal_windows)"),
+    ("reversal_windows", (), "1", "number of reversal windows averaged in SFMO"),
+    ("pocket_clearance", (), "m", "ball/pocket clearance A = k - D_w/2 (seed 000 Sec. 3.2)"),
+    ("cage_mass", (), "kg", "cage mass used by the model (ribbon strips of thickness s, or cage.mass)"),
 ]:
     register(_n, _d, _u, _l)
 
@@ -522,7 +530,7 @@ def _hunt_crossley(K, delta, ddelta, chi):
 # parameter vector indices
 (_P_DM, _P_D, _P_DP, _P_E, _P_NABLA, _P_K, _P_CHI, _P_MU_C, _P_VREG_C, _P_MC, _P_JX, _P_JY, _P_JZ,
  _P_MB, _P_IB, _P_Q, _P_MU, _P_VREG_R, _P_BETA, _P_RI, _P_RO, _P_G, _P_NO, _P_TR, _P_OSC, _P_T, _P_WI,
- _P_LEN) = range(28)
+ _P_GX, _P_GY, _P_GZ, _P_LEN) = range(31)
 
 
 @numba.njit(cache=True)
@@ -544,10 +552,12 @@ def _kernel(t, y, p, Z, ydot, diag):
     Rx, Ry, Rz = y[0], y[1], y[2]
     V0, V1, V2 = y[6], y[7], y[8]
     w0, w1, w2 = y[9], y[10], y[11]
-    # gravity along -Y of Frame I (decision: horizontal bearing axis), in Frame c
-    Fc0 = -A[0, 1] * mc * g
-    Fc1 = -A[1, 1] * mc * g
-    Fc2 = -A[2, 1] * mc * g
+    # cage weight G_c ([J] Sec. 3.3) along the unit vector (g_x, g_y, g_z) of Frame I (default -Y: horizontal
+    # bearing axis), in Frame c
+    gx, gy, gz = p[_P_GX], p[_P_GY], p[_P_GZ]
+    Fc0 = (A[0, 0] * gx + A[0, 1] * gy + A[0, 2] * gz) * mc * g
+    Fc1 = (A[1, 0] * gx + A[1, 1] * gy + A[1, 2] * gz) * mc * g
+    Fc2 = (A[2, 0] * gx + A[2, 1] * gy + A[2, 2] * gz) * mc * g
     Mc0 = 0.0
     Mc1 = 0.0
     Mc2 = 0.0
@@ -696,26 +706,31 @@ class GyroModel:
         y[0:3] = cage_offset
         y[3] = cage_angle
         y[12:12 + Z] = 2.0 * np.pi * np.arange(Z) / Z
-        # settle the cage along -Y (static equilibrium of its weight and the pocket contacts, balls at rest).
+        # settle the cage along the direction of gravity (-Y unless build_model(gravity_direction=...)):
+        # static equilibrium of its weight and the pocket contacts, balls at rest.
         # Decision: the start position is the settled one even when the dynamics run without gravity
         # (default): a generic off-centre cage, as left by gravity on the test bench before the start.
         ps = self.p.copy()
         ps[_P_G] = GRAVITY
         mc_g = ps[_P_MC] * ps[_P_G]
+        g_hat = ps[[_P_GX, _P_GY, _P_GZ]]
         ydot = np.empty_like(y)
         diag = np.zeros((Z, 3))
+        A = np.empty((3, 3))
+        transform_Ic(y[3], y[4], y[5], A)
 
         def net(h):
             yy = y.copy()
-            yy[1] = y[1] - h
+            yy[0:3] = y[0:3] + h * g_hat
             _kernel(0.0, yy, ps, Z, ydot, diag)
-            return ydot[7] * ps[_P_MC]  # net Y force (Frame c = Frame I at theta = 0)
+            # net force against gravity: contacts minus weight (Frame c -> Frame I: A^T; cage at rest)
+            return -float(g_hat @ (A.T @ ydot[6:9])) * ps[_P_MC]
 
         if settle and mc_g > 0:
             hi = self.p[_P_NABLA]
             if net(hi) > 0:
                 if self.p[_P_G] > 0:
-                    y[1] = y[1] - brentq(net, 0.0, hi, xtol=1e-16)  # weight carried by the pocket contacts
+                    y[0:3] = y[0:3] + brentq(net, 0.0, hi, xtol=1e-16) * g_hat  # weight carried by the pocket contacts
                 else:
                     # no weight in the dynamics: the cage just touches (zero approach), so no elastic
                     # energy is stored in the initial state (it would kick the cage at t = 0)
@@ -726,7 +741,7 @@ class GyroModel:
                             up = mid
                         else:
                             lo = mid
-                    y[1] = y[1] - lo
+                    y[0:3] = y[0:3] + lo * g_hat
         return y
 
 
@@ -736,7 +751,7 @@ def _opt(value, default):
 
 def build_model(case, *, creep_speed: float = 2e-5, cage_slip_speed: float = 1e-5,
                 restitution: float | None = None, reference_impact_speed: float | None = None,
-                gravity: float = 0.0) -> GyroModel:
+                gravity: float = 0.0, gravity_direction=(0.0, -1.0, 0.0)) -> GyroModel:
     """Parameters of the assembled model from a ``gyro_ribbon_cage`` case.
 
     creep_speed : v_reg of the ball/race traction [m/s] (regularised [J] Eq. 19).
@@ -744,7 +759,10 @@ def build_model(case, *, creep_speed: float = 2e-5, cage_slip_speed: float = 1e-
     restitution : Hunt-Crossley restitution (default ``friction.cage_restitution`` or 0.5).
     reference_impact_speed : speed at which the restitution holds (default: the ball
         orbit speed at n_o, d_m/2 (1 + gamma)/2 |n_o|).
-    gravity : acceleration of gravity on the cage along -Y [m/s^2] (0 = in orbit).
+    gravity : acceleration of gravity on the cage [m/s^2] (0 = in orbit; default of the case).
+    gravity_direction : direction of gravity in Frame I (X = bearing axis) [-], normalised here;
+        default -Y (horizontal bearing axis, gravity across it).  Also the direction in which
+        :meth:`GyroModel.y0` settles the cage.
     """
     if case.system != "gyro_ribbon_cage":
         raise CaseError(case.source, "case.system", f"the gyro model needs system 'gyro_ribbon_cage', got {case.system!r}")
@@ -789,6 +807,10 @@ def build_model(case, *, creep_speed: float = 2e-5, cage_slip_speed: float = 1e-
     p[_P_OSC] = 1.0 if op.mode == "oscillation" else 0.0
     p[_P_T] = op.oscillation_period
     p[_P_WI] = op.inner_speed
+    g_dir = np.asarray(gravity_direction, dtype=float)
+    if g_dir.shape != (3,) or not np.linalg.norm(g_dir) > 0:
+        raise ValueError(f"gravity_direction must be a non-zero 3-vector, got {gravity_direction!r}")
+    p[_P_GX], p[_P_GY], p[_P_GZ] = g_dir / np.linalg.norm(g_dir)
     names = (["cage_Rx", "cage_Ry", "cage_Rz", "cage_theta_x", "cage_theta_y", "cage_theta_z",
               "cage_Vx", "cage_Vy", "cage_Vz", "cage_wx", "cage_wy", "cage_wz"]
              + [f"ball{j}_psi" for j in range(Z)] + [f"ball{j}_orbit_speed" for j in range(Z)]
@@ -831,6 +853,75 @@ def starting_moments(t, M, mode, period, ramp_time):
     return sfmc, sfmo, maxima
 
 
+def cage_moment_windows(ds, threshold: float = 0.1):
+    """Share of the ball/cage moment in each window's maximum, and how fast it dies out ([J] Figs. 8-9).
+
+    For each window k (0 = the start, then one per reversal; the whole run for a constant-rate run):
+
+    * ``share[k]`` = M_C / M at the instant of the window's maximum of M [-] ([J] Figs. 8-9 show
+      M_C above half of M at each start and reversal);
+    * ``decay[k]`` = time from the window start to the last stored sample whose driving M_C
+      (max(M_C, 0)) exceeds ``threshold`` times its window peak [s] (in [J] the impacts die out
+      within ~1 s; a cage that is carried along by friction gives a steady M_C, i.e. decay = the
+      window length).
+
+    Uses the stored (peak-hold) series ``friction_moment_total`` / ``friction_moment_cage``.
+    Returns ``(share, decay)`` as arrays.
+    """
+    t = np.asarray(ds["time"].values)
+    M = np.asarray(ds["friction_moment_total"].values)
+    MC = np.maximum(np.asarray(ds["friction_moment_cage"].values), 0.0)
+    if "window" in ds.dims:
+        T = float(ds.attrs.get("oscillation_period", 0.0)) or _period_of(ds)
+        edges = [(k * T, (k + 1) * T) for k in range(int(ds.sizes["window"]))]
+    else:
+        edges = [(t[0], t[-1] + 1.0)]
+    share, decay = [], []
+    for t0, t1 in edges:
+        sel = np.nonzero((t >= t0) & (t < t1))[0]
+        if sel.size == 0:
+            share.append(float("nan"))
+            decay.append(float("nan"))
+            continue
+        i = sel[np.argmax(M[sel])]
+        share.append(float(MC[i] / M[i]) if M[i] > 0 else float("nan"))
+        peak = MC[sel].max()
+        above = sel[MC[sel] > threshold * peak] if peak > 0 else sel[:1]
+        decay.append(float(t[above[-1]] - t0))
+    return np.array(share), np.array(decay)
+
+
+def _period_of(ds) -> float:
+    from hsbearing.case import loads_case
+
+    return loads_case(ds.attrs["case_toml"], "archive").operating.oscillation_period
+
+
+def summary(ds) -> dict:
+    """Scalars of a gyro run for a sweep table (what applies to this model; [J] Sec. 4).
+
+    ``sfmc``, ``rfmc`` [N m] always; oscillation runs add ``sfmo`` [N m], ``sfmo_sd`` (sample
+    standard deviation of the reversal-window maxima), ``sfmo_stderr`` = sfmo_sd / sqrt(n) and
+    ``reversal_windows`` (n); ``pocket_clearance`` A [m] and ``cage_mass`` [kg] from the run's
+    attributes (A is not a case key: a sweep over A varies ``cage.pocket_depth`` = D_w/2 + A).
+    No whirl / classification / contact-load fields: they belong to the rolling-element dynamics.
+    """
+    out: dict = {}
+    for name in ("sfmc", "sfmo", "rfmc"):
+        if name in ds and ds[name].ndim == 0:
+            out[name] = float(ds[name].values)
+    if "window_max_moment" in ds:
+        rev = np.asarray(ds["window_max_moment"].values, dtype=float)[1:]
+        out["reversal_windows"] = int(rev.size)
+        out["sfmo_sd"] = float(np.std(rev, ddof=1)) if rev.size > 1 else float("nan")
+        out["sfmo_stderr"] = out["sfmo_sd"] / math.sqrt(rev.size) if rev.size > 1 else float("nan")
+    if "pocket_clearance_m" in ds.attrs:
+        out["pocket_clearance"] = float(ds.attrs["pocket_clearance_m"])
+    if "cage_mass_kg" in ds.attrs:
+        out["cage_mass"] = float(ds.attrs["cage_mass_kg"])
+    return out
+
+
 def simulate(case, duration=None, progress: bool = False, *, fine_interval: float = 5e-6,
              wall_limit: float | None = None, settle: bool = True, cage_offset=(0.0, 0.0, 0.0),
              cage_angle: float = 0.0, **kw):
@@ -850,7 +941,8 @@ def simulate(case, duration=None, progress: bool = False, *, fine_interval: floa
         exactly centred (all balls then strike the pockets at the same instant).
     cage_offset : initial displacement (x, y, z) of the cage centre in Frame I [m].
     cage_angle : initial cage angle about the axis relative to the balls [rad].
-    **kw : passed to :func:`build_model` (creep_speed, cage_slip_speed, restitution, gravity).
+    **kw : passed to :func:`build_model` (creep_speed, cage_slip_speed, restitution, gravity,
+        gravity_direction).
     """
     from hsbearing.solvers.cvode import integrate
 
@@ -874,6 +966,9 @@ def simulate(case, duration=None, progress: bool = False, *, fine_interval: floa
                     max_step=min(model.case.operating.ramp_time, 0.01), max_num_steps=200000,
                     progress=progress, progress_desc="gyro", wall_limit=wall_limit)
     ds = _assemble(model, res, nsub)
+    ds.attrs["cage_start"] = ("settled" if settle else "centred") + (
+        f", offset {list(map(float, cage_offset))} m" if any(cage_offset) else "") + (
+        f", turned {cage_angle:.6g} rad" if cage_angle else "")
     if not res.success:
         raise SolverError(f"gyro model: {res.status}", partial=ds)
     return ds
@@ -939,6 +1034,9 @@ def _assemble(model: GyroModel, res, nsub: int):
         cage_mass_kg=model.cage_mass, ball_cage_stiffness=model.p[_P_K],
         hunt_crossley_chi=model.p[_P_CHI], creep_speed=model.p[_P_VREG_R], cage_slip_speed=model.p[_P_VREG_C],
         prl_inner=list(st.X_i), prl_outer=list(st.X_o), fine_interval=float(t[1] - t[0]) if n > 1 else 0.0,
+        pocket_clearance_m=float(case.cage.pocket_depth - 0.5 * case.bearing.ball_diameter),
+        oscillation_period=float(op.oscillation_period),
+        cage_gravity=float(model.p[_P_G]), cage_gravity_direction=[float(x) for x in model.p[[_P_GX, _P_GY, _P_GZ]]],
     )
     attrs = standard_attrs(case, res.status, **extra)
     attrs.update(solver_attrs(res.stats))
@@ -960,22 +1058,48 @@ def override(case, **overrides):
     return loads_case(case.to_toml(), case.source, **overrides)
 
 
-def study(case, key: str, values, *, duration=None, **kw):
+def study(case, key: str, values, *, duration=None, out_dir=None, jobs: int = 1, **kw):
     """Run ``case`` for each value of one case key (e.g. ``cage.thickness`` or ``pocket_clearance``).
 
-    ``key="pocket_clearance"`` means the seed's A = k - D_w/2 and sets
-    ``cage.pocket_depth = D_w/2 + A``.  Returns ``{value: Dataset}`` (runs in
-    this process; for process pools / dask use :func:`hsbearing.sweep`).
-    """
+    ``key="pocket_clearance"`` means the seed's A = k - D_w/2 (not a case key) and varies
+    ``cage.pocket_depth = D_w/2 + A``.  Returns ``{value: Dataset}`` in the order of ``values``.
 
-    out = {}
-    for v in values:
-        if key == "pocket_clearance":
-            A = float(v)
-            c2 = override(case, **{"cage.pocket_depth": f"{(case.bearing.ball_diameter / 2 + A) * 1e3!r} mm"})
-        else:
-            c2 = override(case, **{key: v})
-        out[v] = simulate(c2, duration=duration, **kw)
+    The points go through the sweep machinery (:func:`hsbearing.sweeps.run_sweep`): ``jobs``
+    worker processes (1 = in this process), one archive per point in ``out_dir`` (None: a
+    temporary directory, deleted on return) and resume when ``out_dir`` already holds them.  The
+    point cases are built exactly as :func:`override` builds them (same TOML text), so a point's
+    (chaotic) trajectory is the same as a direct :func:`simulate` of ``override(case, key=value)``.
+    Simulation keywords (``**kw``: gravity, settle, ...) cannot be passed through a sweep point;
+    with any of them the points run in this process, one after the other.
+    A point that fails numerically raises :class:`SolverError` with its partial Dataset.
+    """
+    import tempfile
+    from contextlib import nullcontext
+
+    from hsbearing.results import open_run
+    from hsbearing.sweeps import run_sweep
+
+    values = list(values)
+    if key == "pocket_clearance":
+        vary_key = "cage.pocket_depth"
+        items = [f"{(case.bearing.ball_diameter / 2 + float(A)) * 1e3!r} mm" for A in values]
+    else:
+        vary_key, items = key, values
+    if kw:
+        out = {}
+        for v, item in zip(values, items):
+            out[v] = simulate(override(case, **{vary_key: item}), duration=duration, **kw)
+        return out
+    with (tempfile.TemporaryDirectory(prefix="gyro-study-") if out_dir is None else nullcontext(out_dir)) as d:
+        sw = run_sweep(case, {vary_key: items}, jobs=jobs, out_dir=d, duration=duration, progress=False)
+        out = {}
+        for v, status, err, arch in zip(values, sw["status"].values, sw["error"].values, sw["archive"].values):
+            if status == "invalid":
+                raise CaseError(case.source, vary_key, f"value {v!r}: {err}")
+            ds = open_run(Path(d) / arch) if arch else None
+            if status != "ok":
+                raise SolverError(f"gyro study {vary_key} = {v!r}: {status}: {err}", partial=ds)
+            out[v] = ds
     return out
 
 
