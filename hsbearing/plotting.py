@@ -429,6 +429,12 @@ def _split_label(text: str):
     return (float(m.group(1)), m.group(2), m.group(1)) if m else None
 
 
+def _pretty_label(text) -> str:
+    """A value as written (``"6000 rpm"``) with its unit spelled for print (``"6000 r/min"``)."""
+    p = _split_label(text)
+    return f"{p[2]} {_PRETTY_UNIT.get(p[1], p[1])}".strip() if p else str(text)
+
+
 def _fmt_num(v: float) -> str:
     return f"{v:.6g}"
 
@@ -443,8 +449,8 @@ class _SweepAxis:
         coord = ds[dim] if dim in ds.coords else None
         if dim == "point":  # --zip: the keys vary together; the x axis is the point index
             keys = [str(c)[:-6] for c in ds.coords if str(c).endswith("_label") and ds[c].dims == ("point",)]
-            self.labels = [", ".join(str(ds[f"{k}_label"].values[i]) for k in keys) for i in range(n)] if keys \
-                else [str(i) for i in range(n)]
+            self.labels = [", ".join(_pretty_label(ds[f"{k}_label"].values[i]) for k in keys) for i in range(n)] \
+                if keys else [str(i) for i in range(n)]
             self.x = np.arange(n, dtype=float)
             self.categorical = True
             self.title = " + ".join(ds[k].attrs.get("case_key", k) for k in keys if k in ds.coords) or "point"
@@ -554,9 +560,15 @@ def _prepare_sweep(ds) -> dict:
     spec = _SWEEP_PANELS
     if ds.attrs.get("case_system") == "gyro_ribbon_cage":  # the friction moments are the result of interest
         spec = spec[-1:] + spec[:-1]
+    yerr = {}  # error bars: SFMO +/- its standard error over the reversal windows (gyro summaries)
+    for name, err in (("sfmo", "sfmo_stderr"),):
+        if name in ds and err in ds and ds[err].dtype.kind in "fiu":
+            yerr[name] = _grid_of(ds, err, order, shape)
     for title, unit, factor, items in spec:
         got = []
         for name, lab, ls in items:
+            if name in yerr:
+                yerr[name] = yerr[name] * factor
             if name in ds and ds[name].dtype.kind in "fiu":
                 y = _grid_of(ds, name, order, shape)
                 if y is not None and np.isfinite(y[good]).any():
@@ -581,6 +593,9 @@ def _prepare_sweep(ds) -> dict:
                 classes[f] = classes.get(f, 0) + 1
     layout = {
         "x_dim": x_dim,
+        "x_title": xa.title,
+        "x": [float(v) for v in xa.x],
+        "x_labels": list(xa.labels),
         "series_dims": series_dims,
         "n_series": n_series,
         "panels": [p[0] for p in panels],
@@ -591,7 +606,7 @@ def _prepare_sweep(ds) -> dict:
         "not_ok_points": bad_pts,
         "classes": classes,
     }
-    return dict(layout=layout, axes=axes, x_dim=x_dim, series_dims=series_dims, series_idx=series_idx,
+    return dict(layout=layout, yerr=yerr, error=error, axes=axes, x_dim=x_dim, series_dims=series_dims, series_idx=series_idx,
                 status=status, ok=ok, good=good, cls=cls, paper=paper, panels=panels, source=source)
 
 
@@ -619,8 +634,16 @@ def _sweep_title(ds, prep) -> str:
         if str(c).endswith("_label") and ds[c].dims == ("point",):
             keys.add(ds[str(c)[:-6]].attrs.get("case_key", str(c)[:-6]) if str(c)[:-6] in ds.coords else str(c)[:-6])
     lab = _case_labels(ds)
-    if lab.get("speed") == "n = 0 r/min":  # outer ring rotating (gyro bearings): not a useful "fixed" label
+    if lab.get("speed") == "n = 0 r/min":  # outer ring rotating (gyro bearings): show the outer-ring speed
         lab.pop("speed")
+        try:
+            from hsbearing.case import parse_quantity
+
+            n_o = parse_quantity(tomllib.loads(ds.attrs["case_toml"])["operating"]["outer_speed"], "angular_speed")
+            if n_o:
+                lab["speed"] = f"outer ring n$_o$ = {n_o * _RPM:.3g} r/min"
+        except Exception:  # no case text or no outer speed: nothing to add
+            pass
     fixed = [lab[v] for k, v in _LABEL_KEYS.items() if v in lab and k not in keys and v not in keys]
     line2 = "varied: " + ", ".join(varied) + ("; fixed: " + ", ".join(fixed) if fixed else "")
     return line1 + "\n" + line2
@@ -650,6 +673,10 @@ def _draw_sweep_panel(ax, prep, title, unit, items, colours, annotate_bad: bool)
             ys = np.where(good[s], y[s], np.nan)
             fin = np.isfinite(ys)
             ax.plot(x[fin], ys[fin], ls=ls, color=col, lw=1.1, zorder=2)  # joins the ok points only
+            if name in prep["yerr"]:
+                e = prep["yerr"][name][s]
+                fe = fin & np.isfinite(e)
+                ax.errorbar(x[fe], ys[fe], yerr=e[fe], fmt="none", ecolor=col, elinewidth=1.0, capsize=3, zorder=2)
             size = 34 if k == 0 else 20
             if cls is None:
                 ax.scatter(x[fin], ys[fin], marker="o", s=size, color=col, zorder=3)
@@ -701,7 +728,8 @@ def _draw_sweep_panel(ax, prep, title, unit, items, colours, annotate_bad: bool)
     if any(lab for _, lab, _, _ in items):
         from matplotlib.lines import Line2D
 
-        ax.legend([Line2D([], [], color="0.3", ls=ls) for _, _, ls, _ in items], [lab for _, lab, _, _ in items],
+        ax.legend([Line2D([], [], color="0.3", ls=ls) for _, _, ls, _ in items],
+                  [lab + (" \u00b1 standard error" if name in prep["yerr"] else "") for name, lab, _, _ in items],
                   fontsize=7.5, loc="best")
 
 
@@ -800,9 +828,16 @@ def plot_sweep(ds, path) -> Path:
         bottom = fig
     axs = np.atleast_1d(bottom.subplots(nrows, ncols, squeeze=False)).ravel()
     colours = _series_colours(prep)
-    if not panels:
-        axs[0].text(0.5, 0.5, "no summary variable with a finite value at an ok point", ha="center", va="center",
-                    transform=axs[0].transAxes)
+    if not panels:  # nothing to draw: say why, point by point (status and error message)
+        lines = ["no summary variable with a finite value at an ok point", ""]
+        errs = prep["error"][~prep["good"]]
+        for k, (pt, err) in enumerate(zip(lay["not_ok_points"], errs)):
+            if k == 12:
+                lines.append(f"... and {len(errs) - 12} more (see the status and error variables)")
+                break
+            err = str(err)
+            lines.append(pt + (": " + (err if len(err) <= 90 else err[:87] + "...") if err else ""))
+        axs[0].text(0.5, 0.5, "\n".join(lines), ha="center", va="center", transform=axs[0].transAxes, fontsize=9)
         axs[0].set_axis_off()
     for k, (title, unit, items) in enumerate(panels):
         _draw_sweep_panel(axs[k], prep, title, unit, items, colours, annotate_bad=(k == 0 and n_s == 1))
@@ -834,7 +869,9 @@ def plot_sweep(ds, path) -> Path:
     meta = {"Title": _sweep_title(ds, prep).replace("\n", "; "),
             "Description": (f"hsbearing sweep figure: points={lay['points']} not_ok={lay['not_ok']} "
                             f"no_summary={lay['no_summary']} x={lay['x_dim']} series={'+'.join(lay['series_dims'])} "
-                            f"panels={len(panels)} map={int(lay['map'])}"),
+                            f"panels={len(panels)} map={int(lay['map'])}"
+                            + (f" paper_agreement={lay['paper_agreement'][0]}/{lay['paper_agreement'][1]}"
+                               if lay.get("paper_agreement") else "")),
             "Software": "hsbearing"}
     if lay["not_ok_points"]:
         meta["Comment"] = "not ok: " + "; ".join(lay["not_ok_points"])

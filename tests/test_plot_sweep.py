@@ -1,0 +1,234 @@
+"""The sweep / study summary figure (``hsbearing.plotting.plot_sweep``, ``hsbearing plot DIR/sweep.nc``).
+
+Summary Datasets are built with the real layout: ``hsbearing.sweeps.plan_sweep`` + ``assemble`` with
+synthetic point records (nothing is computed), so the dims, coordinates, ``<key>_label`` and attrs are
+those of ``DIR/sweep.nc``.  One end-to-end check runs a 2-point quasi-static sweep through the CLI.
+The numbers in the records are made up: these tests check what the figure shows, not the physics.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import xarray as xr
+from PIL import Image
+
+import hsbearing
+from hsbearing import plotting, sweeps
+from hsbearing.case import CaseError
+from hsbearing.cli import main
+from hsbearing.results import open_run, write_netcdf
+
+
+def _summary(vary, summaries, *, kind="run", case="zhang2016", statuses=None, zip=False, attrs=None):
+    """A sweep Dataset as assembled by hsbearing.sweeps from the given per-point summaries (point order = product order)."""
+    plan = sweeps.plan_sweep(case, vary, kind=kind, duration=0.1 if kind == "run" else None, zip=zip)
+    assert len(plan.points) == len(summaries)
+    recs = []
+    for i, summ in enumerate(summaries):
+        st = statuses[i] if statuses else "ok"
+        recs.append({"status": st, "error": "" if st == "ok" else f"SolverError: synthetic failure {i}",
+                     "summary": dict(summ) if st in ("ok", "failed") else {}, "wall_time": 0.1,
+                     "archive": f"p{i}.nc" if st != "invalid" else ""})
+    return sweeps.assemble(plan, recs, attrs=attrs)
+
+
+def _dyn(i, label="1 period"):
+    return {"classification": label, "classification_confidence": 0.8, "mean_cage_slip_ratio": 0.01 * (i + 1),
+            "whirl_amplitude": 20e-6 + 1e-6 * i, "whirl_frequency_ratio": 0.5 + 0.01 * i,
+            "mean_inner_contact_load": 100.0 + 50 * i, "max_inner_contact_load": 120.0 + 50 * i,
+            "mean_outer_contact_load": 110.0 + 50 * i, "max_outer_contact_load": 130.0 + 50 * i}
+
+
+def _png_text(path) -> dict:
+    with Image.open(path) as im:
+        return dict(im.text)
+
+
+def _check_png(path):
+    assert path.exists() and path.stat().st_size > 10_000
+    with Image.open(path) as im:
+        assert im.format == "PNG" and im.size[0] > 600 and im.size[1] > 400
+        px = np.asarray(im.convert("L"), dtype=float)
+    assert px.std() > 10  # not a blank canvas
+
+
+def test_one_key_dynamic_with_a_failed_point(tmp_path):
+    labels = ["1 period", "4 periods", "quasi-periodic", "chaos", "undetermined"]
+    summ = [_dyn(i, lab) for i, lab in enumerate(labels)]
+    st = ["ok", "ok", "failed", "ok", "ok"]
+    ds = _summary({"axial_load": "100,500,1000,2000,3000N"}, summ, statuses=st)
+    lay = plotting.sweep_layout(ds)
+    assert lay["x_dim"] == "axial_load" and lay["series_dims"] == [] and lay["n_series"] == 1
+    assert lay["x"] == [100.0, 500.0, 1000.0, 2000.0, 3000.0] and lay["x_title"] == "operating.axial_load [N]"
+    assert lay["panels"] == ["mean cage slip ratio", "cage whirl amplitude (RMS radius)", "whirl frequency / cage speed",
+                             "inner race contact load $Q_i$", "outer race contact load $Q_o$"]
+    assert not lay["map"]  # one varied key: the classes are the marker styles, no map
+    # the failed point is counted and named, and its (partial) class is not counted with the good ones
+    assert lay["not_ok"] == 1 and lay["not_ok_points"] == ["1000 N: failed"]
+    assert lay["classes"] == {"1 period": 1, "k periods": 1, "chaos": 1, "undetermined": 1}
+    png = plotting.plot_sweep(ds, tmp_path / "sweep.png")
+    _check_png(png)
+    text = _png_text(png)
+    assert "points=5 not_ok=1" in text["Description"]
+    assert text["Comment"] == "not ok: 1000 N: failed"
+    assert "4 of 5 points ok" in text["Title"]
+
+
+def test_two_keys_with_classes_draw_the_class_map_and_lines_per_oil(tmp_path):
+    vary = {"oil": "4109,4106", "temperature": "27,80,130degC"}
+    labels = ["quasi-periodic", "3 periods", "chaos", "1 period", "1 period", "undetermined"]
+    ds = _summary(vary, [_dyn(i, lab) for i, lab in enumerate(labels)])
+    # the study tables carry the paper's label of every cell
+    ds["paper_classification"] = (ds["status"].dims, np.array([["1 period", "3 periods", "quasi-periodic"],
+                                                                ["1 period", "1 period", "1 period"]], dtype=object))
+    lay = plotting.sweep_layout(ds)
+    # x = the numeric key (temperature, in the unit it was written in), one line per oil
+    assert lay["x_dim"] == "temperature" and lay["series_dims"] == ["oil"] and lay["n_series"] == 2
+    assert lay["x"] == [27.0, 80.0, 130.0] and lay["x_title"] == "lubricant.temperature [\N{DEGREE SIGN}C]"
+    assert lay["x_labels"] == ["27 \N{DEGREE SIGN}C", "80 \N{DEGREE SIGN}C", "130 \N{DEGREE SIGN}C"]
+    assert lay["map"]
+    png = plotting.plot_sweep(ds, tmp_path / "t.png")
+    _check_png(png)
+    # classified cells (not "undetermined"): 5; same label as the paper: 3 periods and 1 period, 1 period -> 3
+    assert "paper_agreement=3/5" in _png_text(png)["Description"]
+
+
+def test_quasistatic_two_keys_no_classification(tmp_path):
+    vary = {"axial_load": "250,500,1000N", "inner_speed": "6000,14000rpm"}
+    summ = []
+    for fa in (250.0, 500.0, 1000.0):
+        for n in (6000.0, 14000.0):
+            q = fa / 11 / np.sin(0.44)
+            summ.append({"mean_inner_contact_load": q, "max_inner_contact_load": q, "mean_outer_contact_load": 1.1 * q,
+                         "max_outer_contact_load": 1.1 * q, "cage_speed": 0.41 * n * 2 * np.pi / 60,
+                         "inner_ring_axial_displacement": 1e-6 * fa ** (2 / 3)})
+    ds = _summary(vary, summ, kind="quasistatic")
+    lay = plotting.sweep_layout(ds)
+    assert lay["x_dim"] == "axial_load" and lay["series_dims"] == ["inner_speed"]
+    assert not lay["map"] and lay["classes"] == {}
+    assert lay["panels"] == ["inner race contact load $Q_i$", "outer race contact load $Q_o$", "cage speed",
+                             "inner ring axial displacement"]
+    _check_png(plotting.plot_sweep(ds, tmp_path / "q.png"))
+
+
+def test_gyro_summary_draws_the_friction_moments_first(tmp_path):
+    summ = [{"sfmc": 7.3e-6, "sfmo": 6.0e-6, "sfmo_stderr": 0.4e-6, "rfmc": 2.7e-6},
+            {"sfmc": 9.8e-6, "sfmo": float("nan"), "sfmo_stderr": float("nan"), "rfmc": 2.7e-6}]
+    ds = _summary({"cage.thickness": "0.15,0.30mm"}, summ, case="jiang2014_gyro")
+    lay = plotting.sweep_layout(ds)
+    assert lay["panels"] == ["friction moments (seed 000)"]  # no dynamics fields in a gyro summary: nothing else
+    assert lay["x"] == [0.15, 0.30] and lay["x_title"] == "cage.thickness [mm]"
+    png = plotting.plot_sweep(ds, tmp_path / "g.png")
+    _check_png(png)
+    # the SI values would be 1.5e-4 m: the axis is in the unit of the labels
+    assert "panels=1" in _png_text(png)["Description"]
+
+
+def test_invalid_and_all_failed_points_are_shown_not_dropped(tmp_path):
+    ds = _summary({"axial_load": "500,1000N"}, [_dyn(0), _dyn(1)], statuses=["invalid", "crashed"])
+    lay = plotting.sweep_layout(ds)
+    assert lay["not_ok"] == 2 and lay["panels"] == [] and lay["classes"] == {}
+    png = plotting.plot_sweep(ds, tmp_path / "bad.png")
+    assert png.stat().st_size > 10_000
+    assert _png_text(png)["Comment"] == "not ok: 500 N: invalid; 1000 N: crashed"
+
+
+def test_summary_failed_point_is_marked(tmp_path):
+    ds = _summary({"axial_load": "500,1000,2000N"}, [_dyn(0), _dyn(1), _dyn(2)])
+    ds["error"][1] = "summary failed: ValueError: synthetic"
+    lay = plotting.sweep_layout(ds)
+    assert lay["not_ok"] == 0 and lay["no_summary"] == 1 and lay["not_ok_points"] == ["1000 N: summary failed"]
+    plotting.plot_sweep(ds, tmp_path / "s.png")
+
+
+def test_three_keys_lines_per_combination_or_a_clear_refusal(tmp_path):
+    vary = {"oil": "4109,4106", "temperature": "27,130degC", "axial_load": "500,1000,2000N"}
+    ds = _summary(vary, [_dyn(i % 5) for i in range(12)])
+    lay = plotting.sweep_layout(ds)
+    # x = the numeric key with the most values; every combination of the others is one line (2 x 2 = 4)
+    assert lay["x_dim"] == "axial_load" and lay["series_dims"] == ["oil", "temperature"] and lay["n_series"] == 4
+    assert lay["map"]
+    _check_png(plotting.plot_sweep(ds, tmp_path / "three.png"))
+    # more lines than MAX_SERIES: one-line CaseError, from the library and from the CLI (exit 2, no figure)
+    big = _summary({"oil": "4109,4106,4050", "temperature": "27,80,130,180degC", "axial_load": "500,1000,2000,3000,6000N"},
+                   [_dyn(i % 5) for i in range(60)])
+    with pytest.raises(CaseError, match="12 lines per panel over oil, temperature are too many"):
+        plotting.plot_sweep(big, tmp_path / "big.png")
+    assert not (tmp_path / "big.png").exists()
+    write_netcdf(big, tmp_path / "big" / "sweep.nc")
+    rc = main(["plot", str(tmp_path / "big" / "sweep.nc")])
+    assert rc == 2
+    assert not (tmp_path / "big" / "sweep.png").exists()
+
+
+def test_three_keys_cli_message_names_the_file(tmp_path, capsys):
+    big = _summary({"oil": "4109,4106,4050", "temperature": "27,80,130,180degC", "axial_load": "500,1000,2000,3000N"},
+                   [_dyn(0) for _ in range(48)])
+    path = tmp_path / "sweep.nc"
+    write_netcdf(big, path)
+    assert main(["plot", str(path)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith(f"hsbearing: error: {path}: ") and "too many" in err[0]
+
+
+def test_zipped_sweep_and_mixed_units(tmp_path):
+    ds = _summary({"axial_load": ["500 N", "1 kN"], "inner_speed": ["6000 rpm", "10000 rpm"]},
+                  [_dyn(0), _dyn(1)], zip=True)
+    lay = plotting.sweep_layout(ds)
+    assert lay["x_dim"] == "point" and lay["x_labels"] == ["500 N, 6000 r/min", "1 kN, 10000 r/min"]
+    _check_png(plotting.plot_sweep(ds, tmp_path / "z.png"))
+    # mixed units in the labels ("500 N", "1 kN"): the SI coordinate in the display unit of its kind
+    ds = _summary({"axial_load": ["500 N", "1 kN"]}, [_dyn(0), _dyn(1)])
+    lay = plotting.sweep_layout(ds)
+    assert lay["x"] == [500.0, 1000.0] and lay["x_title"] == "operating.axial_load [N]"
+    ds = _summary({"inner_speed": ["6000 rpm", "1000 rad/s"]}, [_dyn(0), _dyn(1)])
+    assert plotting.sweep_layout(ds)["x"] == pytest.approx([6000.0, 1000.0 * 60 / (2 * np.pi)])
+
+
+def test_plot_run_dispatches_a_summary(tmp_path):
+    ds = _summary({"axial_load": "500,1000N"}, [_dyn(0), _dyn(1)])
+    assert plotting.is_sweep_summary(ds)
+    png = plotting.plot_run(ds, tmp_path / "r.png")
+    assert "hsbearing sweep figure" in _png_text(png)["Description"]
+
+
+def test_quasistatic_sweep_cli_end_to_end(tmp_path, capsys):
+    out = tmp_path / "sw"
+    rc = main(["sweep", "zhang2016", "--kind", "quasistatic", "--vary", "operating.axial_load=500,1000N",
+               "-o", str(out), "-j", "1"])
+    printed = capsys.readouterr().out
+    assert rc == 0
+    assert f"figure: {out / 'sweep.png'}" in printed  # written next to sweep.nc by default
+    _check_png(out / "sweep.png")
+    lay = plotting.sweep_layout(open_run(out / "sweep.nc"))
+    assert lay["x"] == [500.0, 1000.0] and lay["not_ok"] == 0
+    assert "cage speed" in lay["panels"] and "inner race contact load $Q_i$" in lay["panels"]
+    (out / "sweep.png").unlink()
+    assert main(["plot", str(out / "sweep.nc"), "-o", str(tmp_path / "fig.png")]) == 0
+    assert capsys.readouterr().out.strip() == f"figure: {tmp_path / 'fig.png'}"
+    _check_png(tmp_path / "fig.png")
+    # --no-figure: the resumed sweep draws nothing
+    assert main(["sweep", "zhang2016", "--kind", "quasistatic", "--vary", "operating.axial_load=500,1000N",
+                 "-o", str(out), "-j", "1", "--no-figure"]) == 0
+    assert not (out / "sweep.png").exists()
+
+
+def test_study_cli_writes_one_figure_per_table(tmp_path, monkeypatch, capsys):
+    from hsbearing import study
+
+    real = study.run_study
+
+    def one_table(name, out_dir, **kw):  # the CLI with a synthetic model and one table (seconds, not minutes)
+        from tests.test_study import fake_dynamics
+
+        kw.update(point_fn=fake_dynamics, tables=["table3"], duration="5 ms", progress=False)
+        return real(name, out_dir, **kw)
+
+    monkeypatch.setattr(study, "run_study", one_table)
+    assert main(["study", "zhang2016", "-o", str(tmp_path), "-j", "1"]) == 0
+    assert f"figure: {tmp_path / 'table3.png'}" in capsys.readouterr().out
+    _check_png(tmp_path / "table3.png")
+    assert not (tmp_path / "table4.png").exists()  # table4 was not run
+    text = _png_text(tmp_path / "table3.png")["Description"]
+    assert "map=1" in text and "paper_agreement=" in text
