@@ -271,6 +271,38 @@ def test_clearance_raises_starting_moment_small_A():
     assert float(r[0.03e-3]["sfmc"]) > float(r[0.01e-3]["sfmc"])
 
 
+def test_cage_moment_windows_mechanism_metrics():
+    """cage_moment_windows: share of M_C in each window maximum (1 - RFMC / max M) and the time by which 90 % of the
+    window's driving M_C has accumulated -- short for decaying impacts, 0.9 T for a cage carried along."""
+    import xarray as xr
+
+    T, dt = 2.0, 1e-3
+    t = np.arange(0.0, 2 * T, dt)
+    rf = 3e-6
+    decaying = 6e-6 * np.exp(-(t % T) / 0.1)  # impacts at every window start, e-folding 0.1 s
+    steady = np.full_like(t, 0.3e-6)  # cage carried by friction
+    for MC, share, lo, hi in [(decaying, 6 / 9, 0.2, 0.25), (steady, 0.3 / 3.3, 0.9 * T - 0.01, 0.9 * T + 0.01)]:
+        ds = xr.Dataset({"friction_moment_total": ("time", rf + MC), "friction_moment_cage": ("time", MC), "rfmc": rf,
+                         "window_max_moment": ("window", [0.0, 0.0])}, coords={"time": t},
+                        attrs={"oscillation_period": T})
+        sh, dec = gyro.cage_moment_windows(ds)
+        assert sh == pytest.approx([share, share], rel=1e-9)
+        assert np.all((dec > lo) & (dec < hi)), dec  # decaying: t90 = 0.1 ln 10 = 0.23 s
+
+
+def test_gravity_direction_settles_along_it():
+    """gravity_direction: the cage settles along the given direction -- along the axis it rests on the balls after
+    the axial play A = k - D_w/2 (seed 000 Sec. 3.2) plus a Hertz approach of nanometres; the default is -Y."""
+    c = _case()
+    A = c.cage.pocket_depth - c.bearing.ball_diameter / 2
+    y = gyro.build_model(c, gravity=gyro.GRAVITY, gravity_direction=(1.0, 0.0, 0.0)).y0()
+    assert A < y[0] < A + 2e-8 and y[1] == 0.0 and y[2] == 0.0
+    y = gyro.build_model(c, gravity=gyro.GRAVITY).y0()
+    assert y[0] == 0.0 and y[2] == 0.0 and -0.05e-3 < y[1] < -0.039e-3  # radial play 0.04 mm (default -Y)
+    with pytest.raises(ValueError):
+        gyro.build_model(c, gravity_direction=(0.0, 0.0, 0.0))
+
+
 def test_oscillation_window0_is_the_constant_start():
     """For t < T the oscillation profile equals the constant-rate start, so window 0 gives SFMC."""
     a = gyro.simulate(_case(), duration=0.06)
@@ -309,7 +341,10 @@ def test_table2_cell(row):
         misses.append(("sfmc", f"SFMC {sfmc:.2f} vs {row['SFMC_uNm']}"))
     if sfmo != pytest.approx(row["SFMO_uNm"], rel=0.20):
         misses.append(("sfmo", f"SFMO {sfmo:.2f} vs {row['SFMO_uNm']}"))
-    known = {"sfmc": key in _SFMC_XFAIL, "sfmo": key in _SFMO_XFAIL}
-    if misses and all(known[m] for m, _ in misses):
-        pytest.xfail("; ".join(_SFMC_XFAIL.get(key, "") if m == "sfmc" else _SFMO_XFAIL.get(key, "") for m, _ in misses))
-    assert not misses, "; ".join(msg for _, msg in misses)
+    # strict: a listed miss that no longer misses fails too (the lists must state the measured truth)
+    expected = {m for m, table in (("sfmc", _SFMC_XFAIL), ("sfmo", _SFMO_XFAIL)) if key in table}
+    found = {m for m, _ in misses}
+    assert found <= expected, "; ".join(msg for m, msg in misses if m not in expected)
+    assert expected <= found, f"listed as a miss but now within 20 %: {sorted(expected - found)} ({sfmc=:.2f}, {sfmo=:.2f})"
+    if expected:
+        pytest.xfail("; ".join(_SFMC_XFAIL.get(key, "") if m == "sfmc" else _SFMO_XFAIL.get(key, "") for m in sorted(expected)))

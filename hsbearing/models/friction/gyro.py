@@ -853,24 +853,25 @@ def starting_moments(t, M, mode, period, ramp_time):
     return sfmc, sfmo, maxima
 
 
-def cage_moment_windows(ds, threshold: float = 0.1):
+def cage_moment_windows(ds, fraction: float = 0.9):
     """Share of the ball/cage moment in each window's maximum, and how fast it dies out ([J] Figs. 8-9).
 
     For each window k (0 = the start, then one per reversal; the whole run for a constant-rate run):
 
-    * ``share[k]`` = M_C / M at the instant of the window's maximum of M [-] ([J] Figs. 8-9 show
-      M_C above half of M at each start and reversal);
-    * ``decay[k]`` = time from the window start to the last stored sample whose driving M_C
-      (max(M_C, 0)) exceeds ``threshold`` times its window peak [s] (in [J] the impacts die out
-      within ~1 s; a cage that is carried along by friction gives a steady M_C, i.e. decay = the
-      window length).
+    * ``share[k]`` = M_C / M at the instant of the window's maximum of M, i.e. 1 - RFMC / max M [-]
+      ([J] Figs. 8-9 show M_C above half of M at each start and reversal);
+    * ``decay[k]`` = time from the window start until ``fraction`` (0.9) of the window's integral
+      of the driving M_C (max(M_C, 0)) has accumulated [s].  Impacts that die out within ~1 s, as
+      in [J], give well under 1 s; a cage carried along by friction (steady M_C) gives
+      ``fraction`` times the window length (1.8 s for 2 s windows).
 
-    Uses the stored (peak-hold) series ``friction_moment_total`` / ``friction_moment_cage``.
+    Uses the stored (peak-hold) series ``friction_moment_total`` / ``friction_moment_cage`` and ``rfmc``.
     Returns ``(share, decay)`` as arrays.
     """
     t = np.asarray(ds["time"].values)
     M = np.asarray(ds["friction_moment_total"].values)
     MC = np.maximum(np.asarray(ds["friction_moment_cage"].values), 0.0)
+    M_static = float(ds["rfmc"].values)
     if "window" in ds.dims:
         T = float(ds.attrs.get("oscillation_period", 0.0)) or _period_of(ds)
         edges = [(k * T, (k + 1) * T) for k in range(int(ds.sizes["window"]))]
@@ -883,11 +884,10 @@ def cage_moment_windows(ds, threshold: float = 0.1):
             share.append(float("nan"))
             decay.append(float("nan"))
             continue
-        i = sel[np.argmax(M[sel])]
-        share.append(float(MC[i] / M[i]) if M[i] > 0 else float("nan"))
-        peak = MC[sel].max()
-        above = sel[MC[sel] > threshold * peak] if peak > 0 else sel[:1]
-        decay.append(float(t[above[-1]] - t0))
+        Mmax = M[sel].max()
+        share.append(float(1.0 - M_static / Mmax) if Mmax > 0 else float("nan"))  # M = M_static + max(M_C, 0)
+        cum = np.cumsum(MC[sel])  # uniform stored interval: the integral up to a constant
+        decay.append(float(t[sel[np.searchsorted(cum, fraction * cum[-1])]] - t0) if cum[-1] > 0 else 0.0)
     return np.array(share), np.array(decay)
 
 
