@@ -370,7 +370,8 @@ MAX_SERIES = 10
 # present with a finite value at an ok point.
 _SWEEP_PANELS = (
     ("mean cage slip ratio", "slip ratio [%]", 100.0, (("mean_cage_slip_ratio", None, "-"),)),
-    ("cage whirl amplitude (RMS radius)", "whirl radius [\u00b5m]", 1e6, (("whirl_amplitude", None, "-"),)),
+    ("cage whirl radius", "whirl radius [\u00b5m]", 1e6, (("whirl_amplitude", "RMS (whirl amplitude)", "-"),
+                                                           ("whirl_radius_max", "max", ":"))),
     ("whirl frequency / cage speed", "frequency ratio [-]", 1.0, (("whirl_frequency_ratio", None, "-"),)),
     ("inner race contact load $Q_i$", "$Q_i$ [N]", 1.0, (("mean_inner_contact_load", "mean over balls", "-"),
                                                        ("max_inner_contact_load", "max over balls", "--"))),
@@ -579,6 +580,13 @@ def _prepare_sweep(ds) -> dict:
             got = [(got[0][0], "mean = max over balls", got[0][2], got[0][3])]
         if got:
             panels.append((title, unit, got))
+    refs = {}  # horizontal reference lines: the cage guide clearance, when the same at every ok point
+    if "whirl_radius_max" in ds and "guide_clearance_used" in ds:
+        with np.errstate(divide="ignore", invalid="ignore"):
+            gc = (_grid_of(ds, "whirl_radius_max", order, shape) / _grid_of(ds, "guide_clearance_used", order, shape))[good]
+        gc = gc[np.isfinite(gc) & (gc > 0)]
+        if gc.size and np.ptp(gc) <= 1e-3 * np.mean(gc):
+            refs["cage whirl radius"] = [(float(np.mean(gc)) * 1e6, f"guide clearance {np.mean(gc) * 1e6:.0f} \u00b5m")]
     xa = axes[x_dim]
     bad_pts = []
     for s, idx in enumerate(series_idx):
@@ -606,7 +614,7 @@ def _prepare_sweep(ds) -> dict:
         "not_ok_points": bad_pts,
         "classes": classes,
     }
-    return dict(layout=layout, yerr=yerr, error=error, axes=axes, x_dim=x_dim, series_dims=series_dims, series_idx=series_idx,
+    return dict(layout=layout, yerr=yerr, refs=refs, error=error, axes=axes, x_dim=x_dim, series_dims=series_dims, series_idx=series_idx,
                 status=status, ok=ok, good=good, cls=cls, paper=paper, panels=panels, source=source)
 
 
@@ -725,11 +733,17 @@ def _draw_sweep_panel(ax, prep, title, unit, items, colours, annotate_bad: bool)
     lo, hi = ax.get_ylim()
     if (~prep["good"]).any():  # room at the bottom for the red marks
         ax.set_ylim(lo - 0.12 * (hi - lo), hi)
-    if any(lab for _, lab, _, _ in items):
+    refs = prep["refs"].get(title, [])
+    for val, _ in refs:
+        ax.axhline(val, color="r", ls="--", lw=1.0, zorder=1)
+    if any(lab for _, lab, _, _ in items) or refs:
         from matplotlib.lines import Line2D
 
-        ax.legend([Line2D([], [], color="0.3", ls=ls) for _, _, ls, _ in items],
-                  [lab + (" \u00b1 standard error" if name in prep["yerr"] else "") for name, lab, _, _ in items],
+        named = [it for it in items if it[1]]
+        ax.legend([Line2D([], [], color="0.3", ls=ls) for _, _, ls, _ in named]
+                  + [Line2D([], [], color="r", ls="--") for _ in refs],
+                  [lab + (" \u00b1 standard error" if name in prep["yerr"] else "") for name, lab, _, _ in named]
+                  + [lab for _, lab in refs],
                   fontsize=7.5, loc="best")
 
 

@@ -61,7 +61,7 @@ def test_one_key_dynamic_with_a_failed_point(tmp_path):
     lay = plotting.sweep_layout(ds)
     assert lay["x_dim"] == "axial_load" and lay["series_dims"] == [] and lay["n_series"] == 1
     assert lay["x"] == [100.0, 500.0, 1000.0, 2000.0, 3000.0] and lay["x_title"] == "operating.axial_load [N]"
-    assert lay["panels"] == ["mean cage slip ratio", "cage whirl amplitude (RMS radius)", "whirl frequency / cage speed",
+    assert lay["panels"] == ["mean cage slip ratio", "cage whirl radius", "whirl frequency / cage speed",
                              "inner race contact load $Q_i$", "outer race contact load $Q_o$"]
     assert not lay["map"]  # one varied key: the classes are the marker styles, no map
     # the failed point is counted and named, and its (partial) class is not counted with the good ones
