@@ -724,7 +724,11 @@ def _draw_sweep_panel(ax, prep, title, unit, items, colours, annotate_bad: bool)
         ax.set_xticklabels(xa.labels, rotation=30 if max(len(t) for t in xa.labels) > 8 else 0,
                            ha="right" if max(len(t) for t in xa.labels) > 8 else "center", fontsize=8)
         ax.set_xlim(x[0] - 0.5, x[-1] + 0.5)
-    elif len(x) <= 10:
+    else:  # every varied value in view, also those of not-ok points (no line reaches them)
+        span = float(np.ptp(x)) if len(x) > 1 else 0.0
+        pad = 0.06 * span if span > 0 else max(0.05 * abs(float(x[0])), 1e-12) if len(x) else 1.0
+        ax.set_xlim(float(np.min(x)) - pad, float(np.max(x)) + pad)
+    if not xa.categorical and len(x) <= 10:
         span = float(np.ptp(x)) if len(x) > 1 else 0.0
         gaps = np.diff(np.sort(x))
         if span > 0 and gaps.min() >= 0.1 * span:

@@ -184,6 +184,11 @@ def test_zipped_sweep_and_mixed_units(tmp_path):
     assert lay["x"] == [500.0, 1000.0] and lay["x_title"] == "operating.axial_load [N]"
     ds = _summary({"inner_speed": ["6000 rpm", "1000 rad/s"]}, [_dyn(0), _dyn(1)])
     assert plotting.sweep_layout(ds)["x"] == pytest.approx([6000.0, 1000.0 * 60 / (2 * np.pi)])
+    lay = plotting.sweep_layout(_summary({"temperature": ["27 degC", "400 K"]}, [_dyn(0), _dyn(1)]))
+    assert lay["x"] == pytest.approx([27.0, 400 - 273.15]) and lay["x_title"] == "lubricant.temperature [\N{DEGREE SIGN}C]"
+    # a plain number (no unit): the value itself, the key as the axis title
+    lay = plotting.sweep_layout(_summary({"inner_conformity": [0.51, 0.52, 0.54]}, [_dyn(i) for i in range(3)]))
+    assert lay["x"] == [0.51, 0.52, 0.54] and lay["x_title"] == "bearing.inner_conformity"
 
 
 def test_plot_run_dispatches_a_summary(tmp_path):
@@ -232,3 +237,14 @@ def test_study_cli_writes_one_figure_per_table(tmp_path, monkeypatch, capsys):
     assert not (tmp_path / "table4.png").exists()  # table4 was not run
     text = _png_text(tmp_path / "table3.png")["Description"]
     assert "map=1" in text and "paper_agreement=" in text
+
+
+def test_sweep_cli_with_an_invalid_point_still_draws_the_figure(tmp_path, capsys):
+    out = tmp_path / "kg"
+    rc = main(["sweep", "zhang2016", "--kind", "quasistatic", "--vary", "inner_conformity=0.52,0.49", "--keep-going",
+               "-o", str(out), "-j", "1"])
+    assert rc == 1  # a point is not ok
+    assert f"figure: {out / 'sweep.png'}" in capsys.readouterr().out
+    text = _png_text(out / "sweep.png")
+    assert "points=2 not_ok=1" in text["Description"]
+    assert text["Comment"] == "not ok: 0.49: invalid"
