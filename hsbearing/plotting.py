@@ -364,6 +364,8 @@ CLASS_STYLE = {
 NOT_OK_STYLE = ("x", "#d62728")
 #: Most lines (series) in one panel; more is refused with a CaseError (plot a slice of the Dataset).
 MAX_SERIES = 10
+#: Same, when the lines are the values of one numeric key (ordered colours and a colour bar instead of a legend).
+MAX_ORDERED_SERIES = 30
 
 # (panel title, y label with its unit, factor SI -> unit, ((variable, legend label, line style), ...)), in
 # drawing order (friction moments first for a gyro sweep); a panel is drawn only if one of its variables is
@@ -538,9 +540,11 @@ def _prepare_sweep(ds) -> dict:
     series_dims = [d for d in dims if d != x_dim]
     n_x = ds.sizes[x_dim]
     n_series = int(np.prod([ds.sizes[d] for d in series_dims])) if series_dims else 1
-    if n_series > MAX_SERIES:
+    ordered = len(series_dims) == 1 and not axes[series_dims[0]].categorical
+    limit = MAX_ORDERED_SERIES if ordered else MAX_SERIES
+    if n_series > limit:
         raise CaseError(source, None, f"{n_series} lines per panel over {', '.join(series_dims)} are too many for one "
-                                      f"figure (at most {MAX_SERIES}); plot a slice, e.g. "
+                                      f"figure (at most {limit}); plot a slice, e.g. "
                                       f"hsbearing.plotting.plot_sweep(ds.isel({series_dims[0]}=[0, 1]), 'fig.png')")
     order = series_dims + [x_dim]
     shape = (n_series, n_x)
@@ -608,6 +612,7 @@ def _prepare_sweep(ds) -> dict:
         "n_series": n_series,
         "panels": [p[0] for p in panels],
         "map": cls is not None and (len(dims) > 1 or paper is not None),
+        "colorbar": bool(ordered and n_series > 6),  # many ordered lines: a colour bar, not legend entries
         "points": int(status.size),
         "not_ok": int((~ok).sum()),
         "no_summary": int(no_summary.sum()),
@@ -685,7 +690,7 @@ def _draw_sweep_panel(ax, prep, title, unit, items, colours, annotate_bad: bool)
                 e = prep["yerr"][name][s]
                 fe = fin & np.isfinite(e)
                 ax.errorbar(x[fe], ys[fe], yerr=e[fe], fmt="none", ecolor=col, elinewidth=1.0, capsize=3, zorder=2)
-            size = 34 if k == 0 else 20
+            size = (34 if k == 0 else 20) if len(x) <= 12 and prep["layout"]["n_series"] <= 6 else (16 if k == 0 else 9)
             if cls is None:
                 ax.scatter(x[fin], ys[fin], marker="o", s=size, color=col, zorder=3)
                 continue
@@ -705,7 +710,7 @@ def _draw_sweep_panel(ax, prep, title, unit, items, colours, annotate_bad: bool)
                 ax.scatter(x[m], ys[m], marker=".", s=size, color=col, zorder=3)
         bad = ~good[s]
         if bad.any():  # not silently dropped: a red x at the bottom of the panel (x in data, y in axes units)
-            yb = np.full(int(bad.sum()), 0.04 + 0.045 * s)
+            yb = np.full(int(bad.sum()), 0.04 + 0.045 * (s % 4))
             ax.scatter(x[bad], yb, marker=NOT_OK_STYLE[0], s=46, color=NOT_OK_STYLE[1], linewidths=1.6,
                        transform=ax.get_xaxis_transform(), clip_on=False, zorder=5)
             if annotate_bad:
@@ -735,8 +740,9 @@ def _draw_sweep_panel(ax, prep, title, unit, items, colours, annotate_bad: bool)
             ax.set_xticks(x)
             ax.set_xticklabels([_fmt_num(v) for v in x], fontsize=8)
     lo, hi = ax.get_ylim()
-    if (~prep["good"]).any():  # room at the bottom for the red marks
-        ax.set_ylim(lo - 0.12 * (hi - lo), hi)
+    if (~prep["good"]).any():  # room at the bottom for the red marks (up to 4 levels, one per line)
+        levels = min(int((~prep["good"]).any(axis=1).sum()), 4) if prep["layout"]["n_series"] > 1 else 1
+        ax.set_ylim(lo - (0.08 + 0.05 * levels) * (hi - lo), hi)
     refs = prep["refs"].get(title, [])
     for val, _ in refs:
         ax.axhline(val, color="r", ls="--", lw=1.0, zorder=1)
@@ -761,6 +767,7 @@ def _draw_class_map(ax, prep) -> None:
     conf = prep.get("conf")
     n_s, n_x = raw.shape
     agree = n_cmp = 0
+    compact = n_s > 12 or n_x > 12  # colours only (class legend in the map); the text would not fit
     for s in range(n_s):
         for j in range(n_x):
             r = n_s - 1 - s  # first series on top
@@ -783,21 +790,32 @@ def _draw_class_map(ax, prep) -> None:
                 n_cmp += counted
                 agree += same
                 txt += f"\npaper: {paper[s, j]}" + (" \u2713" if same else "")
-            ax.text(j + 0.5, r + 0.5, txt, ha="center", va="center", fontsize=7.5 if paper is not None else 8,
-                    color=col)
+            if not compact:
+                ax.text(j + 0.5, r + 0.5, txt, ha="center", va="center", fontsize=7.5 if paper is not None else 8,
+                        color=col)
     ax.set_xlim(0, n_x)
     ax.set_ylim(0, n_s)
     ax.set_xticks(np.arange(n_x) + 0.5)
-    ax.set_xticklabels(xa.labels, fontsize=8)
+    crowded = sum(len(t) for t in xa.labels) > 110
+    ax.set_xticklabels(xa.labels, fontsize=8 if n_x <= 12 else 7, rotation=90 if crowded else 0)
     ax.set_xlabel(xa.title.split(" [")[0])
     labels = [_series_label([prep["axes"][d] for d in prep["series_dims"]], idx) for idx in prep["series_idx"]]
     ax.set_yticks(np.arange(n_s) + 0.5)
-    ax.set_yticklabels(labels[::-1] if labels[0] else [""] * n_s, fontsize=8)
+    ax.set_yticklabels(labels[::-1] if labels[0] else [""] * n_s, fontsize=8 if n_s <= 12 else 6.5)
+    if compact:
+        from matplotlib.patches import Patch
+
+        present = [f for f in CLASS_STYLE if (fam[prep["good"]] == f).any()]
+        hs = [Patch(facecolor=CLASS_STYLE[f][1], alpha=0.35 if f != "undetermined" else 0.18) for f in present]
+        if (~prep["good"]).any():
+            hs.append(Patch(facecolor="#fbe3e3", hatch="xx", edgecolor="white"))
+            present.append("not ok")
+        ax.legend(hs, present, fontsize=7.5, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)
     ax.tick_params(length=0)
     for sp in ax.spines.values():
         sp.set_visible(False)
     ttl = "cage motion (classification of the Poincar\u00e9 section"
-    ttl += ", confidence in brackets)" if conf is not None else ")"
+    ttl += ", confidence in brackets)" if conf is not None and not compact else ")"
     if paper is not None:
         ttl += f"; same label as the paper in {agree} of {n_cmp} classified cells (\u2713)"
     ax.set_title(ttl, fontsize=10)
@@ -836,7 +854,7 @@ def plot_sweep(ds, path) -> Path:
     ncols = 1 if n_p == 1 else 2 if n_p in (2, 4) else 3
     nrows = math.ceil(n_p / ncols)
     n_s = lay["n_series"]
-    map_h = (0.55 * n_s + 1.3) if lay["map"] else 0.0
+    map_h = ((0.55 if n_s <= 12 else 0.22) * n_s + 1.3) if lay["map"] else 0.0
     fig = Figure(figsize=(4.6 * ncols if ncols > 1 else 7.0, 3.2 * nrows + map_h + 1.5), layout="constrained")
     fig.suptitle(_sweep_title(ds, prep), fontsize=11)
     if lay["map"]:
@@ -870,7 +888,18 @@ def plot_sweep(ds, path) -> Path:
                 handles.append(Line2D([], [], ls="", marker=mk, ms=7, markerfacecolor="none" if f == "undetermined" else c,
                                       markeredgecolor=c))
                 labels.append(f"{f} ({lay['classes'][f]})")
-    if n_s > 1:
+    if lay["colorbar"]:  # the lines are the values of one numeric key: a colour bar, ticks = the values
+        from matplotlib.cm import ScalarMappable
+        from matplotlib.colors import ListedColormap, Normalize
+
+        sa = prep["axes"][prep["series_dims"][0]]
+        sm = ScalarMappable(norm=Normalize(-0.5, n_s - 0.5), cmap=ListedColormap(colours))
+        cb = bottom.colorbar(sm, ax=[a for a in axs if a.axison] or list(axs), pad=0.01, aspect=40)
+        step = max(1, math.ceil(n_s / 15))
+        cb.set_ticks(np.arange(0, n_s, step))
+        cb.set_ticklabels([sa.labels[i] for i in range(0, n_s, step)], fontsize=7.5)
+        cb.set_label(sa.title.split(" [")[0] + " (line colour)")
+    elif n_s > 1:
         for s, idx in enumerate(prep["series_idx"]):
             handles.append(Line2D([], [], color=colours[s], lw=2))
             labels.append(_series_label([prep["axes"][d] for d in prep["series_dims"]], idx))

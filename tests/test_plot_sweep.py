@@ -248,3 +248,27 @@ def test_sweep_cli_with_an_invalid_point_still_draws_the_figure(tmp_path, capsys
     text = _png_text(out / "sweep.png")
     assert "points=2 not_ok=1" in text["Description"]
     assert text["Comment"] == "not ok: 0.49: invalid"
+
+
+def test_dense_two_key_grid_uses_a_colour_bar_and_a_compact_class_map(tmp_path):
+    # 14 loads x 13 speeds: the lines are the values of one numeric key -> ordered colours and a colour bar
+    loads = ",".join(str(100 * (i + 1)) for i in range(14)) + "N"
+    speeds = ",".join(str(1000 * (i + 2)) for i in range(13)) + "rpm"
+    labels = ["1 period", "3 periods", "quasi-periodic", "chaos", "undetermined"]
+    ds = _summary({"axial_load": loads, "inner_speed": speeds}, [_dyn(i % 7, labels[i % 5]) for i in range(14 * 13)],
+                  statuses=["failed" if i == 20 else "ok" for i in range(14 * 13)])
+    lay = plotting.sweep_layout(ds)
+    assert lay["x_dim"] == "axial_load" and lay["n_series"] == 13 and lay["colorbar"] and lay["map"]
+    assert lay["not_ok_points"] == ["200 N, 9000 r/min: failed"]  # point 20 in product order: load 2, speed 8
+    png = plotting.plot_sweep(ds, tmp_path / "dense.png")
+    _check_png(png)
+    assert "points=182 not_ok=1" in _png_text(png)["Description"]
+    # beyond MAX_ORDERED_SERIES lines even ordered colours are refused
+    n = plotting.MAX_ORDERED_SERIES + 1  # (the sweep layout built by hand: planning ~1000 cases is slow)
+    big = xr.Dataset({"status": (("axial_load", "inner_speed"), np.full((n + 1, n), "ok", dtype=object)),
+                      "mean_cage_slip_ratio": (("axial_load", "inner_speed"), np.zeros((n + 1, n)))},
+                     coords={"axial_load": np.arange(1.0, n + 2), "inner_speed": np.arange(1.0, n + 1)},
+                     attrs={"title": "hsbearing sweep"})
+    with pytest.raises(CaseError, match=f"{n} lines per panel over inner_speed are too many"):
+        plotting.sweep_layout(big)
+    plotting.sweep_layout(big.isel(inner_speed=slice(0, n - 1)))  # at the limit: drawn
