@@ -385,6 +385,9 @@ _SWEEP_PANELS = (
      (("sfmc", "SFMC", "-"), ("sfmo", "SFMO", "--"), ("rfmc", "RFMC", ":"))),
 )
 
+# markers of the quantities of one panel when no class is drawn (mean / max, SFMC / SFMO / RFMC)
+_ITEM_MARKERS = ("o", "s", "^")
+
 # unit as written in a label -> as printed on an axis
 _PRETTY_UNIT = {"rpm": "r/min", "degC": "\N{DEGREE SIGN}C", "deg": "\N{DEGREE SIGN}", "um": "\u00b5m",
                 "N*m": "N m", "mm^2/s": "mm\u00b2/s", "kg/m^3": "kg/m\u00b3"}
@@ -692,7 +695,8 @@ def _draw_sweep_panel(ax, prep, title, unit, items, colours, annotate_bad: bool)
                 ax.errorbar(x[fe], ys[fe], yerr=e[fe], fmt="none", ecolor=col, elinewidth=1.0, capsize=3, zorder=2)
             size = (34 if k == 0 else 20) if len(x) <= 12 and prep["layout"]["n_series"] <= 6 else (16 if k == 0 else 9)
             if cls is None:
-                ax.scatter(x[fin], ys[fin], marker="o", s=size, color=col, zorder=3)
+                # no classes: the marker tells the quantities of a panel apart (e.g. SFMC on top of RFMC)
+                ax.scatter(x[fin], ys[fin], marker=_ITEM_MARKERS[k % 3], s=size, color=col, zorder=3)
                 continue
             fam = cls[1][s]
             for f, (mk, ccol) in CLASS_STYLE.items():
@@ -749,11 +753,11 @@ def _draw_sweep_panel(ax, prep, title, unit, items, colours, annotate_bad: bool)
     if any(lab for _, lab, _, _ in items) or refs:
         from matplotlib.lines import Line2D
 
-        named = [it for it in items if it[1]]
-        ax.legend([Line2D([], [], color="0.3", ls=ls) for _, _, ls, _ in named]
-                  + [Line2D([], [], color="r", ls="--") for _ in refs],
-                  [lab + (" \u00b1 standard error" if name in prep["yerr"] else "") for name, lab, _, _ in named]
-                  + [lab for _, lab in refs],
+        named = [(k, name, lab, ls) for k, (name, lab, ls, _) in enumerate(items) if lab]
+        handles = [Line2D([], [], color="0.3", ls=ls, ms=5, marker=_ITEM_MARKERS[k % 3] if prep["cls"] is None else None)
+                   for k, _, _, ls in named]
+        texts = [lab + (" \u00b1 standard error" if name in prep["yerr"] else "") for _, name, lab, _ in named]
+        ax.legend(handles + [Line2D([], [], color="r", ls="--") for _ in refs], texts + [lab for _, lab in refs],
                   fontsize=7.5, loc="best")
 
 
