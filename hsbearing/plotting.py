@@ -25,7 +25,7 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["plot_run", "plot_sweep", "is_sweep_summary", "title_lines"]
+__all__ = ["is_sweep_summary", "plot_run", "plot_sweep", "save_figure", "sweep_layout", "title_lines"]
 
 _RPM = 60.0 / (2.0 * math.pi)
 
@@ -622,8 +622,9 @@ def _prepare_sweep(ds) -> dict:
         "not_ok_points": bad_pts,
         "classes": classes,
     }
-    return dict(layout=layout, yerr=yerr, refs=refs, error=error, axes=axes, x_dim=x_dim, series_dims=series_dims, series_idx=series_idx,
-                status=status, ok=ok, good=good, cls=cls, paper=paper, panels=panels, source=source)
+    return {"layout": layout, "yerr": yerr, "refs": refs, "error": error, "axes": axes, "x_dim": x_dim,
+            "series_dims": series_dims, "series_idx": series_idx, "status": status, "ok": ok, "good": good,
+            "cls": cls, "paper": paper, "panels": panels, "source": source}
 
 
 def _sweep_title(ds, prep) -> str:
@@ -652,14 +653,14 @@ def _sweep_title(ds, prep) -> str:
     lab = _case_labels(ds)
     if lab.get("speed") == "n = 0 r/min":  # outer ring rotating (gyro bearings): show the outer-ring speed
         lab.pop("speed")
-        try:
-            from hsbearing.case import parse_quantity
+        from hsbearing.case import CaseError, parse_quantity
 
+        try:
             n_o = parse_quantity(tomllib.loads(ds.attrs["case_toml"])["operating"]["outer_speed"], "angular_speed")
-            if n_o:
-                lab["speed"] = f"outer ring n$_o$ = {n_o * _RPM:.3g} r/min"
-        except Exception:  # no case text or no outer speed: nothing to add
-            pass
+        except (KeyError, tomllib.TOMLDecodeError, CaseError):  # no case text or no outer speed: nothing to add
+            n_o = 0.0
+        if n_o:
+            lab["speed"] = f"outer ring n$_o$ = {n_o * _RPM:.3g} r/min"
     fixed = [lab[v] for k, v in _LABEL_KEYS.items() if v in lab and k not in keys and v not in keys]
     line2 = "varied: " + ", ".join(varied) + ("; fixed: " + ", ".join(fixed) if fixed else "")
     return line1 + "\n" + line2

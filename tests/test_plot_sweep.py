@@ -13,7 +13,6 @@ import pytest
 import xarray as xr
 from PIL import Image
 
-import hsbearing
 from hsbearing import plotting, sweeps
 from hsbearing.case import CaseError
 from hsbearing.cli import main
