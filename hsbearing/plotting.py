@@ -689,7 +689,7 @@ def _draw_sweep_panel(ax, prep, title, unit, items, colours, annotate_bad: bool)
         for k, (name, lab, ls, y) in enumerate(items):
             ys = np.where(good[s], y[s], np.nan)
             fin = np.isfinite(ys)
-            ax.plot(x[fin], ys[fin], ls=ls, color=col, lw=1.1, zorder=2)  # joins the ok points only
+            ax.plot(x, ys, ls=ls, color=col, lw=1.1, zorder=2)  # NaN (not-ok or missing points) breaks the line
             if name in prep["yerr"]:
                 e = prep["yerr"][name][s]
                 fe = fin & np.isfinite(e)
