@@ -400,8 +400,16 @@ _LABEL_KEYS = {"lubricant.oil": "oil", "operating.inner_speed": "speed", "operat
 
 
 def is_sweep_summary(ds) -> bool:
-    """True for a sweep or study summary Dataset (the attrs written by :func:`hsbearing.sweeps.assemble`)."""
-    return ds.attrs.get("title") == "hsbearing sweep" or "sweep_vary" in ds.attrs
+    """True for a sweep or study summary Dataset.
+
+    The attrs written by :func:`hsbearing.sweeps.assemble` (``title = "hsbearing sweep"``, ``sweep_vary``),
+    or, for a summary whose attrs were lost, its shape: no ``time`` dimension and a text ``status``
+    variable over at least one dimension (no result Dataset of a single run has one).
+    """
+    if ds.attrs.get("title") == "hsbearing sweep" or "sweep_vary" in ds.attrs:
+        return True
+    st = ds.variables.get("status") if hasattr(ds, "variables") else None
+    return "time" not in ds.dims and st is not None and st.ndim >= 1 and st.dtype.kind in "OUS"
 
 
 def class_family(label) -> str | None:

@@ -195,6 +195,13 @@ def test_plot_run_dispatches_a_summary(tmp_path):
     assert plotting.is_sweep_summary(ds)
     png = plotting.plot_run(ds, tmp_path / "r.png")
     assert "hsbearing sweep figure" in _png_text(png)["Description"]
+    # a summary whose attrs were lost (e.g. a slice saved with plain xarray) is still recognised by its shape
+    bare = ds.copy()
+    bare.attrs = {}
+    assert plotting.is_sweep_summary(bare)
+    # ... and a single result is not (quasi-static dataset: per-ball variables, no status variable)
+    qs = xr.Dataset({"inner_contact_load": ("ball", np.ones(11))}, attrs={"status": "ok"})
+    assert not plotting.is_sweep_summary(qs)
 
 
 def test_quasistatic_sweep_cli_end_to_end(tmp_path, capsys):
