@@ -25,7 +25,7 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["is_sweep_summary", "plot_run", "plot_sweep", "save_figure", "sweep_layout", "title_lines"]
+__all__ = ["is_sweep_summary", "plot_run", "plot_sweep", "save_figure", "sweep_figure", "sweep_layout", "title_lines"]
 
 _RPM = 60.0 / (2.0 * math.pi)
 
@@ -851,12 +851,18 @@ def plot_sweep(ds, path) -> Path:
     values are not drawn.  The counts are in the title and in the PNG text chunk ``Description``.
 
     Raises :class:`hsbearing.case.CaseError` when the summary has no varied dimension or needs more
-    than :data:`MAX_SERIES` lines per panel.
+    than :data:`MAX_SERIES` (:data:`MAX_ORDERED_SERIES` for the values of one numeric key) lines per
+    panel.
     """
+    fig, meta = sweep_figure(ds)
+    return save_figure(fig, Path(path), metadata=meta)
+
+
+def sweep_figure(ds):
+    """The figure of :func:`plot_sweep`, not saved: ``(matplotlib Figure, PNG metadata dict)``."""
     from matplotlib.figure import Figure
     from matplotlib.lines import Line2D
 
-    path = Path(path)
     prep = _prepare_sweep(ds)
     lay = prep["layout"]
     if "classification_confidence" in ds and prep["cls"] is not None:
@@ -935,4 +941,4 @@ def plot_sweep(ds, path) -> Path:
             "Software": "hsbearing"}
     if lay["not_ok_points"]:
         meta["Comment"] = "not ok: " + "; ".join(lay["not_ok_points"])
-    return save_figure(fig, path, metadata=meta)
+    return fig, meta

@@ -278,3 +278,52 @@ def test_dense_two_key_grid_uses_a_colour_bar_and_a_compact_class_map(tmp_path):
     with pytest.raises(CaseError, match=f"{n} lines per panel over inner_speed are too many"):
         plotting.sweep_layout(big)
     plotting.sweep_layout(big.isel(inner_speed=slice(0, n - 1)))  # at the limit: drawn
+
+
+def _red_crosses(ax):
+    """x data of the not-ok markers drawn in a panel (red 'x' scatter collections)."""
+    from matplotlib.colors import to_rgba
+
+    red = to_rgba(plotting.NOT_OK_STYLE[1])
+    xs = []
+    for c in ax.collections:
+        fc = c.get_facecolor()
+        if len(fc) and np.allclose(fc[0], red) and len(c.get_offsets()):
+            xs.extend(np.asarray(c.get_offsets())[:, 0].tolist())
+    return sorted(xs)
+
+
+def test_the_figure_draws_the_failed_point_and_breaks_its_line():
+    summ = [_dyn(i) for i in range(4)]
+    ds = _summary({"axial_load": "500,1000,2000,3000N"}, summ, statuses=["ok", "failed", "ok", "ok"])
+    fig, meta = plotting.sweep_figure(ds)
+    panels = [ax for ax in fig.axes if ax.get_title() in plotting.sweep_layout(ds)["panels"]]
+    assert len(panels) == 5
+    for ax in panels:
+        assert _red_crosses(ax) == [1000.0]  # the failed point, at its x, in every panel
+        assert ax.get_xlim()[0] < 500 and ax.get_xlim()[1] > 3000
+    slip = next(ax for ax in panels if ax.get_title() == "mean cage slip ratio")
+    (line,) = slip.get_lines()
+    y = np.asarray(line.get_ydata(), float)
+    # the failed point's (partial) value is not drawn and the line is broken there, not bridged
+    assert np.isnan(y[1]) and y[[0, 2, 3]] == pytest.approx([1.0, 3.0, 4.0])
+    assert slip.get_ylabel() == "slip ratio [%]"
+    # the status is written next to the cross in the first panel
+    assert "failed" in [t.get_text() for t in slip.texts]
+    assert "not_ok=1" in meta["Description"]
+
+
+def test_the_class_map_cells_and_the_paper_check_marks():
+    vary = {"oil": "4109,4106", "axial_load": "500,1000N"}
+    ds = _summary(vary, [_dyn(0, "1 period"), _dyn(1, "chaos"), _dyn(2, "quasi-periodic"), _dyn(3)],
+                  statuses=["ok", "ok", "ok", "crashed"])
+    ds["paper_classification"] = (ds["status"].dims, np.array([["1 period", "quasi-periodic"],
+                                                                ["quasi-periodic", "1 period"]], dtype=object))
+    fig, meta = plotting.sweep_figure(ds)
+    cmap = next(ax for ax in fig.axes if ax.get_title().startswith("cage motion"))
+    texts = sorted(t.get_text() for t in cmap.texts)
+    assert texts == sorted(["1 period (0.80)\npaper: 1 period \u2713", "chaos (0.80)\npaper: quasi-periodic",
+                            "quasi-periodic (0.80)\npaper: quasi-periodic \u2713", "not ok: crashed\npaper: 1 period"])
+    assert "same label as the paper in 2 of 3 classified cells" in cmap.get_title()
+    assert "paper_agreement=2/3" in meta["Description"]
+    assert [t.get_text() for t in cmap.get_yticklabels()] == ["oil 4106", "oil 4109"]  # first oil on top
