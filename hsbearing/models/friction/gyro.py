@@ -1151,11 +1151,12 @@ def start_ensemble(case, n: int = 5, duration: float | None = None, **kw):
 
 
 def validation(out_dir="docs/figures", *, osc_duration: float = 20.3, study_duration: float = 10.3,
-               ensemble: int = 5, gravity_check: bool = True):
+               ensemble: int = 5, gravity_check: bool = True, jobs: int = 1):
     """Recompute the seed 000 comparison (Table 2 cells, s and A studies) and draw docs/figures/gyro_*.png.
 
-    ``python -m hsbearing.models.friction.gyro [OUT_DIR]``; prints the Markdown rows used in
-    docs/validation/gyro.md.  Takes about half an hour on one core.
+    ``python -m hsbearing.models.friction.gyro [OUT_DIR] [--jobs N]``; prints the Markdown rows used in
+    docs/validation/gyro.md.  Takes about half an hour on one core.  The s and A studies run through
+    the sweep machinery (:func:`study`) with ``jobs`` worker processes.
     """
     import csv
 
@@ -1211,7 +1212,7 @@ def validation(out_dir="docs/figures", *, osc_duration: float = 20.3, study_dura
         summary = {}
         for ax, n in zip(axs[:2], (5, 2)):
             c = override(base, **{"operating.mode": "oscillation", "operating.outer_speed": f"{n} rpm"})
-            res = study(c, key, values, duration=study_duration)
+            res = study(c, key, values, duration=study_duration, jobs=jobs)
             xs, ms, sds = [], [], []
             for v, ds in res.items():
                 lab = v if isinstance(v, str) else f"{v*1e3:.2f} mm"
@@ -1237,6 +1238,10 @@ def validation(out_dir="docs/figures", *, osc_duration: float = 20.3, study_dura
 
 
 if __name__ == "__main__":  # pragma: no cover
-    import sys
+    import argparse
 
-    validation(sys.argv[1] if len(sys.argv) > 1 else "docs/figures")
+    _ap = argparse.ArgumentParser(description="seed 000 validation tables and docs/figures/gyro_*.png")
+    _ap.add_argument("out_dir", nargs="?", default="docs/figures")
+    _ap.add_argument("-j", "--jobs", type=int, default=1, help="worker processes for the s and A studies")
+    _a = _ap.parse_args()
+    validation(_a.out_dir, jobs=_a.jobs)
