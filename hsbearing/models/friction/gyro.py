@@ -20,8 +20,10 @@ regularisation with its parameter, are listed in ``docs/validation/gyro.md``;
 the short version is in the docstrings below (search for "decision").  The one
 that matters most: the cage starts where its weight leaves it (resting on the
 balls) and the dynamics run without the weight (``gravity=0``); with the
-weight, pocket friction carries our cage along and it is never struck, which
-contradicts the paper's Figs. 8-9.
+weight (across or along the axis, settled or centred start), pocket friction
+carries our cage along and it is never struck at the reversals, which
+contradicts the paper's Figs. 8-9 (:func:`cage_moment_windows` measures it),
+and a centred start adds a free-fall impact of the cage at t = 3 ms.
 
 References
 ----------
@@ -1150,7 +1152,7 @@ def start_ensemble(case, n: int = 5, duration: float | None = None, **kw):
     return np.array([float(simulate(c, duration=T, cage_angle=f * play, **kw)["sfmc"]) for f in np.linspace(-0.5, 0.5, n)])
 
 
-def validation(out_dir="docs/figures", *, osc_duration: float = 20.3, study_duration: float = 10.3,
+def validation(out_dir="docs/figures", *, osc_duration: float = 20.3, study_duration: float = 20.3,
                ensemble: int = 5, gravity_check: bool = True, jobs: int = 1):
     """Recompute the seed 000 comparison (Table 2 cells, s and A studies) and draw docs/figures/gyro_*.png.
 
