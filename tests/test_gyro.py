@@ -290,6 +290,19 @@ def test_cage_moment_windows_mechanism_metrics():
         assert np.all((dec > lo) & (dec < hi)), dec  # decaying: t90 = 0.1 ln 10 = 0.23 s
 
 
+def test_reversal_mechanism_default_vs_cage_weight():
+    """Seed 000 Figs. 8-9: M_C is more than half of M at the onset of every reversal and dies out soon after.  The
+    default (weightless dynamics, cage touching) shows it; with the cage weight in the dynamics the cage rests on
+    the pockets, is carried by friction and is never struck (the reason the default leaves the weight out,
+    docs/validation/gyro.md).  Short windows (T = 0.25 s) to keep the runs short."""
+    T = 0.25
+    c = _case(**{"operating.mode": "oscillation", "operating.oscillation_period": f"{T} s"})
+    share, t90 = gyro.cage_moment_windows(gyro.simulate(c, duration=1.0))
+    assert share[1:].min() > 0.5 and np.median(t90[1:]) < 0.6 * T  # measured 0.82-0.89, median 0.07 s
+    share, t90 = gyro.cage_moment_windows(gyro.simulate(c, duration=1.0, gravity=gyro.GRAVITY))
+    assert share[1:].max() < 0.15 and t90[1:].min() > 0.85 * T  # measured 0.07, 0.222 s (steady M_C: 0.9 T)
+
+
 def test_gravity_direction_settles_along_it():
     """gravity_direction: the cage settles along the given direction -- along the axis it rests on the balls after
     the axial play A = k - D_w/2 (seed 000 Sec. 3.2) plus a Hertz approach of nanometres; the default is -Y."""
