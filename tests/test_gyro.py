@@ -303,6 +303,22 @@ def test_reversal_mechanism_default_vs_cage_weight():
     assert share[1:].max() < 0.15 and t90[1:].min() > 0.85 * T  # measured 0.07, 0.222 s (steady M_C: 0.9 T)
 
 
+def test_turned_cage_start_touches_with_zero_approach():
+    """start_ensemble turns the cage by fractions of its circumferential play before settling: the settled start
+    must still touch the balls (contact after 1 nm more) without stored elastic energy (regression: a turned cage
+    used to stay exactly centred because the contact test was rounding noise)."""
+    c = _case()
+    m = gyro.build_model(c)
+    e, nabla = gyro.pocket_geometry(c.bearing.ball_diameter, c.cage.pocket_diameter, c.cage.pocket_depth)
+    play = math.sqrt(nabla**2 - e**2) / (0.5 * c.bearing.pitch_diameter)
+    for f in (-0.5, -0.25, 0.25, 0.5):
+        y = m.y0(cage_angle=f * play)
+        assert y[1] < -10e-6  # dropped towards the balls (20-30 um)
+        assert m.diagnostics(0.0, y)[:, 0].max() == 0.0
+        y[1] -= 1e-9
+        assert m.diagnostics(0.0, y)[:, 0].max() > 0.0
+
+
 def test_gravity_direction_settles_along_it():
     """gravity_direction: the cage settles along the given direction -- along the axis it rests on the balls after
     the axial play A = k - D_w/2 (seed 000 Sec. 3.2) plus a Hertz approach of nanometres; the default is -Y."""

@@ -735,11 +735,23 @@ class GyroModel:
                     y[0:3] = y[0:3] + brentq(net, 0.0, hi, xtol=1e-16) * g_hat  # weight carried by the pocket contacts
                 else:
                     # no weight in the dynamics: the cage just touches (zero approach), so no elastic
-                    # energy is stored in the initial state (it would kick the cage at t = 0)
+                    # energy is stored in the initial state (it would kick the cage at t = 0).
+                    # (Contact is tested on the contact forces themselves: testing net + weight > 0, as
+                    # before 2026-11, was rounding noise for a turned cage, which then stayed centred.)
+                    p0 = self.p.copy()
+                    p0[_P_G] = 0.0
+
+                    def touching(h):
+                        yy = y.copy()
+                        yy[0:3] = y[0:3] + h * g_hat
+                        diag[:] = 0.0
+                        _kernel(0.0, yy, p0, Z, ydot, diag)
+                        return diag[:, 0].max() > 0.0
+
                     lo, up = 0.0, hi
                     for _ in range(200):
                         mid = 0.5 * (lo + up)
-                        if net(mid) + mc_g > 0.0:  # any contact force
+                        if touching(mid):
                             up = mid
                         else:
                             lo = mid
