@@ -89,6 +89,7 @@ __all__ = [
     "cage_moment_windows",
     "summary",
     "study",
+    "study_figures",
     "override",
     "plot_run",
 ]
@@ -1096,7 +1097,9 @@ def study(case, key: str, values, *, duration=None, out_dir=None, jobs: int = 1,
     values = list(values)
     if key == "pocket_clearance":
         vary_key = "cage.pocket_depth"
-        items = [f"{(case.bearing.ball_diameter / 2 + float(A)) * 1e3!r} mm" for A in values]
+        # k written as a short decimal ("0.67 mm", as on the command line and in the case file): a value
+        # 1e-16 away would start a different chaotic trajectory
+        items = [f"{round((case.bearing.ball_diameter / 2 + float(A)) * 1e3, 9)!r} mm" for A in values]
     else:
         vary_key, items = key, values
     if kw:
@@ -1174,8 +1177,6 @@ def validation(out_dir="docs/figures", *, osc_duration: float = 20.3, study_dura
     """
     import csv
 
-    from matplotlib.figure import Figure
-
     from hsbearing.case import load_case
 
     out = Path(out_dir)
@@ -1216,39 +1217,56 @@ def validation(out_dir="docs/figures", *, osc_duration: float = 20.3, study_dura
                   f"(steps {d_g.attrs['solver_steps']}); SFMC from an exactly centred cage = {float(d_0.sfmc)*u:.3f} uN m", flush=True)
     plot_run(keep[(1, 5)], out / "gyro_run_1N_5rpm_oscillation.png")
     plot_run(keep[(1, 2)], out / "gyro_run_1N_2rpm_oscillation.png")
-    # studies (oscillation, 1 N, +/-5 and +/-2 r/min), like seed Figs. 10-11
-    for key, values, label, fname in [
-        ("cage.thickness", ["0.15 mm", "0.20 mm", "0.25 mm", "0.30 mm"], "s", "gyro_thickness.png"),
-        ("pocket_clearance", [0.01e-3, 0.02e-3, 0.03e-3, 0.04e-3, 0.05e-3], "A", "gyro_clearance.png"),
-    ]:
+    study_figures(out, study_duration=study_duration, jobs=jobs)
+    return rows
+
+
+def study_figures(out_dir="docs/figures", *, study_duration: float = 20.3, jobs: int = 1,
+                  which=("thickness", "clearance")):
+    """The s and A studies of [J] Figs. 10-11 (oscillation, 1 N, +/-5 and +/-2 r/min) through :func:`study`;
+    draws ``gyro_thickness.png`` / ``gyro_clearance.png`` (M histories and SFMO +/- standard error) and
+    prints one line per point."""
+    from matplotlib.figure import Figure
+
+    from hsbearing.case import load_case
+    from hsbearing.plotting import save_figure
+
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    base = load_case("jiang2014_gyro")
+    u = 1e6
+    plans = {
+        "thickness": ("cage.thickness", ["0.15 mm", "0.20 mm", "0.25 mm", "0.30 mm"], "s", "gyro_thickness.png"),
+        "clearance": ("pocket_clearance", [0.01e-3, 0.02e-3, 0.03e-3, 0.04e-3, 0.05e-3], "A", "gyro_clearance.png"),
+    }
+    for key, values, label, fname in (plans[w] for w in which):
         fig = Figure(figsize=(9, 8), layout="constrained")
         axs = fig.subplots(3, 1)
-        summary = {}
+        curves = {}
         for ax, n in zip(axs[:2], (5, 2)):
             c = override(base, **{"operating.mode": "oscillation", "operating.outer_speed": f"{n} rpm"})
             res = study(c, key, values, duration=study_duration, jobs=jobs)
-            xs, ms, sds = [], [], []
+            xs, ms, ses = [], [], []
             for v, ds in res.items():
                 lab = v if isinstance(v, str) else f"{v*1e3:.2f} mm"
-                wm = ds.window_max_moment.values * u
+                sm = summary(ds)
                 ax.plot(ds.time.values, ds.friction_moment_total.values * u, lw=0.6, label=f"{label} = {lab}")
-                print(f"study {key} = {lab}, n = {n} r/min: SFMC {wm[0]:.2f}, SFMO {wm[1:].mean():.2f} +/- {wm[1:].std():.2f} "
-                      f"uN m, max {wm.max():.2f}", flush=True)
+                print(f"study {key} = {lab}, n = {n} r/min: SFMC {sm['sfmc']*u:.2f}, SFMO {sm['sfmo']*u:.2f} "
+                      f"+/- {sm['sfmo_stderr']*u:.2f} (standard error, {sm['reversal_windows']} windows) uN m", flush=True)
                 xs.append(float(lab.split()[0]))
-                ms.append(wm[1:].mean())
-                sds.append(wm[1:].std())
-            summary[n] = (xs, ms, sds)
+                ms.append(sm["sfmo"] * u)
+                ses.append(sm["sfmo_stderr"] * u)
+            curves[n] = (xs, ms, ses)
             ax.set_ylabel(r"M [$\mu$N m]")
             ax.set_title(f"1 N, +/-{n} r/min: total friction moment M (peak-hold)", fontsize=9)
             ax.legend(fontsize=7, ncol=5)
         axs[1].set_xlabel("time [s]")
-        for n, (xs, ms, sds) in summary.items():
-            axs[2].errorbar(xs, ms, yerr=sds, marker="o", capsize=3, label=f"+/-{n} r/min")
+        for n, (xs, ms, ses) in curves.items():
+            axs[2].errorbar(xs, ms, yerr=ses, marker="o", capsize=3, label=f"+/-{n} r/min")
         axs[2].set_xlabel(f"{label} [mm]")
-        axs[2].set_ylabel(r"SFMO [$\mu$N m]" + "\n(mean +/- sd of window maxima)")
+        axs[2].set_ylabel(r"SFMO [$\mu$N m]" + "\n(mean +/- standard error)")
         axs[2].legend(fontsize=8)
-        fig.savefig(out / fname, dpi=110)
-    return rows
+        save_figure(fig, out / fname)
 
 
 if __name__ == "__main__":  # pragma: no cover
