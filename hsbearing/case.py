@@ -220,6 +220,9 @@ SCHEMA: dict[str, dict[str, Field]] = {
         "model": _f("str", "model variant", default="default"),
         "kinematics": _f("choice", "quasi-static ball kinematics", default="outer_race_control",
                          choices=("outer_race_control", "inner_race_control", "friction")),
+        "start_positions": _f("int", "gyro model (seed 000): cage start positions of the SFMC start ensemble (extra constant-rate "
+                              "starts of one oscillation_period, cage turned over -1/2..+1/2 of its pocket play); 1 = none",
+                              default=1, positive=True),
     },
 }
 

@@ -51,6 +51,10 @@ def _print_summary(ds, out: Path | None = None) -> None:
                 print(f"{name}: {val:.6g} {unit}".rstrip())
             else:
                 print(f"{name}: {val} {unit}".rstrip())
+    if "sfmc_ensemble" in ds:  # gyro start ensemble (simulation.start_positions > 1): mean +/- sd and each start
+        from hsbearing.models.friction import gyro
+
+        print("\n".join(gyro.ensemble_lines(ds)))
     for key in ("classification", "classification_confidence"):
         if key in ds.attrs:
             print(f"{key}: {ds.attrs[key]}")

@@ -49,6 +49,7 @@ References
 from __future__ import annotations
 
 import math
+import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -87,6 +88,10 @@ __all__ = [
     "simulate",
     "starting_moments",
     "cage_moment_windows",
+    "circumferential_play_angle",
+    "start_offsets",
+    "start_ensemble",
+    "ensemble_lines",
     "summary",
     "study",
     "study_figures",
@@ -121,6 +126,14 @@ for _n, _d, _u, _l in [
     ("reversal_windows", (), "1", "number of reversal windows averaged in SFMO"),
     ("pocket_clearance", (), "m", "ball/pocket clearance A = k - D_w/2 (seed 000 Sec. 3.2)"),
     ("cage_mass", (), "kg", "cage mass used by the model (ribbon strips of thickness s, or cage.mass)"),
+    # start ensemble (simulation.start_positions > 1; gyro.start_ensemble)
+    ("start_offset", ("start_offset",), "1",
+     "initial turn of the cage about the axis as a fraction of its circumferential pocket play (-0.5..0.5; 0 = the default start)"),
+    ("sfmc_ensemble", ("start_offset",), "N m",
+     "SFMC of each start of the start ensemble: max M in a constant-rate start of one oscillation_period from rest, "
+     "cage turned by start_offset of its play (seed 000 Sec. 4)"),
+    ("sfmc_ensemble_mean", (), "N m", "mean of sfmc_ensemble over the start offsets (SFMC averaged over the initial cage position)"),
+    ("sfmc_ensemble_sd", (), "N m", "sample standard deviation (n - 1) of sfmc_ensemble over the start offsets"),
 ]:
     register(_n, _d, _u, _l)
 
@@ -918,11 +931,12 @@ def summary(ds) -> dict:
     ``sfmc``, ``rfmc`` [N m] always; oscillation runs add ``sfmo`` [N m], ``sfmo_sd`` (sample
     standard deviation of the reversal-window maxima), ``sfmo_stderr`` = sfmo_sd / sqrt(n) and
     ``reversal_windows`` (n); ``pocket_clearance`` A [m] and ``cage_mass`` [kg] from the run's
-    attributes (A is not a case key: a sweep over A varies ``cage.pocket_depth`` = D_w/2 + A).
-    No whirl / classification / contact-load fields: they belong to the rolling-element dynamics.
+    attributes (A is not a case key: a sweep over A varies ``cage.pocket_depth`` = D_w/2 + A);
+    ``sfmc_ensemble_mean`` / ``sfmc_ensemble_sd`` [N m] when the run holds a start ensemble
+    (``simulation.start_positions`` > 1).  No whirl / classification / contact-load fields: they belong to the rolling-element dynamics.
     """
     out: dict = {}
-    for name in ("sfmc", "sfmo", "rfmc"):
+    for name in ("sfmc", "sfmo", "rfmc", "sfmc_ensemble_mean", "sfmc_ensemble_sd"):
         if name in ds and ds[name].ndim == 0:
             out[name] = float(ds[name].values)
     if "window_max_moment" in ds:
@@ -958,7 +972,72 @@ def simulate(case, duration=None, progress: bool = False, *, fine_interval: floa
     cage_angle : initial cage angle about the axis relative to the balls [rad].
     **kw : passed to :func:`build_model` (creep_speed, cage_slip_speed, restitution, gravity,
         gravity_direction).
+
+    With ``[simulation] start_positions`` = N > 1 the run is followed by the start ensemble
+    (:func:`start_ensemble`): N constant-rate starts of one ``operating.oscillation_period`` with
+    the cage turned by :func:`start_offsets` (N) of its circumferential play, the same keywords
+    and ``cage_angle`` added to each turn; the Dataset then also holds ``sfmc_ensemble`` over the
+    dim ``start_offset`` and ``sfmc_ensemble_mean`` / ``sfmc_ensemble_sd`` [N m].  ``sfmc`` stays
+    the SFMC of this run's own (default) start.  A start that fails numerically raises
+    :class:`SolverError` with this run and the ensemble so far (NaN for the missing starts).
     """
+    ds = _simulate_one(case, duration, progress, fine_interval=fine_interval, wall_limit=wall_limit,
+                       settle=settle, cage_offset=cage_offset, cage_angle=cage_angle, **kw)
+    n = case.simulation.start_positions
+    if n is not None and n > 1:
+        ds = _add_start_ensemble(ds, case, n, progress=progress, fine_interval=fine_interval, wall_limit=wall_limit,
+                                 settle=settle, cage_offset=cage_offset, cage_angle=cage_angle, **kw)
+    return ds
+
+
+def _add_start_ensemble(ds, case, n: int, **kw):
+    """``ds`` with the start ensemble of ``n`` starts (``sfmc_ensemble`` ...); see :func:`simulate`."""
+    offsets = start_offsets(n)
+    vals = np.full(n, np.nan)
+    failure = None
+    t0 = time.perf_counter()
+    try:
+        for i, v in enumerate(_ensemble_sfmc(case, offsets, **kw)):
+            vals[i] = v
+    except SolverError as exc:
+        failure = exc
+    data = {
+        "sfmc_ensemble": vals,
+        "sfmc_ensemble_mean": float(np.mean(vals)),  # NaN if a start failed
+        "sfmc_ensemble_sd": float(np.std(vals, ddof=1)),
+    }
+    ens = make_dataset(data, {"start_offset": offsets})
+    out = ds.assign(ens.data_vars).assign_coords(start_offset=ens["start_offset"])
+    out.attrs["start_ensemble_play_rad"] = circumferential_play_angle(
+        case.bearing.ball_diameter, case.cage.pocket_diameter, case.cage.pocket_depth, case.bearing.pitch_diameter)
+    out.attrs["start_ensemble_duration_s"] = float(case.operating.oscillation_period)
+    out.attrs["start_ensemble_wall_time_s"] = time.perf_counter() - t0
+    if failure is not None:
+        i = int(np.argmax(np.isnan(vals)))
+        out.attrs["status"] = f"start ensemble failed at start_offset {offsets[i]:g}: {failure}"
+        raise SolverError(f"gyro start ensemble, start_offset {offsets[i]:g}: {failure}", partial=out) from None
+    return out
+
+
+def ensemble_lines(ds) -> list[str]:
+    """Lines for a printed summary of a run with a start ensemble (``hsbearing run``): SFMC mean +/- sd
+    and the value of each start [uN m]; [] when ``ds`` has none."""
+    if "sfmc_ensemble" not in ds or "start_offset" not in ds.coords:
+        return []
+    u = 1e6
+    vals = np.asarray(ds["sfmc_ensemble"].values, dtype=float)
+    offs = np.asarray(ds["start_offset"].values, dtype=float)
+    lines = [f"start ensemble: SFMC = {float(ds['sfmc_ensemble_mean']) * u:.4g} +/- {float(ds['sfmc_ensemble_sd']) * u:.4g} uN m "
+             f"(mean +/- sample sd of {vals.size} constant-rate starts, cage turned by start_offset of its play)"]
+    for f, v in zip(offs, vals):
+        lines.append(f"  start_offset {f:5g}: SFMC {v * u:.4g} uN m" + (" (the default start)" if f == 0.0 else ""))
+    return lines
+
+
+def _simulate_one(case, duration=None, progress: bool = False, *, fine_interval: float = 5e-6,
+                  wall_limit: float | None = None, settle: bool = True, cage_offset=(0.0, 0.0, 0.0),
+                  cage_angle: float = 0.0, **kw):
+    """One run of :func:`simulate`, without the start ensemble."""
     from hsbearing.solvers.cvode import integrate
 
     if isinstance(duration, str):
@@ -1152,19 +1231,54 @@ def plot_run(ds, path) -> Path:
     return save_figure(fig, path)
 
 
+def circumferential_play_angle(D, Dp, k, dm):
+    """Circumferential play of the ribbon cage about the axis [rad] ([J] Sec. 3.2 pocket geometry).
+
+    A ball in a pocket of two spherical cups (diameter D_p, depth k) can move along the orbit by
+    sqrt(nabla^2 - e^2) = sqrt(nabla^2 - (nabla - A)^2) before it touches (nabla = (D_p - D)/2,
+    e = |D_p/2 - k|, A = k - D/2; :func:`pocket_geometry`), i.e. an angle of that length over the
+    pitch radius d_m/2.  D ball diameter [m], Dp pocket diameter [m], k pocket depth [m], dm pitch
+    diameter [m].
+    """
+    e, nabla = pocket_geometry(D, Dp, k)
+    return math.sqrt(max(nabla**2 - e**2, 0.0)) / (0.5 * dm)  # [J] Sec. 3.2, play along the orbit
+
+
+def start_offsets(n: int) -> np.ndarray:
+    """The ``n`` initial cage turns of the start ensemble as fractions of the play [-]: uniform over
+    -1/2..+1/2 (``n`` = 1: [0]).  Written as (2 i - (n - 1)) / (2 (n - 1)) so that an odd ``n`` gives
+    exactly 0.0 in the middle (the default start) and n = 5 gives exactly -0.5, -0.25, 0, 0.25, 0.5."""
+    n = int(n)
+    if n < 1:
+        raise ValueError(f"start_offsets: n must be >= 1, got {n}")
+    if n == 1:
+        return np.zeros(1)
+    return np.array([(2 * i - (n - 1)) / (2 * (n - 1)) for i in range(n)], dtype=float)
+
+
+def _ensemble_sfmc(case, offsets, duration: float | None = None, *, cage_angle: float = 0.0, **kw):
+    """Yield the SFMC [N m] of a constant-rate start for each offset (fraction of the play); see start_ensemble."""
+    play = circumferential_play_angle(case.bearing.ball_diameter, case.cage.pocket_diameter, case.cage.pocket_depth,
+                                      case.bearing.pitch_diameter)
+    T = duration if duration is not None else case.operating.oscillation_period
+    # a constant-rate case is used as it is, so that offset 0 is bit for bit the plain start of that case
+    c = case if case.operating.mode == "constant" else override(case, **{"operating.mode": "constant"})
+    for f in offsets:
+        yield float(_simulate_one(c, duration=T, cage_angle=cage_angle + f * play, **kw)["sfmc"])
+
+
 def start_ensemble(case, n: int = 5, duration: float | None = None, **kw):
     """SFMC of ``n`` starts from rest with the cage turned by fractions of its circumferential play [N m].
 
     A bouncing cage is chaotic: the first impacts depend on where the cage sits in its pockets when
-    the race starts.  The offsets are -1/2 .. +1/2 of the circumferential play sqrt(nabla^2 - e^2)/(d_m/2).
-    Returns the array of SFMC values.
+    the race starts.  The offsets are :func:`start_offsets` (n), uniform over -1/2 .. +1/2 of the
+    circumferential play (:func:`circumferential_play_angle`); each start is a constant-rate run of
+    ``duration`` (None: ``operating.oscillation_period``) from the settled, touching cage of the
+    default start turned by that angle.  ``**kw`` go to :func:`simulate` (``cage_angle`` is added to
+    each turn); ``simulation.start_positions`` of ``case`` is not used here.
+    Returns the array of SFMC values, in the order of :func:`start_offsets`.
     """
-    D, Dp, k, dm = case.bearing.ball_diameter, case.cage.pocket_diameter, case.cage.pocket_depth, case.bearing.pitch_diameter
-    e, nabla = pocket_geometry(D, Dp, k)
-    play = math.sqrt(max(nabla**2 - e**2, 0.0)) / (0.5 * dm)
-    T = duration if duration is not None else case.operating.oscillation_period
-    c = override(case, **{"operating.mode": "constant"})
-    return np.array([float(simulate(c, duration=T, cage_angle=f * play, **kw)["sfmc"]) for f in np.linspace(-0.5, 0.5, n)])
+    return np.array(list(_ensemble_sfmc(case, start_offsets(n), duration, **kw)))
 
 
 def validation(out_dir="docs/figures", *, osc_duration: float = 20.3, study_duration: float = 20.3,
