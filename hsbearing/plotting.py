@@ -382,11 +382,14 @@ _SWEEP_PANELS = (
     ("cage speed", "cage speed [r/min]", _RPM, (("cage_speed", None, "-"),)),
     ("inner ring axial displacement", "displacement [\u00b5m]", 1e6, (("inner_ring_axial_displacement", None, "-"),)),
     ("friction moments (seed 000)", "moment [\u00b5N m]", 1e6,
-     (("sfmc", "SFMC", "-"), ("sfmo", "SFMO", "--"), ("rfmc", "RFMC", ":"))),
+     (("sfmc", "SFMC", "-"), ("sfmc_ensemble_mean", "SFMC, start ensemble mean", "-."), ("sfmo", "SFMO", "--"),
+      ("rfmc", "RFMC", ":"))),
 )
 
 # markers of the quantities of one panel when no class is drawn (mean / max, SFMC / SFMO / RFMC)
-_ITEM_MARKERS = ("o", "s", "^")
+_ITEM_MARKERS = ("o", "s", "^", "D")
+# error bars: quantity -> (its spread in the summary, what the legend calls it)
+_YERR = {"sfmo": ("sfmo_stderr", "standard error"), "sfmc_ensemble_mean": ("sfmc_ensemble_sd", "sd")}
 
 # unit as written in a label -> as printed on an axis
 _PRETTY_UNIT = {"rpm": "r/min", "degC": "\N{DEGREE SIGN}C", "deg": "\N{DEGREE SIGN}", "um": "\u00b5m",
@@ -576,8 +579,8 @@ def _prepare_sweep(ds) -> dict:
     spec = _SWEEP_PANELS
     if ds.attrs.get("case_system") == "gyro_ribbon_cage":  # the friction moments are the result of interest
         spec = spec[-1:] + spec[:-1]
-    yerr = {}  # error bars: SFMO +/- its standard error over the reversal windows (gyro summaries)
-    for name, err in (("sfmo", "sfmo_stderr"),):
+    yerr = {}  # error bars (gyro summaries): SFMO +/- its standard error, start-ensemble SFMC +/- its sd
+    for name, (err, _) in _YERR.items():
         if name in ds and err in ds and ds[err].dtype.kind in "fiu":
             yerr[name] = _grid_of(ds, err, order, shape)
     for title, unit, factor, items in spec:
@@ -705,7 +708,7 @@ def _draw_sweep_panel(ax, prep, title, unit, items, colours, annotate_bad: bool)
             size = (34 if k == 0 else 20) if len(x) <= 12 and prep["layout"]["n_series"] <= 6 else (16 if k == 0 else 9)
             if cls is None:
                 # no classes: the marker tells the quantities of a panel apart (e.g. SFMC on top of RFMC)
-                ax.scatter(x[fin], ys[fin], marker=_ITEM_MARKERS[k % 3], s=size, color=col, zorder=3)
+                ax.scatter(x[fin], ys[fin], marker=_ITEM_MARKERS[k % len(_ITEM_MARKERS)], s=size, color=col, zorder=3)
                 continue
             fam = cls[1][s]
             for f, (mk, ccol) in CLASS_STYLE.items():
@@ -763,9 +766,10 @@ def _draw_sweep_panel(ax, prep, title, unit, items, colours, annotate_bad: bool)
         from matplotlib.lines import Line2D
 
         named = [(k, name, lab, ls) for k, (name, lab, ls, _) in enumerate(items) if lab]
-        handles = [Line2D([], [], color="0.3", ls=ls, ms=5, marker=_ITEM_MARKERS[k % 3] if prep["cls"] is None else None)
+        handles = [Line2D([], [], color="0.3", ls=ls, ms=5,
+                          marker=_ITEM_MARKERS[k % len(_ITEM_MARKERS)] if prep["cls"] is None else None)
                    for k, _, _, ls in named]
-        texts = [lab + (" \u00b1 standard error" if name in prep["yerr"] else "") for _, name, lab, _ in named]
+        texts = [lab + (f" \u00b1 {_YERR[name][1]}" if name in prep["yerr"] else "") for _, name, lab, _ in named]
         ax.legend(handles + [Line2D([], [], color="r", ls="--") for _ in refs], texts + [lab for _, lab in refs],
                   fontsize=7.5, loc="best")
 

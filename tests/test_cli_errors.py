@@ -36,6 +36,7 @@ CASES = {
     "unknown_oil": (lambda t: _edit(t, 'oil = "4109"', 'oil = "4108"'), "lubricant.oil", "known: 4109, 4106, 4050"),
     "bad_choice": (lambda t: _edit(t, 'guidance = "outer_ring"', 'guidance = "outer"'), "cage.guidance", "allowed: outer_ring"),
     "malformed_toml": (lambda t: _edit(t, 'ball_count = 11', 'ball_count = = 11'), None, r"malformed TOML: .*line \d+"),
+    "zero_start_positions": (lambda t: _edit(t, "[simulation]", "[simulation]\nstart_positions = 0"), "simulation.start_positions", "must be positive"),
 }
 
 

@@ -187,3 +187,35 @@ def test_bad_start_positions_cli_exit_2(tmp_path, capsys):
     assert rc == 2 and not out.exists()
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "simulation.start_positions" in err[0] and "must be positive" in err[0]
+
+
+def test_sweep_figure_draws_the_ensemble_with_sd_bars(tmp_path):
+    """plot_sweep: the friction panel gets 'SFMC, start ensemble mean' with +/- sd error bars when the summary has
+    it (synthetic summary records, nothing computed), and nothing of it when it has not."""
+    from hsbearing import plotting, sweeps
+
+    def summ(with_ens):
+        out = []
+        for i in range(2):
+            s = {"sfmc": 7.3e-6 + i * 1e-6, "sfmo": 12e-6, "sfmo_stderr": 1e-6, "rfmc": 2.7e-6}
+            if with_ens:
+                s.update(sfmc_ensemble_mean=11.4e-6 + i * 1e-6, sfmc_ensemble_sd=5.3e-6)
+            out.append(s)
+        return out
+
+    plan = sweeps.plan_sweep("jiang2014_gyro", {"cage.thickness": "0.15,0.30mm"}, kind="run", duration=0.1)
+    for with_ens in (True, False):
+        recs = [{"status": "ok", "error": "", "summary": s, "wall_time": 0.1, "archive": f"p{i}.nc"}
+                for i, s in enumerate(summ(with_ens))]
+        ds = sweeps.assemble(plan, recs)
+        prep = plotting._prepare_sweep(ds)
+        (title, _, items), = prep["panels"]
+        names = [it[0] for it in items]
+        if with_ens:
+            assert names == ["sfmc", "sfmc_ensemble_mean", "sfmo", "rfmc"]
+            assert np.allclose(prep["yerr"]["sfmc_ensemble_mean"], 5.3)  # uN m, the panel's unit
+            assert ds["sfmc_ensemble_sd"].attrs["units"] == "N m"
+        else:
+            assert names == ["sfmc", "sfmo", "rfmc"] and "sfmc_ensemble_mean" not in prep["yerr"]
+        png = plotting.plot_sweep(ds, tmp_path / f"s{with_ens}.png")
+        assert png.exists() and png.stat().st_size > 10_000
