@@ -357,7 +357,8 @@ def dynamic_summary(ds: xr.Dataset) -> dict[str, Any]:
     """Scalars of a dynamic run, by :func:`hsbearing.analysis.summary` (the analysis module's).
 
     A gyro ribbon-cage run (``attrs["model"] == "gyro_ribbon_cage"``) is summarised by
-    :func:`hsbearing.models.friction.gyro.summary` instead: SFMC/SFMO/RFMC and their statistics, none
+    :func:`hsbearing.models.friction.gyro.summary` instead: SFMC/SFMO/RFMC and their statistics (with the
+    start-ensemble SFMC mean and sd when ``simulation.start_positions`` > 1), none
     of the whirl / classification / contact-load fields, which do not apply to that model.
     """
     if ds.attrs.get("model") == "gyro_ribbon_cage":
@@ -1017,7 +1018,8 @@ def print_table(ds: xr.Dataset, file=None) -> None:
     """One line per point: varied values, status, a few summary values, error."""
     file = file or sys.stdout
     keys = [v for v in ("mean_cage_slip_ratio", "whirl_amplitude", "classification", "mean_inner_contact_load",
-                        "mean_outer_contact_load", "cage_speed", "sfmc", "sfmo", "sfmo_stderr", "rfmc") if v in ds]
+                        "mean_outer_contact_load", "cage_speed", "sfmc", "sfmc_ensemble_mean", "sfmc_ensemble_sd",
+                        "sfmo", "sfmo_stderr", "rfmc") if v in ds]
     dims = ds["status"].dims
     labels = [c for c in ds.coords if str(c).endswith("_label")]
     for idx in np.ndindex(*ds["status"].shape):
