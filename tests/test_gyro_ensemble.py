@@ -209,7 +209,7 @@ def test_sweep_figure_draws_the_ensemble_with_sd_bars(tmp_path):
                 for i, s in enumerate(summ(with_ens))]
         ds = sweeps.assemble(plan, recs)
         prep = plotting._prepare_sweep(ds)
-        (title, _, items), = prep["panels"]
+        (_title, _, items), = prep["panels"]
         names = [it[0] for it in items]
         if with_ens:
             assert names == ["sfmc", "sfmc_ensemble_mean", "sfmo", "rfmc"]

@@ -130,8 +130,8 @@ for _n, _d, _u, _l in [
     ("start_offset", ("start_offset",), "1",
      "initial turn of the cage about the axis as a fraction of its circumferential pocket play (-0.5..0.5; 0 = the default start)"),
     ("sfmc_ensemble", ("start_offset",), "N m",
-     "SFMC of each start of the start ensemble: max M in a constant-rate start of one oscillation_period from rest, "
-     "cage turned by start_offset of its play (seed 000 Sec. 4)"),
+     ("SFMC of each start of the start ensemble: max M in a constant-rate start of one oscillation_period from rest, "
+      "cage turned by start_offset of its play (seed 000 Sec. 4)")),
     ("sfmc_ensemble_mean", (), "N m", "mean of sfmc_ensemble over the start offsets (SFMC averaged over the initial cage position)"),
     ("sfmc_ensemble_sd", (), "N m", "sample standard deviation (n - 1) of sfmc_ensemble over the start offsets"),
 ]:
@@ -1027,8 +1027,8 @@ def ensemble_lines(ds) -> list[str]:
     u = 1e6
     vals = np.asarray(ds["sfmc_ensemble"].values, dtype=float)
     offs = np.asarray(ds["start_offset"].values, dtype=float)
-    lines = [f"start ensemble: SFMC = {float(ds['sfmc_ensemble_mean']) * u:.4g} +/- {float(ds['sfmc_ensemble_sd']) * u:.4g} uN m "
-             f"(mean +/- sample sd of {vals.size} constant-rate starts, cage turned by start_offset of its play)"]
+    lines = [(f"start ensemble: SFMC = {float(ds['sfmc_ensemble_mean']) * u:.4g} +/- {float(ds['sfmc_ensemble_sd']) * u:.4g} "
+              f"uN m (mean +/- sample sd of {vals.size} constant-rate starts, cage turned by start_offset of its play)")]
     for f, v in zip(offs, vals):
         lines.append(f"  start_offset {f:5g}: SFMC {v * u:.4g} uN m" + (" (the default start)" if f == 0.0 else ""))
     return lines
