@@ -46,6 +46,13 @@ def test_default_has_no_ensemble(plain):
     assert gyro.ensemble_lines(plain) == []
 
 
+def test_explicit_one_is_the_default_bit_for_bit(plain):
+    ds = gyro.simulate(_case(**{"simulation.start_positions": "1"}), duration=T)
+    assert float(ds["sfmc"]) == float(plain["sfmc"])
+    assert np.array_equal(ds["friction_moment_total"].values, plain["friction_moment_total"].values)
+    assert set(ds.data_vars) == set(plain.data_vars)
+
+
 def test_start_offsets():
     assert gyro.start_offsets(1).tolist() == [0.0]
     assert gyro.start_offsets(3).tolist() == [-0.5, 0.0, 0.5]
