@@ -451,9 +451,9 @@ def global_rows(y, P, csum, ydot, gaux):
 
 
 @njit(cache=True)
-def rhs_kernel(y, P, qu, qw, ydot, contrib, aux, want_aux, csum, gaux):
-    """Full right-hand side: ``ydot = f(y)`` (time does not appear explicitly)."""
-    ball_loop(y, P, qu, qw, ydot, contrib, aux, want_aux)
+def summed_global_rows(y, P, contrib, csum, ydot, gaux):
+    """Sum the balls' contributions to the cage and ring loads over the balls (``csum``, one entry per
+    ``C_*`` column of ``contrib``) and evaluate the cage and ring rows of ``ydot`` (:func:`global_rows`)."""
     Z = int(P[P_Z])
     for k in range(N_CONTRIB):
         acc = 0.0
@@ -461,6 +461,13 @@ def rhs_kernel(y, P, qu, qw, ydot, contrib, aux, want_aux, csum, gaux):
             acc += contrib[j, k]
         csum[k] = acc
     global_rows(y, P, csum, ydot, gaux)
+
+
+@njit(cache=True)
+def rhs_kernel(y, P, qu, qw, ydot, contrib, aux, want_aux, csum, gaux):
+    """Full right-hand side: ``ydot = f(y)`` (time does not appear explicitly)."""
+    ball_loop(y, P, qu, qw, ydot, contrib, aux, want_aux)
+    summed_global_rows(y, P, contrib, csum, ydot, gaux)
 
 
 @njit(cache=True)
@@ -497,12 +504,7 @@ def jac_kernel(y, P, qu, qw, J, hscale, work):
     for i in range(N):
         h[i] = sq * max(abs(y[i]), hscale[i])
     ball_loop(y, P, qu, qw, f0, c0, aux, False)
-    for k in range(N_CONTRIB):
-        acc = 0.0
-        for j in range(Z):
-            acc += c0[j, k]
-        csum[k] = acc
-    global_rows(y, P, csum, f0, gaux)
+    summed_global_rows(y, P, c0, csum, f0, gaux)
     cg = nb
     rg = nb + 12
     inv_c = (1.0 / P[P_MC], 1.0 / P[P_MC], 1.0 / P[P_MC], 1.0 / P[P_IPC], 1.0 / P[P_IDC], 1.0 / P[P_IDC])
@@ -543,11 +545,6 @@ def jac_kernel(y, P, qu, qw, J, hscale, work):
         yp[col] += h[col]
         hj = yp[col] - y[col]
         ball_loop(yp, P, qu, qw, f1, c1, aux, False)
-        for k in range(N_CONTRIB):
-            acc = 0.0
-            for j in range(Z):
-                acc += c1[j, k]
-            csum[k] = acc
-        global_rows(yp, P, csum, f1, gaux)
+        summed_global_rows(yp, P, c1, csum, f1, gaux)
         for i in range(N):
             J[i, col] = (f1[i] - f0[i]) / hj
