@@ -498,7 +498,7 @@ class _SweepAxis:
             self.x = si * f + off
         self.unit = unit
         if parsed and all(p is not None for p in parsed):  # as written, with the unit spelled for print
-            self.labels = [f"{p[2]} {_PRETTY_UNIT.get(p[1], p[1])}".strip() for p in parsed]
+            self.labels = [_pretty_label(g) for g in given]
         else:
             self.labels = given or [_fmt_num(v) + (f" {unit}" if unit else "") for v in self.x]
         self.title = f"{key} [{unit}]" if unit else key
@@ -879,7 +879,8 @@ def sweep_figure(ds):
     n_s = lay["n_series"]
     map_h = ((0.55 if n_s <= 12 else 0.22) * n_s + 1.3) if lay["map"] else 0.0
     fig = Figure(figsize=(4.6 * ncols if ncols > 1 else 7.0, 3.2 * nrows + map_h + 1.5), layout="constrained")
-    fig.suptitle(_sweep_title(ds, prep), fontsize=11)
+    fig_title = _sweep_title(ds, prep)
+    fig.suptitle(fig_title, fontsize=11)
     if lay["map"]:
         top, bottom = fig.subfigures(2, 1, height_ratios=[map_h, 3.2 * nrows + 0.6])
         _draw_class_map(top.subplots(1, 1), prep)
@@ -936,7 +937,7 @@ def sweep_figure(ds):
     if handles:
         ncol = len(handles) if len(handles) <= 7 else math.ceil(len(handles) / 2)
         fig.legend(handles, labels, loc="outside lower center", ncol=ncol, fontsize=8, frameon=False)
-    meta = {"Title": _sweep_title(ds, prep).replace("\n", "; "),
+    meta = {"Title": fig_title.replace("\n", "; "),
             "Description": (f"hsbearing sweep figure: points={lay['points']} not_ok={lay['not_ok']} "
                             f"no_summary={lay['no_summary']} x={lay['x_dim']} series={'+'.join(lay['series_dims'])} "
                             f"panels={len(panels)} map={int(lay['map'])}"
