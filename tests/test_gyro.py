@@ -290,17 +290,53 @@ def test_cage_moment_windows_mechanism_metrics():
         assert np.all((dec > lo) & (dec < hi)), dec  # decaying: t90 = 0.1 ln 10 = 0.23 s
 
 
+def _play_angle(c):
+    return gyro.circumferential_play_angle(c.bearing.ball_diameter, c.cage.pocket_diameter, c.cage.pocket_depth,
+                                           c.bearing.pitch_diameter)
+
+
 def test_reversal_mechanism_default_vs_cage_weight():
-    """Seed 000 Figs. 8-9: M_C is more than half of M at the onset of every reversal and dies out soon after.  The
-    default (weightless dynamics, cage touching) shows it; with the cage weight in the dynamics the cage rests on
-    the pockets, is carried by friction and is never struck (the reason the default leaves the weight out,
-    docs/validation/gyro.md).  Short windows (T = 0.25 s) to keep the runs short."""
+    """Seed 000 Figs. 8-9: M_C is more than half of M at the onset of every reversal.  The default (weightless
+    dynamics, cage touching) shows it; with the cage weight in the dynamics the cage rests on the pockets, is
+    carried by friction and is never struck (the reason the default leaves the weight out, docs/validation/gyro.md).
+
+    The bouncing cage is chaotic, so the default is asserted over an ENSEMBLE: 5 starts with the cage turned over
+    its circumferential play (gyro.start_offsets(5)) x 3 reversal windows of T = 0.25 s = 15 windows.  Measured
+    with numpy 2.4.6 / scipy 1.17.1 / numba 0.68.1 (requirements.lock) and numpy 1.26.4 / scipy 1.13.1 /
+    numba 0.60.0 (docs/testing.md): share median 0.833, minimum 0.742, 15/15 windows above 0.5 -- identical on
+    both sets.  Thresholds: median > 0.6, at least 12 of 15 windows > 0.5.
+    The weighted cage is not chaotic (it rests on the pockets: 3 starts x 3 windows gave share 0.067-0.070, t90
+    0.221-0.223 s), so one start suffices; steady M_C gives t90 = 0.9 T = 0.225 s.
+    The decay of M_C within ~1 s after a reversal needs the paper's 2 s windows: slow tier,
+    test_reversal_decay_2s_windows_ensemble (in 0.25 s windows a later impact and a steady M_C look alike)."""
     T = 0.25
     c = _case(**{"operating.mode": "oscillation", "operating.oscillation_period": f"{T} s"})
-    share, t90 = gyro.cage_moment_windows(gyro.simulate(c, duration=1.0))
-    assert share[1:].min() > 0.5 and np.median(t90[1:]) < 0.6 * T  # measured 0.82-0.89, median 0.07 s
+    play = _play_angle(c)
+    share = np.concatenate([gyro.cage_moment_windows(gyro.simulate(c, duration=1.0, cage_angle=f * play))[0][1:]
+                            for f in gyro.start_offsets(5)])
+    assert share.size == 15
+    assert np.median(share) > 0.6, share  # measured 0.833 (both dependency sets)
+    assert (share > 0.5).sum() >= 12, share  # measured 15 of 15
     share, t90 = gyro.cage_moment_windows(gyro.simulate(c, duration=1.0, gravity=gyro.GRAVITY))
-    assert share[1:].max() < 0.15 and t90[1:].min() > 0.85 * T  # measured 0.07, 0.222 s (steady M_C: 0.9 T)
+    assert share[1:].max() < 0.15 and t90[1:].min() > 0.85 * T  # measured 0.068, 0.222 s (steady M_C: 0.9 T)
+
+
+@pytest.mark.slow
+def test_reversal_decay_2s_windows_ensemble():
+    """Seed 000 Figs. 8-9 / Sec. 4: after a reversal M_C "rapidly reduces after about 1 s" (2 s windows).  Ensemble of
+    3 starts (cage turned over its play) x 2 reversal windows of T = 2 s: the median time t90 by which 90 % of the
+    window's driving M_C has accumulated is below 0.7 T for the default (impacts that die out), while the weighted
+    cage, carried by friction, gives a steady M_C (t90 -> 0.9 T).  Measured values: docs/testing.md."""
+    T = 2.0
+    c = _case(**{"operating.mode": "oscillation"})
+    assert c.operating.oscillation_period == T
+    play = _play_angle(c)
+    t90 = np.concatenate([gyro.cage_moment_windows(gyro.simulate(c, duration=6.1, cage_angle=f * play))[1][1:]
+                          for f in gyro.start_offsets(3)])
+    assert t90.size == 6
+    assert np.median(t90) < 0.7 * T, t90
+    share, t90g = gyro.cage_moment_windows(gyro.simulate(c, duration=6.1, gravity=gyro.GRAVITY))
+    assert share[1:].max() < 0.15 and t90g[1:].min() > 0.8 * T, (share, t90g)
 
 
 def test_turned_cage_start_touches_with_zero_approach():
