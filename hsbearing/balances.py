@@ -161,6 +161,22 @@ def external_torque_x(model, y) -> dict:
     }
 
 
+def _load_moment_power_correction(model, y) -> float:
+    """Power of the external ring moment M = (0, M_y, M_z) not contained in the rate of its potential -M.beta [W]:
+    M . (omega_i e + J beta') - M . beta'."""
+    from hsbearing.models.ring import tilt_rotation
+
+    P, L = model.P, model.layout
+    u = L.unpack(np.ascontiguousarray(y, dtype=float))
+    R, J = tilt_rotation(float(u["tilt_y_i"]), float(u["tilt_z_i"]))
+    by, bz = float(u["tiltdot_y_i"]), float(u["tiltdot_z_i"])
+    wi = P[K.P_WI]
+    My, Mz = P[K.P_MY], P[K.P_MZ]
+    Oy = wi * R[3] + J[4] * by + J[5] * bz
+    Oz = wi * R[6] + J[7] * by + J[8] * bz
+    return float(My * (Oy - by) + Mz * (Oz - bz))
+
+
 def balance_terms(model, y) -> dict:
     """Power and angular-momentum balance terms at state y (all floats, SI).
 
@@ -173,7 +189,11 @@ def balance_terms(model, y) -> dict:
     out["dE_dt"] = energy_rate(model, y)
     # a turning outer ring is held at its speed by a drive too: it supplies -(torque on the outer ring) omega_o
     out["outer_drive_power"] = -out["outer_ring_torque"] * float(model.P[K.P_WO])
-    out["power_residual"] = out["drive_power"] + out["outer_drive_power"] - out["power_loss"] - out["dE_dt"]
+    # external moment on the ring: the mechanical energy carries its potential -M.beta (small tilts); the
+    # moment works at the ring's angular velocity omega_i e + J beta' (with the spin too, the drive takes it)
+    out["load_moment_power"] = _load_moment_power_correction(model, y)
+    out["power_residual"] = (out["drive_power"] + out["outer_drive_power"] + out["load_moment_power"]
+                             - out["power_loss"] - out["dE_dt"])
     tq = external_torque_x(model, y)
     out["torques"] = tq
     out["dL_dt"] = angular_momentum_rate_x(model, y)
