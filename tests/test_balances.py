@@ -162,11 +162,11 @@ def test_dissipation_off_conserves_energy_and_angular_momentum(kick):
     tilt = np.hypot(u["tilt_y_c"], u["tilt_z_c"]).max()
     if kick:
         assert exch > 1e-6  # N m s: the pockets did exchange momentum (~3 % of the balls' orbital share)
-        # the pocket impacts tilt the cage (measured ~1e-4 rad); I_p phi'' = e.M then differs from the X
-        # torque by (e - e_x).M, second order: measured err/exch 2.4e-4 (1e-9 without the kick)
+        # the pocket impacts tilt the cage (measured up to 1.7e-3 rad); I_p phi'' = e.M then differs from
+        # the X torque by (e - e_x).M (Euler's small-tilt equations): measured err/exch 2.4e-4
         assert err < 1e-3 * exch, (err, exch, tilt)
-    else:
-        assert err < 1e-5 * max(exch, 1e-9), (err, exch, np.ptp(H), tilt)
+    else:  # cage tilt 1.4e-7 rad: measured err 4.6e-12 N m s = 5e-6 of the exchanged 9e-7 N m s
+        assert err < 1e-4 * max(exch, 1e-9), (err, exch, np.ptp(H), tilt)
 
 
 @pytest.mark.parametrize("regime", ["default", "reversed"])
@@ -190,3 +190,18 @@ def test_drive_work_equals_dissipation_plus_energy_change(regime):
     J = _impulse(m, res.y, t)
     Jd = trap(ds.drive_torque.values)
     assert abs((H[-1] - H[0]) - J[-1]) < 0.01 * abs(Jd), (H[-1] - H[0], J[-1], Jd)
+
+
+def test_run_dataset_and_summary_carry_drive_torque_and_power_by_source():
+    """The contract names are in the run Dataset with units, and the ``hsbearing run`` summary prints them."""
+    case = h.load_case("zhang2016")
+    ds = dy.simulate(case, duration=1e-3, annotate=False)
+    assert ds.drive_torque.attrs["units"] == "N*m" and ds.power_loss.attrs["units"] == "W"
+    total = sum(ds[f"power_loss_{s}"] for s in bl.SOURCES)
+    assert np.allclose(total.values, ds.power_loss.values)
+    for s, (_d, cols, _g) in bl.SOURCES.items():
+        if cols:
+            assert ds[f"power_loss_{s}_per_ball"].dims == ("time", "ball")
+            assert np.allclose(ds[f"power_loss_{s}_per_ball"].sum("ball"), ds[f"power_loss_{s}"], rtol=1e-5)
+    text = "\n".join(bl.power_summary_lines(ds))
+    assert "drive_torque" in text and all(f"{s}:" in text for s in bl.SOURCES)
