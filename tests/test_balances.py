@@ -173,8 +173,8 @@ def test_dissipation_off_conserves_energy_and_angular_momentum(kick):
 def test_drive_work_equals_dissipation_plus_energy_change(regime):
     """(d): with every dissipation on, over 3 ms of the start-up transient (strong energy exchange: the
     balls' attitude settles, pocket impacts), W_drive = sum over sources of the dissipated energy +
-    Delta E within 1 % of W_drive (trapezoidal rule on 10 us outputs); and the angular momentum
-    balance over the same run."""
+    Delta E within 1e-4 of W_drive (the issue asks 1 %; trapezoidal rule on 10 us outputs); and the
+    angular momentum balance over the same run."""
     case = h.load_case("zhang2016", **REGIMES[regime])
     m = dy.build_model(case)
     t = np.linspace(0.0, 3e-3, 301)
@@ -185,11 +185,13 @@ def test_drive_work_equals_dissipation_plus_energy_change(regime):
     D = {s: trap(ds[f"power_loss_{s}"].values) for s in bl.SOURCES}
     E = dy.mechanical_energy(m, res.y)
     assert W > 0.0
-    assert abs(W - sum(D.values()) - (E[-1] - E[0])) < 0.01 * W, (W, D, E[-1] - E[0])
+    # the issue asks 1 %; measured 3e-6 (default) and 2.6e-6 (reversed) of W = 0.225 J; the old ring
+    # reactions were off by ~4 W of 10-180 W (docs/power_loss.md), so 1e-4 keeps a wide margin both ways
+    assert abs(W - sum(D.values()) - (E[-1] - E[0])) < 1e-4 * W, (W, D, E[-1] - E[0])
     H = bl.angular_momentum_x(m, res.y)
     J = _impulse(m, res.y, t)
     Jd = trap(ds.drive_torque.values)
-    assert abs((H[-1] - H[0]) - J[-1]) < 0.01 * abs(Jd), (H[-1] - H[0], J[-1], Jd)
+    assert abs((H[-1] - H[0]) - J[-1]) < 1e-4 * abs(Jd), (H[-1] - H[0], J[-1], Jd)  # measured 8e-6
 
 
 def test_run_dataset_and_summary_carry_drive_torque_and_power_by_source():
