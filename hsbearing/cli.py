@@ -55,6 +55,10 @@ def _print_summary(ds, out: Path | None = None) -> None:
         from hsbearing.models.friction import gyro
 
         print("\n".join(gyro.ensemble_lines(ds)))
+    if "drive_torque" in ds:  # dynamic run: drive torque and power loss by source (hsbearing.balances)
+        from hsbearing.balances import power_summary_lines
+
+        print("\n".join(power_summary_lines(ds)))
     for key in ("classification", "classification_confidence"):
         if key in ds.attrs:
             print(f"{key}: {ds.attrs[key]}")

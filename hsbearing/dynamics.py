@@ -69,7 +69,7 @@ for _n, _d, _u, _l in [
     ("cage_land_force_y", ("time",), "N", "guide-land film force on the cage along Y"),
     ("cage_land_force_z", ("time",), "N", "guide-land film force on the cage along Z"),
     ("cage_land_moment", ("time",), "N*m", "guide-land friction moment on the cage M_cx"),
-    ("inner_ring_friction_torque", ("time",), "N*m", "moment about X of the ball contact forces on the inner ring (drive torque needed)"),
+    ("inner_ring_friction_torque", ("time",), "N*m", "DEPRECATED, use drive_torque: moment about X of the ball contact actions on the inner ring (= -drive_torque for an untilted ring without external moment)"),
 ]:
     results.register(_n, _d, _u, _l)
 
@@ -309,20 +309,11 @@ def mechanical_energy(model: DynamicModel, y) -> np.ndarray:
     E -= P[K.P_MY] * u["tilt_y_i"] + P[K.P_MZ] * u["tilt_z_i"]
     gr = P[K.P_GRAV]  # potential of gravity along -Y
     E += gr * (mb * (rb * np.cos(th)).sum(-1) + P[K.P_MC] * u["y_c"] + P[K.P_MI] * u["y_i"])
-    # elastic energies 2/5 K delta^2.5 from the kernel's geometry
+    # elastic energies 2/5 K delta^2.5 of the race and pocket contacts and of the cage rubbing the land,
+    # from the kernel's own approaches (aux U_el, gaux U_land: valid with damping on as well)
     for k in range(y.shape[0]):
-        aux, _ = model.outputs(y[k])
-        Qi, Qo = aux[:, 0], aux[:, 1]
-        di = (Qi / P[K.P_KI]) ** (2.0 / 3.0)
-        do = (Qo / P[K.P_KO]) ** (2.0 / 3.0)
-        E[k] += (0.4 * Qi * di).sum() + (0.4 * Qo * do).sum()
-        Qc = aux[:, 12]
-        dc = (Qc / P[K.P_KC]) ** (2.0 / 3.0)
-        E[k] += (0.4 * Qc * dc).sum()
-    # elastic rub of the cage on the guide land: 2/5 K_land (e - c)^2.5
-    e = np.hypot(u["y_c"], u["z_c"])
-    pen = np.maximum(e - P[K.P_CLAND], 0.0)
-    E += 0.4 * P[K.P_KLAND] * pen**2.5
+        aux, gaux = model.outputs(y[k])
+        E[k] += aux[:, K.AUX_INDEX["U_el"]].sum() + gaux[K.GAUX_INDEX["U_land"]]
     return E
 
 
@@ -422,6 +413,9 @@ def to_dataset(model: DynamicModel, t, Y, stats, status="ok", annotate: bool = T
         "cage_land_force_y": gaux[:, G["F_cy"]], "cage_land_force_z": gaux[:, G["F_cz"]],
         "cage_land_moment": gaux[:, G["M_cx"]], "inner_ring_friction_torque": gaux[:, G["ring_torque"]],
     }
+    from hsbearing import balances  # power loss by source, drive torque (registered there)
+
+    data.update(balances.power_variables(aux, gaux))
     # per-ball derived quantities (forces, speeds, angles, ratios) are stored in single precision
     # (7 significant digits) to halve the archive; states that are positions stay double
     keep64 = {"ball_orbit_angle", "ball_center_axial", "ball_center_radial"}

@@ -37,7 +37,7 @@ def _invalidate_stale_cache() -> None:
     numba recompiles (~10 s once).
     """
     here = Path(__file__).resolve().parent
-    deps = [here / f for f in ("ball.py", "cage.py", "ring.py", "drag.py", "kernel.py")]
+    deps = [here / f for f in ("ball.py", "cage.py", "ring.py", "drag.py", "power.py", "kernel.py")]
     deps.append(here / "traction" / "zhang2016.py")
     h = hashlib.sha1()
     for f in deps:
@@ -67,6 +67,7 @@ from hsbearing.models.ball import ball_equations_of_motion, ehl_rolling_force, g
 from hsbearing.models.cage import (cage_equations_of_motion, cage_generalised_moments, cage_orientation, guide_land_forces, guide_land_torque,
                                    pocket_friction_factor, pocket_normal_force, smooth_eccentricity)
 from hsbearing.models.drag import ball_drag_force
+from hsbearing.models.power import couple_power, elastic_energy_hertz, normal_damping_power, sliding_power
 from hsbearing.models.ring import (inner_groove_centre, ring_equations_of_motion, tilt_generalised_moments,
                                    tilt_rotation)
 from hsbearing.models.traction.zhang2016 import coefficients_nb, mu_nb
@@ -90,12 +91,20 @@ C_RFX, C_RFY, C_RFZ, C_RMY, C_RMZ, C_RMX, C_CFX, C_CFY, C_CFZ, C_CMX, C_CMY, C_C
 N_CONTRIB = 12
 
 # per-ball auxiliary outputs (written only when want_aux)
+# P_*: dissipated power by source [W] (models.power; docs/power_loss.md); U_el: elastic energy stored in the
+# ball's race and pocket contacts [J]; tau_o: moment about X (through the origin) of the outer-race actions on
+# the ball [N m] (the outer ring, i.e. the ground, carries -tau_o)
 _aux = """Q_i Q_o alpha_i alpha_o T_roll_i T_trans_i T_roll_o T_trans_o S_i S_o U_i U_o Q_c P_S F_R_i F_R_o F_D
-spin_roll_i spin_roll_o""".split()
+spin_roll_i spin_roll_o P_trac_i P_trac_o P_ehl_i P_ehl_o P_damp_i P_damp_o P_pocket_film P_pocket_boundary
+P_drag U_el tau_o""".split()
 AUX_INDEX = {n: i for i, n in enumerate(_aux)}
 N_AUX = len(_aux)
 # global auxiliary outputs
-_gaux = "F_cy F_cz M_cx ring_torque".split()
+# drive_torque: moment about the inner ring's own axis that the shaft supplies to hold the prescribed spin
+# [N m] (positive when it drives); P_drive: its power [W]; P_guide_land: dissipation of the land film and rub
+# [W]; U_land: elastic energy of the cage rubbing the land [J]; land_torque_x: moment about X (through the
+# origin) of the land actions on the cage [N m]
+_gaux = "F_cy F_cz M_cx ring_torque drive_torque P_drive P_guide_land U_land land_torque_x".split()
 GAUX_INDEX = {n: i for i, n in enumerate(_gaux)}
 N_GAUX = len(_gaux)
 
@@ -127,8 +136,14 @@ def _race_contact(P, qu, qw, Q, nx, nr, nt, x, r, vx, vr, thd, wx, wy, wz,
     (rvx, rvr, rvt): race translational velocity; (ox, orr, ot): race centre
     position; (Wx, Wr, Wt): race angular velocity -- all in the ball frame.
     Returns the force on the ball (fx, fr, ft), the moment about the ball
-    centre (mx, mr, mt), traction components (rolling, transverse), centre
-    slide-roll ratio, rolling speed U, F_R and the spin-to-roll ratio.
+    centre (mx, mr, mt) -- the traction distribution's spin couple and the
+    EHL rolling-resistance couple included --, traction components (rolling,
+    transverse), centre slide-roll ratio, rolling speed U, F_R, the
+    spin-to-roll ratio, and the dissipated powers [W] of the traction (sum
+    over the nodes of force x local slip, :func:`models.power.sliding_power`)
+    and of the EHL couple (couple x relative angular velocity,
+    :func:`models.power.couple_power`).  The race carries the exact opposite
+    force system (:func:`reaction_moment`).
     """
     D2 = 0.5 * P[P_D]
     fx = fr = ft = 0.0
@@ -138,8 +153,9 @@ def _race_contact(P, qu, qw, Q, nx, nr, nt, x, r, vx, vr, thd, wx, wy, wz,
     U = 0.0
     FR = 0.0
     spin_roll = 0.0
+    PT = PE = 0.0
     if Q <= 0.0:
-        return fx, fr, ft, mx, mr, mt, T1, T2, S0, U, FR, spin_roll
+        return fx, fr, ft, mx, mr, mt, T1, T2, S0, U, FR, spin_roll, PT, PE
     # tangent basis: t2 = n x e_t / |.| (transverse, in the axial-radial plane), t1 = t2 x n (rolling, ~ e_t)
     hn = math.sqrt(nx * nx + nr * nr)
     t2x, t2r = nr / hn, -nx / hn
@@ -191,6 +207,7 @@ def _race_contact(P, qu, qw, Q, nx, nr, nt, x, r, vx, vr, thd, wx, wy, wz,
             mt += ct
             T1 += f1
             T2 += f2
+            PT += sliding_power(Fx_, Fr_, Ft_, dvx, dvr, dvt)
             if k == qu.size // 2:
                 S0 = s1 / U
     if P[P_EHL] > 0.0:
@@ -202,7 +219,22 @@ def _race_contact(P, qu, qw, Q, nx, nr, nt, x, r, vx, vr, thd, wx, wy, wz,
         mx += cx
         mr += cr
         mt += ct
-    return fx, fr, ft, mx, mr, mt, T1, T2, S0, U, FR, spin_roll
+        # the race carries the opposite couple: dissipation = couple x relative angular velocity
+        PE = couple_power(cx, cr, ct, wx - Wx, wy - Wr, wz - Wt)
+    return fx, fr, ft, mx, mr, mt, T1, T2, S0, U, FR, spin_roll, PT, PE
+
+
+@njit(cache=True, inline="always")
+def reaction_moment(ax, ay, az, fx, fy, fz, mx, my, mz):
+    """Moment about a body's reference point O of the reaction to a force system on the ball [N m].
+
+    The contact puts on the ball the force F (fx, fy, fz) [N] and the moment M (mx, my, mz) [N m]
+    about the ball centre B (the traction distribution over the ellipse with its spin couple, the
+    EHL rolling couple); the other body carries -F and -M (Newton's third law for every node of the
+    distribution), whose moment about O is -(B - O) x F - M, with a = B - O (ax, ay, az) [m].
+    """
+    cx, cy, cz = _cross(ax, ay, az, fx, fy, fz)
+    return -cx - mx, -cy - my, -cz - mz
 
 
 @njit(cache=True)
@@ -248,7 +280,7 @@ def ball_loop(y, P, qu, qw, ydot, contrib, aux, want_aux):
         # ring angular velocity: spin about its own (tilted) axis R e_x plus the tilting rate
         Wsx, Wsy, Wsz = wi * Rm[0] + wtx, wi * Rm[3] + wty, wi * Rm[6] + wtz
         Wx, Wr, Wt = Wsx, Wsy * c + Wsz * s, -Wsy * s + Wsz * c
-        (tfx, tfr, tft, tmx, tmr, tmt, Ti1, Ti2, Si, Ui, FRi, sri) = _race_contact(
+        (tfx, tfr, tft, tmx, tmr, tmt, Ti1, Ti2, Si, Ui, FRi, sri, PTi, PEi) = _race_contact(
             P, qu, qw, Qi, nxi, nri, nti, x, r, vx, vr, thd, wx, wy, wz,
             rvx, rvr, rvt, ox, orr, ot, Wx, Wr, Wt, P[P_RXI], P[P_KEI], P[P_ACI])
         fbx = Qi * nxi + tfx  # force of the inner race on the ball (ball frame)
@@ -260,11 +292,11 @@ def ball_loop(y, P, qu, qw, ydot, contrib, aux, want_aux):
         Mx += tmx
         Mr += tmr
         Mt += tmt
-        # reaction on the inner ring at the contact centre (inertial frame), moment about its centre
+        # reaction on the inner ring: the opposite of the whole force system on the ball (normal load,
+        # traction with its spin couple, EHL rolling couple), inertial frame, moment about the ring centre
         gx, gy, gz = -fbx, -(fbr * c - fbt * s), -(fbr * s + fbt * c)
-        rc, tc = r - D2 * nri, -D2 * nti
-        ax_, ay_, az_ = x - D2 * nxi - xi, rc * c - tc * s - yi, rc * s + tc * c - zi
-        mrx, mry, mrz = _cross(ax_, ay_, az_, gx, gy, gz)
+        mrx, mry, mrz = reaction_moment(x - xi, r * c - yi, r * s - zi, -gx, -gy, -gz,
+                                        tmx, tmr * c - tmt * s, tmr * s + tmt * c)
         contrib[j, C_RFX] = gx
         contrib[j, C_RFY] = gy
         contrib[j, C_RFZ] = gz
@@ -275,7 +307,7 @@ def ball_loop(y, P, qu, qw, ydot, contrib, aux, want_aux):
         dlt_o, nxo, nro, nto = groove_contact(P[P_GO] - x, P[P_RHOO] - r, 0.0, P[P_OFFO])
         dltd_o = -nxo * vx - nro * vr
         Qo = hertz_normal_load(dlt_o, dltd_o, P[P_KO], P[P_CDO] * damp)
-        (tfx, tfr, tft, tmx, tmr, tmt, To1, To2, So, Uo, FRo, sro) = _race_contact(
+        (tfx, tfr, tft, tmx, tmr, tmt, To1, To2, So, Uo, FRo, sro, PTo, PEo) = _race_contact(
             P, qu, qw, Qo, nxo, nro, nto, x, r, vx, vr, thd, wx, wy, wz,
             0.0, 0.0, 0.0, 0.0, 0.0, 0.0, wo, 0.0, 0.0, P[P_RXO], P[P_KEO], P[P_ACO])
         Fx += Qo * nxo + tfx
@@ -284,6 +316,8 @@ def ball_loop(y, P, qu, qw, ydot, contrib, aux, want_aux):
         Mx += tmx
         Mr += tmr
         Mt += tmt
+        # moment about X through the origin of the outer-race actions on the ball: (b x F)_X = r F_t, plus M_x
+        tau_o = r * tft + tmx
         # ---------------- cage pocket (Q_c, P_S), inertial vectors; pocket axes turn and tilt with the cage
         phj = 2.0 * math.pi * j / Z
         cph, sph = math.cos(phj), math.sin(phj)
@@ -314,6 +348,7 @@ def ball_loop(y, P, qu, qw, ydot, contrib, aux, want_aux):
         Qc = pocket_normal_force(e, ed, P[P_CP], P[P_KC], P[P_ETAF] * damp, P[P_RSQC], P[P_HMIN])
         gx_, gy_, gz_ = -Qc * nx_, -Qc * ny_, -Qc * nz_  # force of the pocket on the ball (inertial)
         PS = 0.0
+        PB = 0.0
         mbx = mby = mbz = 0.0
         kx, ky, kz = D2 * nx_, D2 * ny_, D2 * nz_  # contact point relative to the ball centre
         if fric > 0.0 and Qc > 0.0:
@@ -335,6 +370,7 @@ def ball_loop(y, P, qu, qw, ydot, contrib, aux, want_aux):
             vs = math.sqrt(svx * svx + svy * svy + svz * svz)
             ff = -Qc * pocket_friction_factor(vs, P[P_MUC], P[P_V0C])
             PS = abs(ff) * vs
+            PB = sliding_power(ff * svx, ff * svy, ff * svz, svx, svy, svz)  # P_S x tangential slip
             gx_ += ff * svx
             gy_ += ff * svy
             gz_ += ff * svz
@@ -360,6 +396,24 @@ def ball_loop(y, P, qu, qw, ydot, contrib, aux, want_aux):
         if P[P_DRAG] > 0.0:
             FD = ball_drag_force(r * thd, P[P_D], P[P_RHOE], P[P_CDRAG], P[P_V0D])
             Ft += FD
+        if want_aux:
+            # ---------------- dissipated power by source (models.power) and stored elastic energy
+            Kdi = P[P_KI] * dlt * math.sqrt(dlt) if dlt > 0.0 else 0.0
+            Kdo = P[P_KO] * dlt_o * math.sqrt(dlt_o) if dlt_o > 0.0 else 0.0
+            dlt_c = e - P[P_CP]
+            Kdc = P[P_KC] * dlt_c * math.sqrt(dlt_c) if dlt_c > 0.0 else 0.0
+            aux[j, 19] = PTi
+            aux[j, 20] = PTo
+            aux[j, 21] = PEi
+            aux[j, 22] = PEo
+            aux[j, 23] = normal_damping_power(Qi, Kdi, dltd)
+            aux[j, 24] = normal_damping_power(Qo, Kdo, dltd_o)
+            aux[j, 25] = normal_damping_power(Qc, Kdc, ed)  # pocket squeeze film: force on the ball -Qc n
+            aux[j, 26] = PB
+            aux[j, 27] = sliding_power(0.0, 0.0, FD, 0.0, 0.0, r * thd)  # mixture at rest
+            aux[j, 28] = (elastic_energy_hertz(P[P_KI], dlt) + elastic_energy_hertz(P[P_KO], dlt_o)
+                          + elastic_energy_hertz(P[P_KC], dlt_c))
+            aux[j, 29] = tau_o
         # ---------------- equations of motion (Eqs. 5-10)
         xdd, rdd, thdd, wxd, wyd, wzd = ball_equations_of_motion(Fx, Fr, Ft, Mx, Mr, Mt, r, vr, thd, wy, wz, m, I)
         ydot[j] = vx
@@ -406,6 +460,7 @@ def global_rows(y, P, csum, ydot, gaux):
     e = math.sqrt(yc * yc + zc * zc + (P[P_EEPS] * 1e-2) ** 2)
     uy, uz = yc / e, zc / e
     Fly = Flz = Mlx = 0.0
+    Fe = 0.0
     if P[P_DAMP] > 0.0:
         eps = smooth_eccentricity(e / cl, P[P_EPSMAX])
         ed = (yc * vyc + zc * vzc) / e
@@ -433,7 +488,17 @@ def global_rows(y, P, csum, ydot, gaux):
     gaux[1] = Flz
     gaux[2] = Mlx
     gaux[3] = csum[C_RMX]
-    Rc, _w, Jc = cage_orientation(y[cg + 3], y[cg + 4], y[cg + 5], phd, psyd, pszd)
+    Rc, (wcx, wcy, wcz), Jc = cage_orientation(y[cg + 3], y[cg + 4], y[cg + 5], phd, psyd, pszd)
+    # guide land: the land actions (film forces through the cage centre, moment Mlx along the cage axis,
+    # rub) react on the outer ring, which turns at omega_o about X.  Dissipation = minus the work rate of
+    # the non-elastic part of the pair at the relative velocity (models.power); the elastic rub -Fe u is
+    # conservative (energy 2/5 K_land (e - c)^2.5)
+    wo = P[P_WO]
+    gaux[6] = (sliding_power(0.0, Fly + Fe * uy, Flz + Fe * uz, 0.0, vyc + wo * zc, vzc - wo * yc)
+               + couple_power(Mlx * Rc[0], Mlx * Rc[3], Mlx * Rc[6], wcx - wo, wcy, wcz))
+    pen = e - cl
+    gaux[7] = 0.4 * P[P_KLAND] * pen * pen * math.sqrt(pen) if pen > 0.0 else 0.0
+    gaux[8] = yc * Flz - zc * Fly + Mlx * Rc[0]
     Qph, Qpy, Qpz = cage_generalised_moments(csum[C_CMX] + Mlx * Rc[0], csum[C_CMY] + Mlx * Rc[3],
                                              csum[C_CMZ] + Mlx * Rc[6], Rc, Jc)
     a = cage_equations_of_motion(csum[C_CFX], csum[C_CFY] + Fly - P[P_MC] * P[P_GRAV], csum[C_CFZ] + Flz, Qph,
@@ -442,6 +507,14 @@ def global_rows(y, P, csum, ydot, gaux):
         ydot[cg + k] = y[cg + 6 + k]
         ydot[cg + 6 + k] = a[k]
     Rm, Jm = tilt_rotation(y[rg + 3], y[rg + 4])
+    # drive: the moment along the ring's own axis e = R e_x that holds the prescribed spin against the
+    # ball actions and the external moment; its power at the ring's angular velocity omega_i e + J beta'
+    ex, ey, ez = Rm[0], Rm[3], Rm[6]
+    Td = -(csum[C_RMX] * ex + (P[P_MY] + csum[C_RMY]) * ey + (P[P_MZ] + csum[C_RMZ]) * ez)
+    byd, bzd = y[rg + 8], y[rg + 9]
+    we = P[P_WI] + ex * (Jm[1] * byd + Jm[2] * bzd) + ey * (Jm[4] * byd + Jm[5] * bzd) + ez * (Jm[7] * byd + Jm[8] * bzd)
+    gaux[4] = Td
+    gaux[5] = Td * we
     Qy, Qz = tilt_generalised_moments(csum[C_RMX], P[P_MY] + csum[C_RMY], P[P_MZ] + csum[C_RMZ], Rm, Jm)
     b = ring_equations_of_motion(P[P_FX] + csum[C_RFX], P[P_FY] + csum[C_RFY] - P[P_MI] * P[P_GRAV], P[P_FZ] + csum[C_RFZ],
                                  Qy, Qz, P[P_WI], y[rg + 8], y[rg + 9], P[P_MI], P[P_IPI], P[P_IDI])
