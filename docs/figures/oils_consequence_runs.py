@@ -3,6 +3,7 @@
 Usage (from the repository root; serial, long: minutes per run on a loaded 2-core machine)::
 
     .venv/bin/python docs/figures/oils_consequence_runs.py OUT.jsonl [--duration-default 0.3] [--duration 0.05]
+    .venv/bin/python docs/figures/oils_consequence_runs.py --table OUT.jsonl      # the markdown table of docs/traction.md
 
 "old"    = lubricant.traction_law "bounded" (4109, 4106) / "analogue_4106" (4050), S a fraction,
            critical-load notch as printed, and lubricant.viscosity_law "table1";
@@ -14,6 +15,7 @@ the mean ball pitch angle after the transient [deg] and the quasi-static cage sl
 from __future__ import annotations
 
 import json
+import math
 import sys
 import time
 
@@ -69,7 +71,39 @@ def one(oil, T_C, reading, duration):
     return rec
 
 
+def table(path):
+    """Markdown table: old vs chosen side by side per (oil, T)."""
+    recs = {}
+    for line in open(path):
+        r = json.loads(line)
+        recs[(r["oil"], r["T_C"], r["reading"])] = r
+    rows = ["| oil | T [degC] | run [s] | class old / chosen | whirl / cage speed old / chosen | cage slip [%] old / chosen | "
+            "ball pitch [deg] old / chosen | inner SRR rms [%] old / chosen | whirl radius RMS [um] old / chosen |",
+            "|---|---|---|---|---|---|---|---|---|"]
+
+    def f(r, k, scale=1.0, fmt="{:.3g}"):
+        v = r.get(k) if r else None
+        return "-" if v is None or (isinstance(v, float) and not math.isfinite(v)) else fmt.format(scale * v)
+
+    for oil in ("4109", "4106", "4050"):
+        for T in (27.0, 80.0, 130.0, 180.0):
+            o, c = recs.get((oil, T, "old")), recs.get((oil, T, "chosen"))
+            if not (o or c):
+                continue
+            dur = (o or c)["duration"]
+            rows.append(f"| {oil} | {T:g} | {dur:g} | {(o or {}).get('classification', '-')} / {(c or {}).get('classification', '-')} | "
+                        f"{f(o, 'whirl_frequency_ratio')} / {f(c, 'whirl_frequency_ratio')} | "
+                        f"{f(o, 'mean_cage_slip_ratio', 100, '{:.2f}')} / {f(c, 'mean_cage_slip_ratio', 100, '{:.2f}')} | "
+                        f"{f(o, 'pitch_deg', 1, '{:.1f}')} / {f(c, 'pitch_deg', 1, '{:.1f}')} | "
+                        f"{f(o, 'inner_srr_rms', 100, '{:.2f}')} / {f(c, 'inner_srr_rms', 100, '{:.2f}')} | "
+                        f"{f(o, 'whirl_amplitude', 1e6, '{:.0f}')} / {f(c, 'whirl_amplitude', 1e6, '{:.0f}')} |")
+    return "\n".join(rows)
+
+
 def main(argv):
+    if argv[1] == "--table":
+        print(table(argv[2]))
+        return
     out = argv[1]
     dur_default = float(argv[argv.index("--duration-default") + 1]) if "--duration-default" in argv else 0.3
     dur = float(argv[argv.index("--duration") + 1]) if "--duration" in argv else 0.05
