@@ -172,6 +172,7 @@ SCHEMA: dict[str, dict[str, Field]] = {
         "oil": _f("str", "oil name (closed vocabulary, see hsbearing.models.traction)", default="4109"),
         "temperature": _f("temperature", "oil inlet / bearing temperature", default="20 degC"),
         "traction_law": _f("str", "reading of the traction law (see docs/traction.md)", default="default"),
+        "viscosity_law": _f("choice", "viscosity-temperature law: walther (ASTM D341 through the oil class's 40/100 degC data) or table1 (seed 004 Table 1 exponential)", default="walther", choices=("walther", "table1")),
         "kinematic_viscosity": _f("kinematic_viscosity", "operating kinematic viscosity nu (friction models)", positive=True),
         "dynamic_viscosity": _f("dynamic_viscosity", "ambient-pressure dynamic viscosity eta_0 (overrides the oil's)", positive=True),
         "pressure_viscosity_coefficient": _f("pressure_coefficient", "alpha (overrides the oil's)", positive=True),

@@ -348,11 +348,13 @@ def test_pure_axial_steady_state_matches_quasistatic(case, steady_run):
 
     The reference is the quasi-static solution *without* the gyroscopic couple
     (``solve_case(case, gyroscopic=False)``): with oil 4109 at 130 degC the
-    traction law gives mu <= 0.007, far less than the ~0.025 needed to hold the
+    traction law plateaus at mu ~ 0.007, far less than the ~0.025 needed to hold the
     gyroscopic moment of outer-race control, so the dynamic ball pitch settles
-    near zero (checked below) and the gyroscopic couple with it.  The
-    race-control solution (gyroscopic=True) differs from the dynamic one by
-    2.5 % on Q_i for that reason (docs/dynamics.md).
+    well below the race-control value (20.4 deg) and the gyroscopic couple with it.
+    Since issue 15 (S read in percent, docs/traction.md) the traction saturates at
+    a hundredth of the slip and holds part of it: pitch ~ 8 deg (checked below,
+    between 3 and 15 deg); loads, angles and cage speed still agree with the
+    couple-free solution within 2 % / 1 %.
     """
     from hsbearing.solvers import quasistatic
 
@@ -366,7 +368,8 @@ def test_pure_axial_steady_state_matches_quasistatic(case, steady_run):
     assert wc == pytest.approx(float(qs["cage_speed"]), rel=0.01)
     wx = ds.ball_angular_velocity_x.sel(time=late).mean("time").values
     wy = ds.ball_angular_velocity_y.sel(time=late).mean("time").values
-    assert np.all(np.abs(wy / wx) < 0.05)  # ball pitch ~ 0: the gyroscopic couple is not held by traction
+    pitch = np.degrees(np.arctan(np.abs(wy / wx)))
+    assert np.all((pitch > 3.0) & (pitch < 15.0)), pitch  # partly held: below race control (20.4 deg)
 
 
 @pytest.mark.slow

@@ -117,11 +117,12 @@ def test_bad_radius_convention_and_missing_thermal_inputs():
 def test_lubricant_parameters_from_case_and_overrides():
     from hsbearing.case import load_case
 
-    c = load_case("zhang2016")
+    c = load_case("zhang2016", **{"lubricant.viscosity_law": "table1"})  # default "walther": tests/test_viscosity.py
     p = ehl.lubricant_parameters(c)
     assert p["eta"] == pytest.approx(0.033 * math.exp(-0.0215 * (130.0 - 27.0)), rel=1e-12)
     assert p["alpha"] == 1.28e-8 and p["T"] == pytest.approx(403.15)
     p = ehl.lubricant_parameters(load_case("zhang2016", **{"lubricant.kinematic_viscosity": "5 mm^2/s"}))
     assert p["eta"] == pytest.approx(5e-6 * 960.0)
-    p = ehl.lubricant_parameters(load_case("zhang2016", **{"lubricant.oil": "4050", "lubricant.temperature": "27 degC"}))
+    p = ehl.lubricant_parameters(load_case("zhang2016", **{"lubricant.oil": "4050", "lubricant.temperature": "27 degC",
+                                                           "lubricant.viscosity_law": "table1"}))
     assert p["eta"] == pytest.approx(0.060) and p["alpha"] == 2.02e-8

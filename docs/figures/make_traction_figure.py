@@ -1,8 +1,8 @@
-"""Regenerate docs/figures/traction.png and the evidence tables of docs/traction.md.
+"""Regenerate docs/figures/traction.png, docs/figures/viscosity.png and the evidence tables of docs/traction.md.
 
 Usage (from the repository root)::
 
-    .venv/bin/python docs/figures/make_traction_figure.py            # figure
+    .venv/bin/python docs/figures/make_traction_figure.py            # both figures
     .venv/bin/python docs/figures/make_traction_figure.py --tables   # markdown tables to stdout
 
 The contact is the inner ball/race contact of the bundled default case
@@ -39,6 +39,103 @@ def inner_contact():
     return float(Rx), float(Ry), Ep, float(U)
 
 
+REF_W = (200.0, 1000.0)  # reference loads [N]: p_max 1.32 and 2.26 GPa on the default inner contact
+REF_U = 15.0  # reference rolling speed [m/s]
+REF_T = (27.0, 80.0, 130.0, 180.0)  # the seed's Table 3 temperatures [degC]
+FRACTION = {"4109": "bounded", "4106": "bounded", "4050": "analogue_4106"}  # the old default (S a fraction)
+PERCENT = {"4109": "percent", "4106": "percent", "4050": "analogue_4106_percent"}  # the chosen reading
+
+
+def slope_window(oil, W, U, T_C, rho=960.0):
+    """Independent low-slip slope window (G = 0.1 and 1 GPa), hsbearing.models.traction.linear_region."""
+    from hsbearing.models import ehl, hertz, viscosity
+    from hsbearing.models.traction import linear_region
+
+    Rx, Ry, Ep, _ = inner_contact()
+    c = hertz.point_contact(Rx, Ry, W, 208e9, 0.3, 208e9, 0.3)
+    a, b = float(c.a), float(c.b)
+    eta = float(viscosity.dynamic_viscosity(oil, T_C + 273.15, "walther", density=rho))
+    alpha = traction.OILS[oil].alpha
+    h = float(ehl.film_thickness(W, U, Rx, Ry, Ep, eta, alpha)[0])
+    return tuple(linear_region.low_slip_slope(W, U, eta, alpha, Rx, a, b, h, G) for G in (1e8, 1e9)), float(c.p_max)
+
+
+def curve_metrics(oil, law, W, U, T_C):
+    """(initial slope B - A C, peak mu, S at the peak) of one law at one operating point."""
+    Rx, Ry, Ep, _ = inner_contact()
+    A, B, C, D = (float(x) for x in zhang2016.coefficients(traction.law_id(oil, law), W, U, T_C + 273.15, Ep, Rx))
+    S = np.concatenate([[0.0], np.logspace(-6, 0, 60001)])
+    m = traction.get(oil, law)(S, W, U, T_C + 273.15, Ep, Rx)
+    j = int(np.argmax(m))
+    return B - A * C, float(m[j]), float(S[j])
+
+
+def reading_evidence_table():
+    """Slope / peak / S of the peak of the fraction and percent readings against the independent window."""
+    rows = ["| oil | W [N] (p_max) | T [degC] | independent slope window | S fraction: slope, peak, S_peak | "
+            "S percent: slope, peak, S_peak |", "|---|---|---|---|---|---|"]
+    for oil in traction.OILS:
+        for W, Tc in itertools.product(REF_W, REF_T):
+            (lo, hi), pmax = slope_window(oil, W, REF_U, Tc)
+            f = curve_metrics(oil, FRACTION[oil], W, REF_U, Tc)
+            p = curve_metrics(oil, PERCENT[oil], W, REF_U, Tc)
+            rows.append(f"| {oil} | {W:g} ({pmax / 1e9:.2f} GPa) | {Tc:g} | {lo:.3g}-{hi:.3g} | "
+                        f"{f[0]:.3g}, {f[1]:.4f}, {f[2]:.3g} | {p[0]:.3g}, {p[1]:.4f}, {p[2]:.2g} |")
+    return f"U = {REF_U:g} m/s, default-case inner contact (Rx = 3.87 mm, E' = 228.6 GPa)\n\n" + "\n".join(rows)
+
+
+def convention_sensitivity_table():
+    """Under the percent reading: what E'/2, Young's E, R' and T in K change (at W = 200 N, U = 15 m/s)."""
+    Rx, Ry, Ep, _ = inner_contact()
+    Rred = 1.0 / (1.0 / Rx + 1.0 / Ry)
+    alts = {"E', Rx, degC (adopted)": {}, "E = E'/2": dict(e_scale=0.5), "E = Young's E": dict(e_scale=208e9 / Ep),
+            "R = R'": dict(r_red=True), "T in K": dict(t_kelvin=True)}
+    rows = ["| oil | T [degC] | " + " | ".join(f"{k}: slope, peak" for k in alts) + " |", "|---|---|" + "---|" * len(alts)]
+    S = np.concatenate([[0.0], np.logspace(-6, 0, 20001)])
+    for oil in ("4109", "4106"):
+        for Tc in (27.0, 130.0):
+            cells = []
+            for kw in alts.values():
+                kw = dict(kw)
+                R = Rred if kw.pop("r_red", False) else Rx
+                A, B, C, D = _coefs_reading(oil, 200.0, REF_U, Tc, E=Ep, R=R, **kw)
+                with np.errstate(all="ignore"):
+                    mu = (A + B * 100.0 * S) * np.exp(-C * 100.0 * S) + D
+                cells.append(f"{100.0 * (B - A * C):.3g}, {np.nanmax(mu):.4f}")
+            rows.append(f"| {oil} | {Tc:g} | " + " | ".join(cells) + " |")
+    return "\n".join(rows)
+
+
+def notch_table():
+    """mu at S = 0.01 across the critical load: printed factor vs the floored default (4109, 130 degC)."""
+    Rx, Ry, Ep, U = inner_contact()
+    p = zhang2016.PARAMS[traction.law_id("4109", "printed")]
+    rows = ["| W / W_c | W [N] | |Wc/W - 1| | mu, notch as printed (percent reading) | mu, chosen (floored) |", "|---|---|---|---|---|"]
+    Tc = 130.0
+    Tb = Tc * np.sqrt(p[2] * p[0] * p[1]) / (Ep * Rx)
+    Wc = (p[5] * Tb * Tb + p[6] * Tb + p[7]) * Ep * Rx * Rx
+    for r in (0.25, 0.5, 0.8, 0.95, 1.0, 1.05, 1.25, 2.0, 4.0):
+        W = r * Wc
+        A, B, C, D = zhang2016.coefficients(traction.law_id("4109", "bounded"), W, U, Tc + 273.15, Ep, Rx)
+        m_pr = float(zhang2016.traction_coefficient(A, 100 * B, 100 * C, D, 0.01))
+        m_ch = float(traction.get("4109")(0.01, W, U, Tc + 273.15, Ep, Rx))
+        rows.append(f"| {r:g} | {W:.1f} | {abs(1 / r - 1):.3g} | {m_pr:.5f} | {m_ch:.5f} |")
+    return f"4109, 130 degC, U = {U:.2f} m/s, W_c = {Wc:.1f} N\n\n" + "\n".join(rows)
+
+
+def viscosity_table(rho=960.0):
+    from hsbearing.models import viscosity
+
+    rows = ["| oil | class (source) | T [degC] | walther eta [mPa s] | table1 eta [mPa s] | table1 / walther |", "|---|---|---|---|---|---|"]
+    for oil in traction.OILS:
+        sp = viscosity.OIL_SPEC[oil]
+        for Tc in (27.0, 40.0, 80.0, 100.0, 130.0, 180.0):
+            w = float(viscosity.dynamic_viscosity(oil, Tc + 273.15, "walther", density=rho))
+            t = float(viscosity.dynamic_viscosity(oil, Tc + 273.15, "table1"))
+            rows.append(f"| {oil} | {sp.oil_class} | {Tc:g} | {w * 1e3:.3f} | {t * 1e3:.3f} | {t / w:.2f} |")
+    return f"density {rho:g} kg/m^3 (the case's lubricant.density)\n\n" + "\n".join(rows)
+
+
 def make_figure(path=HERE / "traction.png"):
     import matplotlib
 
@@ -46,31 +143,75 @@ def make_figure(path=HERE / "traction.png"):
     import matplotlib.pyplot as plt
 
     Rx, Ry, Ep, U = inner_contact()
-    S = np.linspace(0.0, 0.2, 401)
+    W = 200.0
     temps = (27.0, 130.0, 180.0)
     colors = {"4109": "tab:blue", "4106": "tab:orange", "4050": "tab:green"}
-    fig, axes = plt.subplots(1, 3, figsize=(13, 4.4), sharey=True)
-    for ax, Tc in zip(axes, temps):
+    fig, axes = plt.subplots(2, 3, figsize=(14, 8.2))
+    for col, Tc in enumerate(temps):
         T = Tc + 273.15
-        for oil in traction.OILS:
-            for W, ls in ((1000.0, "-"), (50.0, "--")):
-                mu = traction.get(oil)(S, W, U, T, Ep, Rx)
-                label = f"{oil} ({traction.law_name(oil)}), W = {W:g} N"
-                ax.plot(S, mu, ls, color=colors[oil], lw=1.8, label=label)
-        for W, ls in ((1000.0, ":"), (50.0, "-.")):
-            mu = traction.get("4050", "printed")(S, W, U, T, Ep, Rx)
-            ax.plot(S, mu, ls, color="0.45", lw=1.2, label=f"4050 Eq. 4 as printed, W = {W:g} N")
-        ax.set_title(f"T = {Tc:g} degC, U = {U:.1f} m/s")
-        ax.set_xlabel("slide-roll ratio S [-]")
-        ax.set_xlim(0, 0.2)
-        ax.set_ylim(0, 0.06)
-        ax.grid(alpha=0.3)
-    axes[0].set_ylabel("traction coefficient mu [-]")
-    handles, labels = axes[0].get_legend_handles_labels()
-    fig.legend(handles, labels, loc="lower center", ncol=4, fontsize=8, frameon=False)
-    fig.suptitle("Seed 004 traction laws, default-case inner contact (Rx = %.2f mm, E' = %.1f GPa)" % (Rx * 1e3, Ep / 1e9))
-    fig.tight_layout(rect=(0, 0.14, 1, 1))
-    fig.savefig(path, dpi=110)
+        for row, (S, xscale) in enumerate(((np.linspace(0.0, 0.03, 601), "linear"), (np.logspace(-5, 0, 801), "log"))):
+            ax = axes[row, col]
+            # independent linear-region window: mu = m S for m between the G = 0.1 and 1 GPa estimates
+            los, his = zip(*(slope_window(o, W, U, Tc)[0] for o in traction.OILS))
+            lo, hi = min(los), max(his)
+            ax.fill_between(S, lo * S, hi * S, color="0.85", lw=0, label="independent linear-region window (all oils)")
+            for oil in traction.OILS:
+                ax.plot(S, traction.get(oil, PERCENT[oil])(S, W, U, T, Ep, Rx), "-", color=colors[oil], lw=1.8,
+                        label=f"{oil} {PERCENT[oil]} (chosen: S in percent)")
+                ax.plot(S, traction.get(oil, FRACTION[oil])(S, W, U, T, Ep, Rx), "--", color=colors[oil], lw=1.2,
+                        label=f"{oil} {FRACTION[oil]} (old: S a fraction)")
+            ax.plot(S, traction.get("4050", "printed")(S, W, U, T, Ep, Rx), ":", color="0.4", lw=1.2,
+                    label="4050 Eq. 4 as printed")
+            ax.set_xscale(xscale)
+            ax.set_ylim(0, 0.03)
+            ax.grid(alpha=0.3)
+            ax.set_xlabel("slide-roll ratio S [-] (fraction)")
+            if row == 0:
+                ax.set_xlim(0, 0.03)
+                ax.set_title(f"T = {Tc:g} degC, W = {W:g} N (1.32 GPa), U = {U:.1f} m/s")
+            else:
+                ax.set_xlim(1e-5, 1.0)
+        axes[0, col].set_ylabel("traction coefficient mu [-]") if col == 0 else None
+        axes[1, col].set_ylabel("traction coefficient mu [-]") if col == 0 else None
+    handles, labels = axes[0, 0].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="lower center", ncol=3, fontsize=8, frameon=False)
+    fig.suptitle("Seed 004 traction laws, default-case inner contact: chosen (solid) vs old (dashed) reading; "
+                 "no published measured points could be retrieved (docs/traction.md)", fontsize=10)
+    fig.tight_layout(rect=(0, 0.1, 1, 0.97))
+    fig.savefig(path, dpi=100)
+    plt.close(fig)
+    return path
+
+
+def make_viscosity_figure(path=HERE / "viscosity.png", rho=960.0):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from hsbearing.models import viscosity
+
+    colors = {"4109": "tab:blue", "4106": "tab:orange", "4050": "tab:green"}
+    T = np.linspace(20.0, 200.0, 181)
+    fig, ax = plt.subplots(figsize=(7.5, 5.2))
+    for oil in traction.OILS:
+        w = viscosity.dynamic_viscosity(oil, T + 273.15, "walther", density=rho) * 1e3
+        t = viscosity.dynamic_viscosity(oil, T + 273.15, "table1") * 1e3
+        ax.plot(T, w, "-", color=colors[oil], lw=2.0 if oil != "4050" else 1.0,
+                label=f"{oil}: walther through {viscosity.OIL_SPEC[oil].oil_class} (default)")
+        ax.plot(T, t, "--", color=colors[oil], lw=1.3, label=f"{oil}: seed Table 1 exponential (table1)")
+    for cls, (n40, n100), mk in (("MIL-PRF-7808 grade 3 minima (11.5, 3.0 mm^2/s)", (11.5, 3.0), "s"),
+                                 ("MIL-PRF-23699: Mobil Jet Oil II (27.6, 5.1 mm^2/s)", (27.6, 5.1), "o")):
+        ax.plot([40.0, 100.0], [n40 * rho * 1e-3, n100 * rho * 1e-3], mk, color="k", ms=7, mfc="none", label=cls)
+    ax.set_yscale("log")
+    ax.axvspan(27.0, 180.0, color="0.93", zorder=0)
+    ax.set_xlabel("temperature [degC] (shaded: the seed's 27-180 degC)")
+    ax.set_ylabel(f"dynamic viscosity [mPa s] (rho = {rho:g} kg/m^3)")
+    ax.set_title("Oils 4109, 4106, 4050: viscosity laws against the class data")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=7.5)
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
     plt.close(fig)
     return path
 
@@ -109,12 +250,12 @@ def _physical(A, B, C, D, s_scale):
 
 
 READINGS = {
-    "SI, T in degC, E = E', R = Rx, S fraction (adopted)": {},
+    "SI, T in degC, E = E', R = Rx, S fraction (old default)": {},
     "T in K": dict(t_kelvin=True),
     "E = E'/2 (Johnson's E*)": dict(e_scale=0.5),
     "E = Young's modulus E": dict(e_scale=0.91),
     "R = reduced radius R'": dict(r_red=True),
-    "S in percent": dict(s_pct=True),
+    "S in percent (adopted)": dict(s_pct=True),
     "E in GPa, R in mm": dict(e_scale=1e-9, r_scale=1e3),
     "E in MPa, R in mm, W in N": dict(e_scale=1e-6, r_scale=1e3),
     "U in mm/s, eta0 in mPa s": dict(u_scale=1e3, eta_scale=1e3),
@@ -200,21 +341,26 @@ def eq4_required_groups():
 
 def oil_comparison_table():
     Rx, Ry, Ep, U = inner_contact()
-    rows = ["| T [degC] | W [N] | 4109 | 4106 | 4050 (analogue_4106) | 4050 printed | slope dmu/dS(0): 4106 / 4050 printed |",
-            "|---|---|---|---|---|---|---|"]
+    rows = ["| T [degC] | W [N] | 4109 | 4106 | 4050 (analogue_4106_percent) | 4050 printed | "
+            "slope dmu/dS(0): 4106 percent / 4050 printed with S in percent |", "|---|---|---|---|---|---|---|"]
     for Tc, W in itertools.product((27.0, 130.0, 180.0), (50.0, 1000.0)):
         T = Tc + 273.15
         vals = [float(traction.get(o)(0.1, W, U, T, Ep, Rx)) for o in ("4109", "4106", "4050")]
-        pr = float(traction.get("4050", "printed")(0.1, W, U, T, Ep, Rx))
+        pr = float(traction.get("4050", "printed")(0.001, W, U, T, Ep, Rx))
         A, B, C, D = zhang2016.coefficients(traction.law_id("4106"), W, U, T, Ep, Rx)
         A4, B4, C4, D4 = zhang2016.coefficients(traction.law_id("4050", "printed"), W, U, T, Ep, Rx)
         rows.append(f"| {Tc:g} | {W:g} | {vals[0]:.4f} | {vals[1]:.4f} | {vals[2]:.4f} | {pr:.4f} | "
-                    f"{float(B - A * C):.3f} / {float(B4 - A4 * C4):.3f} |")
-    return f"mu at S = 0.1, U = {U:.2f} m/s (default-case inner contact)\n\n" + "\n".join(rows)
+                    f"{float(B - A * C):.1f} / {100.0 * float(B4 - A4 * C4):.1f} |")
+    return (f"mu of the default laws at S = 0.1 (their plateau), 4050 printed at S = 0.001 (= 0.1 % read in percent); "
+            f"U = {U:.2f} m/s (default-case inner contact)\n\n" + "\n".join(rows))
 
 
 if __name__ == "__main__":
     if "--tables" in sys.argv:
+        print(reading_evidence_table(), end="\n\n")
+        print(convention_sensitivity_table(), end="\n\n")
+        print(notch_table(), end="\n\n")
+        print(viscosity_table(), end="\n\n")
         print(convention_table(), end="\n\n")
         print(critical_load_table(), end="\n\n")
         print(eq4_required_groups(), end="\n\n")
@@ -222,3 +368,4 @@ if __name__ == "__main__":
         print(brute_force_search())
     else:
         print(make_figure())
+        print(make_viscosity_figure())

@@ -210,9 +210,13 @@ def lubricant_parameters(case):
     Precedence for the inlet viscosity eta [Pa s] at the case temperature T:
 
     1. ``lubricant.kinematic_viscosity`` nu (an operating value) -> eta = nu rho;
-    2. otherwise eta0 exp(-beta (T - T_ref)), :func:`viscosity_at_temperature`, with eta0 from
-       ``lubricant.dynamic_viscosity`` if given (it replaces Table 1's ambient value) or from the
-       oil's Table 1 entry (seed 004), T_ref = :data:`REFERENCE_TEMPERATURE`.
+    2. ``lubricant.dynamic_viscosity`` eta0 given -> eta0 exp(-beta (T - T_ref)),
+       :func:`viscosity_at_temperature` (it replaces Table 1's ambient value), T_ref =
+       :data:`REFERENCE_TEMPERATURE`;
+    3. otherwise ``lubricant.viscosity_law``: "walther" (default; ASTM D341 through the oil's
+       specification-class viscosities at 40 and 100 degC, times ``lubricant.density``) or
+       "table1" (Table 1's exponential law), :func:`hsbearing.models.viscosity.dynamic_viscosity`
+       (decision: docs/traction.md, "Viscosity").
 
     alpha [1/Pa] is ``lubricant.pressure_viscosity_coefficient`` or the oil's; beta [1/K] and
     K [W/(m K)] are the oil's (Table 1).
@@ -228,8 +232,12 @@ def lubricant_parameters(case):
     T = lub.temperature
     if lub.kinematic_viscosity is not None:
         eta = lub.kinematic_viscosity * lub.density
+    elif lub.dynamic_viscosity is not None:
+        eta = float(viscosity_at_temperature(lub.dynamic_viscosity, oil.beta, T))
     else:
-        eta0 = lub.dynamic_viscosity if lub.dynamic_viscosity is not None else oil.eta0
-        eta = float(viscosity_at_temperature(eta0, oil.beta, T))
+        from hsbearing.models.viscosity import dynamic_viscosity
+
+        law = getattr(lub, "viscosity_law", "walther")
+        eta = float(dynamic_viscosity(lub.oil, T, law=law, density=lub.density, T_ref=REFERENCE_TEMPERATURE))
     alpha = lub.pressure_viscosity_coefficient if lub.pressure_viscosity_coefficient is not None else oil.alpha
     return {"eta": float(eta), "alpha": float(alpha), "beta": oil.beta, "K": oil.K, "T": T}

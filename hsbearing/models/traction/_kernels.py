@@ -14,6 +14,7 @@ import numba
 
 from hsbearing.models.traction.zhang2016 import (
     LOAD_FACTOR_SHARPNESS,
+    NOTCH_SHARPNESS,
     PARAMS,
     S_EPS,
     T_FLOOR_C,
@@ -45,6 +46,9 @@ def coefficients_nb(law_id, W, U, T_K, E, R):
     if p[4] != 0.0:
         Wc = p[5] * Tb * Tb + p[6] * Tb + p[7]
         f = abs(Wc / Wb - 1.0)
+        f0 = p[26]
+        if f0 > 0.0:  # smooth floor of the critical-load notch (zhang2016.notch_floor)
+            f = (f**NOTCH_SHARPNESS + f0**NOTCH_SHARPNESS) ** (1.0 / NOTCH_SHARPNESS)
         fmax = p[8]
         if fmax > 0.0:
             r = f / fmax
@@ -57,7 +61,8 @@ def coefficients_nb(law_id, W, U, T_K, E, R):
     B = p[13] * f * math.exp(p[14] * lW + p[15] * lU + p[16] * lT)
     C = p[17] * f * math.exp(p[18] * lW + p[19] * lU + p[20] * lT)
     D = p[21] * f * math.exp(p[22] * lW + p[23] * lU + p[24] * lT)
-    return A, B, C, D
+    s = p[25]  # S read in percent: coefficients (A, s B, s C, D) in the fractional S
+    return A, B * s, C * s, D
 
 
 @numba.njit(cache=True, nogil=True)

@@ -49,6 +49,9 @@ __all__ = [
     "PARAMS",
     "S_EPS",
     "LOAD_FACTOR_MAX",
+    "NOTCH_FLOOR",
+    "PERCENT",
+    "notch_floor",
     "coefficients",
     "dimensionless_groups",
     "traction_coefficient",
@@ -62,6 +65,14 @@ S_EPS = 1.0e-4
 LOAD_FACTOR_MAX = 3.0
 #: Exponent of the smooth saturation f / (1 + (f/f_max)^n)^(1/n) [-].
 LOAD_FACTOR_SHARPNESS = 8.0
+#: Floor of the load factor |Wc/W - 1| near the critical load in the "percent" readings [-]:
+#: f -> (f^m + f_0^m)^(1/m), so mu(W_c) = mu at the load where |Wc/W - 1| = f_0 instead of 0
+#: (docs/traction.md, "critical-load notch").
+NOTCH_FLOOR = 0.25
+#: Exponent m of the smooth floor [-].
+NOTCH_SHARPNESS = 4.0
+#: Slide-roll ratio scale of the "percent" readings: the printed S is read in percent, S_printed = 100 S [-].
+PERCENT = 100.0
 #: Floors that keep the kernels finite (W = 0, U = 0, T <= 0 degC) [N], [m/s], [degC].
 W_FLOOR, U_FLOOR, T_FLOOR_C = 1.0e-9, 1.0e-6, 1.0e-3
 
@@ -97,12 +108,13 @@ _DESCRIPTIONS: dict[tuple[str, str], str] = {}
 _rows = []
 
 
-def _add(oil, law, props_oil, eq, tbar_kind, has_wc, fmax, description):
+def _add(oil, law, props_oil, eq, tbar_kind, has_wc, fmax, description, s_scale=1.0, notch_floor=0.0):
     eta0, beta, K = _OIL[props_oil]
     (c2, c1, c0), coefs = eq
     row = [eta0, beta, K, float(tbar_kind), float(has_wc), c2, c1, c0, fmax]
     for c in coefs:
         row.extend(c)
+    row.extend([s_scale, notch_floor])
     LAWS[(oil, law)] = len(_rows)
     _DESCRIPTIONS[(oil, law)] = description
     _rows.append(row)
@@ -118,14 +130,24 @@ _add("4106", "bounded", "4106", _EQ3, TBAR_SQRT, 1, LOAD_FACTOR_MAX,
      "Eq. 3 with the load factor |Wc/W-1| smoothly saturated at 3 (W << Wc only)")
 _add("4050", "analogue_4106", "4050", _EQ3, TBAR_SQRT, 1, LOAD_FACTOR_MAX,
      "fallback: Eq. 3 (4106 fit) evaluated with 4050's Table 1 eta0, beta, K; bounded")
+_add("4109", "percent", "4109", _EQ2, TBAR_SQRT, 1, LOAD_FACTOR_MAX,
+     "Eq. 2 with S read in percent (S_printed = 100 S), bounded, critical-load notch floored at |Wc/W-1| = 0.25",
+     s_scale=PERCENT, notch_floor=NOTCH_FLOOR)
+_add("4106", "percent", "4106", _EQ3, TBAR_SQRT, 1, LOAD_FACTOR_MAX,
+     "Eq. 3 with S read in percent (S_printed = 100 S), bounded, critical-load notch floored at |Wc/W-1| = 0.25",
+     s_scale=PERCENT, notch_floor=NOTCH_FLOOR)
+_add("4050", "analogue_4106_percent", "4050", _EQ3, TBAR_SQRT, 1, LOAD_FACTOR_MAX,
+     "fallback: Eq. 3 (4106 fit) with 4050's Table 1 eta0, beta, K, S read in percent, bounded, notch floored",
+     s_scale=PERCENT, notch_floor=NOTCH_FLOOR)
 
 #: Constants of every law, one row per law id: eta0, beta, K, tbar_kind, has_wc, c2, c1, c0,
-#: f_max (0 = printed, no saturation), then (coef, pW, pU, pT) for A_L, B_L, C_L, D_L.
+#: f_max (0 = printed, no saturation), then (coef, pW, pU, pT) for A_L, B_L, C_L, D_L (columns 9-24),
+#: then s_scale (25: 1 = S a fraction, 100 = S in percent) and the notch floor f_0 (26: 0 = none).
 PARAMS = np.array(_rows, dtype=float)
 PARAMS.setflags(write=False)
 
-#: Default reading per oil (see docs/traction.md).
-DEFAULT_LAW = {"4109": "bounded", "4106": "bounded", "4050": "analogue_4106"}
+#: Default reading per oil (see docs/traction.md, "Decision").
+DEFAULT_LAW = {"4109": "percent", "4106": "percent", "4050": "analogue_4106_percent"}
 
 
 def describe(oil: str, law: str) -> str:
@@ -167,6 +189,19 @@ def dimensionless_groups(law_id: int, W, U, T_C, E, R):
     return Wb, Ub, Tb
 
 
+def notch_floor(f, f0):
+    """Smooth floor of the critical-load factor: (f^m + f_0^m)^(1/m), m = NOTCH_SHARPNESS (identity if f_0 == 0).
+
+    The printed factor |Wc/W - 1| of [1], Eqs. 2-3 vanishes at W = W_c and with it mu for every S; the
+    floor keeps the "transition" at the critical load that the fitted data show (docs/traction.md) without
+    a zero.  f, f_0 [-].  Differs from f by < 0.4 % for f >= 3 f_0 and < 0.1 % for f >= 4 f_0.
+    """
+    if f0 <= 0.0:
+        return f
+    m = NOTCH_SHARPNESS
+    return (f**m + f0**m) ** (1.0 / m)
+
+
 def _saturate(f, fmax):
     """Smooth saturation f / (1 + (f/f_max)^n)^(1/n) (identity if f_max == 0)."""
     if fmax <= 0.0:
@@ -196,7 +231,7 @@ def coefficients(law_id: int, W, U, T_K, E, R):
     Wb, Ub, Tb = dimensionless_groups(law_id, W, U, T_C, np.asarray(E, dtype=float), np.asarray(R, dtype=float))
     if p[4]:
         Wc = p[5] * Tb * Tb + p[6] * Tb + p[7]  # [1], Eqs. 2-3: critical load parameter
-        f = _saturate(np.abs(Wc / Wb - 1.0), p[8])  # [1], Eqs. 2-3: |Wc/W - 1|
+        f = _saturate(notch_floor(np.abs(Wc / Wb - 1.0), p[26]), p[8])  # [1], Eqs. 2-3: |Wc/W - 1|
     else:
         f = 1.0
     out = []
@@ -204,7 +239,8 @@ def coefficients(law_id: int, W, U, T_K, E, R):
         a, pW, pU, pT = p[9 + 4 * j: 13 + 4 * j]
         out.append(a * Wb**pW * f * Ub**pU * Tb**pT)  # [1], Eqs. 2-4
     A, B, C, D = np.broadcast_arrays(*out)
-    return A, B, C, D
+    # S read in percent: (A + B S_p) exp(-C S_p) + D with S_p = s_scale S  ==  coefficients (A, s B, s C, D) in S
+    return A, B * p[25], C * p[25], D
 
 
 def traction_coefficient(A, B, C, D, S):
