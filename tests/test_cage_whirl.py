@@ -148,3 +148,54 @@ def test_land_film_never_produces_power():
                     Mx = guide_land_torque(eps, wc - omega_land, ETA, R, L, C_GAP)
                     D = guide_land_power(Fr, Ft, eps * C_GAP, ed * C_GAP, whirl, Mx, wc, omega_land)
                     assert D > 0.0
+
+
+# --------------------------------------------------------------------------- land geometry from the case
+def test_default_lands_from_the_groove_geometry():
+    """Seed 004 default: outer groove r_o = 0.53 x 9.525 mm centred at d_o/2 - r_o; at the 52.4 mm land diameter it
+    is 2 sqrt(r_o^2 - (26.2 - 22.74)^2) ~ 7.35 mm wide, leaving two lands of (11 - 7.35)/2 ~ 1.83 mm under the cage."""
+    import hsbearing
+    from hsbearing.models.geometry import derive, guide_lands
+
+    case = hsbearing.load_case("zhang2016")
+    g = derive(case)
+    gl = guide_lands(case)
+    r_o, rho = 0.53 * 9.525e-3, 0.5 * g.do - 0.53 * 9.525e-3
+    gw = 2 * math.sqrt(r_o**2 - (26.2e-3 - rho) ** 2)
+    assert gl.groove_width == pytest.approx(gw, rel=1e-9) and 7.2e-3 < gw < 7.5e-3
+    assert gl.count == 2 and gl.width == pytest.approx(0.5 * (11e-3 - gw), rel=1e-9)
+    assert gl.clearance == pytest.approx(0.2e-3) and gl.radius == pytest.approx(26e-3)
+    assert gl.offsets == pytest.approx((-(5.5e-3 - 0.5 * gl.width), 5.5e-3 - 0.5 * gl.width))
+    one = guide_lands(hsbearing.load_case("zhang2016", **{"cage.guide_land_count": 1, "cage.guide_land_width": "1 mm"}))
+    assert one.count == 1 and one.width == pytest.approx(1e-3) and one.offsets == pytest.approx((5e-3,))
+
+
+@pytest.mark.parametrize("overrides, key", [
+    ({"cage.guide_land_width": "11 mm"}, "cage.guide_land_width"),  # the old meaning (whole film length)
+    ({"cage.guide_land_width": "2.5 mm"}, "cage.guide_land_width"),  # runs into the groove
+    ({"bearing.outer_land_diameter": "51.9 mm"}, "bearing.outer_land_diameter"),  # land inside the cage
+    ({"bearing.outer_land_diameter": "56 mm"}, "bearing.outer_land_diameter"),  # beyond the raceway
+    ({"cage.guide_land_count": 0}, "cage.guide_land_count"),
+    ({"cage.guide_land_count": 3}, "cage.guide_land_count"),
+    ({"cage.guidance": "inner_ring", "bearing.inner_land_diameter": "45 mm"}, "bearing.inner_land_diameter"),
+    ({"cage.guidance": "ball", "cage.guide_land_count": 2}, "cage.guide_land_count"),
+])
+def test_bad_land_combinations_are_bad_input(overrides, key):
+    import hsbearing
+    from hsbearing.errors import CaseError
+
+    with pytest.raises(CaseError) as exc:
+        hsbearing.load_case("zhang2016", **overrides)
+    assert exc.value.key == key
+
+
+def test_bad_land_is_exit_2_with_one_line(tmp_path):
+    import subprocess
+
+    exe = Path(sys.executable).parent / "hsbearing"
+    r = subprocess.run([str(exe), "check", "zhang2016", "--set", "cage.guide_land_width=11mm"], capture_output=True,
+                       text=True, cwd=tmp_path)
+    assert r.returncode == 2
+    lines = r.stderr.strip().splitlines()
+    assert len(lines) == 1 and "cage.guide_land_width" in lines[0] and "zhang2016.toml" in lines[0]
+    assert not list(tmp_path.iterdir())
