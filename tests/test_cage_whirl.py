@@ -199,3 +199,115 @@ def test_bad_land_is_exit_2_with_one_line(tmp_path):
     lines = r.stderr.strip().splitlines()
     assert len(lines) == 1 and "cage.guide_land_width" in lines[0] and "zhang2016.toml" in lines[0]
     assert not list(tmp_path.iterdir())
+
+
+# --------------------------------------------------------------------------- the kernel's land assembly
+@pytest.fixture(scope="module")
+def model():
+    import hsbearing
+    from hsbearing.dynamics import build_model
+
+    return build_model(hsbearing.load_case("zhang2016"), gravity=0.0)
+
+
+def _cage_rows(model, y, lands_on=True):
+    """Cage generalised accelerations (x'', y'', z'', phi'', psi_y'', psi_z'') from the package's rhs."""
+    from hsbearing.models import kernel as K
+
+    P = model.P.copy()
+    if not lands_on:
+        P[K.P_NLAND] = 0.0
+    out = np.empty_like(y)
+    K.rhs_kernel(y, P, model.qu, model.qw, out, np.zeros((model.layout.Z, K.N_CONTRIB)),
+                 np.zeros((model.layout.Z, K.N_AUX)), False, np.zeros(K.N_CONTRIB), np.zeros(K.N_GAUX))
+    c = model.layout.cage0
+    return out[c + 6:c + 12]
+
+
+@pytest.mark.parametrize("state", [
+    # (y/c, z/c, vy/(c w), vz/(c w), tilt_y, tilt_z, tiltdot_y/w, tiltdot_z/w)
+    (0.5, 0.0, 0.0, 0.3, 0.0, 0.0, 0.0, 0.0),  # whirl 0.6 w: above half speed
+    (0.0, -0.7, 0.2, 0.0, 0.0, 0.0, 0.0, 0.0),  # backward whirl
+    (0.3, 0.4, -0.05, 0.02, 0.0, 0.0, 0.0, 0.0),  # moving away from the land
+    (0.6, -0.2, 0.05, 0.1, 0.0, 0.0, 0.0, 0.0),  # approaching
+    (0.3, 0.2, 0.0, 0.1, 8e-3, -5e-3, 2e-4, 1e-4),  # tilted: the two lands see different offsets
+])
+def test_kernel_land_force_is_the_sum_of_the_land_films(model, state):
+    """(rhs with lands - rhs without) x (m_c, I_p, I_d) = sum over the lands of guide_land_forces projected on Y, Z,
+    their moments a_k e_x x F_k and the Petroff torques -- evaluated independently here from the case geometry
+    (with the kernel's documented smooth saturation of eps, smooth_eccentricity)."""
+    from hsbearing.models import kernel as K
+    from hsbearing.models.cage import cage_generalised_moments, cage_orientation, smooth_eccentricity
+    from hsbearing.models.geometry import guide_lands
+
+    gl = guide_lands(model.case)
+    P = model.P
+    sat = P[K.P_INDEX["eps_max"]]
+    c, R_, L_, eta = gl.clearance, gl.radius, gl.width, P[K.P_INDEX["eta_film"]]
+    y = model.y0.copy()
+    cg = model.layout.cage0
+    w = y[cg + 9]
+    sy, sz, svy, svz, ty, tz, tdy, tdz = state
+    y[cg + 1], y[cg + 2], y[cg + 7], y[cg + 8] = sy * c, sz * c, svy * c * w, svz * c * w
+    y[cg + 4], y[cg + 5], y[cg + 10], y[cg + 11] = ty, tz, tdy * w, tdz * w
+    d = _cage_rows(model, y) - _cage_rows(model, y, lands_on=False)
+    # cage axis e and angular velocity from the package's kinematics (cage_orientation, exact for any tilt)
+    Rc, (wx, wy, wz), Jc = cage_orientation(y[cg + 3], ty, tz, w, y[cg + 10], y[cg + 11])
+    ex = np.array([Rc[0], Rc[3], Rc[6]])
+    om = np.array([wx, wy, wz])
+    F = np.zeros(3)
+    M = np.zeros(3)
+    for a in gl.offsets:
+        p = y[cg:cg + 3] + a * ex  # the cage-axis point in the plane of land k
+        v = y[cg + 6:cg + 9] + np.cross(om, a * ex)
+        py, pz, vy, vz = p[1], p[2], v[1], v[2]
+        e = math.hypot(py, pz)
+        eps = smooth_eccentricity(e / c, sat)
+        Fr, Ft = guide_land_forces(eps, (py * vy + pz * vz) / e / c, w, (py * vz - pz * vy) / e**2, eta, R_, L_, c)
+        fk = np.array([0.0, (Fr * py - Ft * pz) / e, (Fr * pz + Ft * py) / e])
+        F += fk
+        M += np.cross(a * ex, fk) + guide_land_torque(eps, w, eta, R_, L_, c) * ex
+    Q = cage_generalised_moments(M[0], M[1], M[2], Rc, Jc)
+    m, Ip, Id = model.P[K.P_INDEX["m_c"]], model.P[K.P_INDEX["Ip_c"]], model.P[K.P_INDEX["Id_c"]]
+    scale = math.hypot(F[1], F[2])
+    assert d[0] == pytest.approx(0.0, abs=1e-12)
+    assert d[1] * m == pytest.approx(F[1], abs=1e-9 * scale) and d[2] * m == pytest.approx(F[2], abs=1e-9 * scale)
+    assert d[3] * Ip == pytest.approx(Q[0], rel=1e-9)
+    mscale = abs(Q[0]) + abs(gl.offsets[0]) * scale
+    assert d[4] * Id == pytest.approx(Q[1], abs=1e-9 * mscale) and d[5] * Id == pytest.approx(Q[2], abs=1e-9 * mscale)
+    if not (ty or tz):  # untilted: both lands carry the same force, no net tilting moment
+        assert abs(Q[1]) < 1e-12 * mscale and abs(Q[2]) < 1e-12 * mscale
+
+
+def test_kernel_linearised_cage_whirl_on_the_land_films(model):
+    """Linearised growth, not a trajectory: the film-only Jacobian of the kernel's cage rows near the centre gives the
+    root of m s^2 + C (s - i w/2) = 0 with C = n pi eta R L^3 / (2 c^3) of the case's n lands (forward whirl at
+    half the cage speed, growing at sigma ~ m w^2 / (4 C) for m w << C).  Linearised at an offset of 1e-3 c:
+    at exactly zero offset the kernel's line of centres is undefined and the film damping drops out."""
+    from hsbearing.models.geometry import guide_lands
+    from hsbearing.models import kernel as K
+
+    gl = guide_lands(model.case)
+    y0 = model.y0.copy()
+    cg = model.layout.cage0
+    w = y0[cg + 9]
+    y0[cg + 1] = 1e-3 * gl.clearance
+    eta = model.P[K.P_INDEX["eta_film"]]
+    A = np.zeros((4, 4))
+    A[0, 2] = A[1, 3] = 1.0
+    base = _cage_rows(model, y0) - _cage_rows(model, y0, lands_on=False)
+    for col, idx, h in ((0, cg + 1, 1e-6 * gl.clearance), (1, cg + 2, 1e-6 * gl.clearance),
+                        (2, cg + 7, 1e-6 * gl.clearance * w), (3, cg + 8, 1e-6 * gl.clearance * w)):
+        y = y0.copy()
+        y[idx] += h
+        d = _cage_rows(model, y) - _cage_rows(model, y, lands_on=False) - base
+        A[2, col], A[3, col] = d[1] / h, d[2] / h
+    lam = np.linalg.eigvals(A)
+    s_k = lam[np.argmax(lam.real)]
+    m = model.P[K.P_INDEX["m_c"]]
+    C = gl.count * math.pi * eta * gl.radius * gl.width**3 / (2 * gl.clearance**3)
+    roots = np.roots([m, C, -0.5j * C * w])
+    s_th = roots[np.argmax(roots.real)]
+    assert s_k.real > 0
+    assert s_k.real == pytest.approx(s_th.real, rel=0.02)
+    assert abs(s_k.imag) == pytest.approx(abs(s_th.imag), rel=0.02)
