@@ -281,8 +281,9 @@ def test_kernel_land_force_is_the_sum_of_the_land_films(model, state):
 
 def test_kernel_linearised_cage_whirl_on_the_land_films(model):
     """Linearised growth, not a trajectory: the film-only Jacobian of the kernel's cage rows near the centre gives the
-    root of m s^2 + C (s - i w/2) = 0 with C = n pi eta R L^3 / (2 c^3) of the case's n lands (forward whirl at
-    half the cage speed, growing at sigma ~ m w^2 / (4 C) for m w << C).  Linearised at an offset of 1e-3 c:
+    root of m s^2 + C (s - i w/2) = 0 with C = n pi eta R L^3 / (2 c^3) of the case's n lands (forward whirl,
+    growing; with the case's two 1.83 mm lands m w ~ 10 C, so s ~ sqrt(i C w / (2 m)) - C/(2m): 67 1/s, whirl
+    0.15 w -- not the m w << C half-frequency limit of the old 11 mm film).  Linearised at an offset of 1e-3 c:
     at exactly zero offset the kernel's line of centres is undefined and the film damping drops out."""
     from hsbearing.models.geometry import guide_lands
     from hsbearing.models import kernel as K
@@ -311,3 +312,33 @@ def test_kernel_linearised_cage_whirl_on_the_land_films(model):
     assert s_k.real > 0
     assert s_k.real == pytest.approx(s_th.real, rel=0.02)
     assert abs(s_k.imag) == pytest.approx(abs(s_th.imag), rel=0.02)
+
+
+def test_full_model_linearised_cage_whirl(model):
+    """The full model's Jacobian (balls, cage, ring; gravity off) at the start state, cage offset 1e-3 c: its least
+    stable mode is a growing forward cage whirl, and its growth rate is that of the cage on its land films alone
+    (measured 66.97 vs 67.45 1/s; whirl 0.20 vs 0.15 of the cage speed): with the real lands the balls no longer
+    set the linear instability (before issue 14 they made it 2.5-6x faster, docs/validation/cage_whirl.md).
+    Linearised growth, not a trajectory."""
+    from hsbearing.models import kernel as K
+    from hsbearing.models.geometry import guide_lands
+
+    gl = guide_lands(model.case)
+    y = model.y0.copy()
+    cg = model.layout.cage0
+    y[cg + 1] = 1e-3 * gl.clearance
+    J = np.zeros((y.size, y.size))
+    model.jac(0.0, y, None, J)
+    lam, V = np.linalg.eig(J)
+    k = int(np.argmax(lam.real + 1e-9 * lam.imag))  # the member of the pair with positive imaginary part
+    s_full = lam[k]
+    w = y[cg + 9]
+    m = model.P[K.P_INDEX["m_c"]]
+    C = gl.count * math.pi * model.P[K.P_INDEX["eta_film"]] * gl.radius * gl.width**3 / (2 * gl.clearance**3)
+    roots = np.roots([m, C, -0.5j * C * w])
+    s_film = roots[np.argmax(roots.real)]
+    assert s_full.imag > 0 and s_full.real == pytest.approx(s_film.real, rel=0.05)
+    assert 0.1 < s_full.imag / w < 0.3
+    vy, vz = V[cg + 1, k], V[cg + 2, k]
+    # z lags y by ~90 deg in exp(s t): forward whirl (direction of rotation), nearly circular (measured |vz/vy| 1.13)
+    assert abs(np.angle(vz / vy) + 0.5 * math.pi) < 0.2 and 0.8 < abs(vz / vy) < 1.25
