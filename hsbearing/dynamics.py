@@ -225,7 +225,8 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
 def _guide_lands(case, land_length=None):
     """The case's guide lands (:func:`hsbearing.models.geometry.guide_lands`), checked for the dynamic model.
 
-    ``land_length`` (model option) replaces the width of each land.
+    ``land_length`` (model option) replaces the width of each land (e.g. ``land_length=11e-3`` with
+    ``cage.guide_land_count = 1``: the single cage-wide film of the model before issue 14).
     """
     from dataclasses import replace
 
@@ -238,8 +239,10 @@ def _guide_lands(case, land_length=None):
         raise CaseError(case.source, exc.key, exc.message) from None
     if gl.count == 0:
         return gl
-    if land_length:
-        gl = replace(gl, width=float(land_length))
+    if land_length:  # the films keep reaching the cage faces
+        L = float(land_length)
+        a = 0.5 * max(case.cage.width - L, 0.0)
+        gl = replace(gl, width=L, offsets=(-a, a) if gl.count == 2 else (a,))
     key = "bearing.outer_land_diameter" if gl.guidance == "outer_ring" else "bearing.inner_land_diameter"
     if not (math.isfinite(gl.clearance) and gl.clearance > 0 and math.isfinite(gl.radius)):
         raise CaseError(case.source, key, f"the dynamic model needs the land diameter of the {gl.guidance.replace('_', ' ')} "
