@@ -342,3 +342,38 @@ def test_full_model_linearised_cage_whirl(model):
     vy, vz = V[cg + 1, k], V[cg + 2, k]
     # z lags y by ~90 deg in exp(s t): forward whirl (direction of rotation), nearly circular (measured |vz/vy| 1.13)
     assert abs(np.angle(vz / vy) + 0.5 * math.pi) < 0.2 and 0.8 < abs(vz / vy) < 1.25
+
+
+def test_inner_ring_and_ball_guidance():
+    """Inner-ring guidance: the land film acts between the cage bore and the ring land (relative offset), its
+    reaction moves the inner ring (equal and opposite), and the faster ring drags the cage forward.  Ball-piloted:
+    no land loads at all."""
+    import hsbearing
+    from hsbearing.dynamics import build_model
+    from hsbearing.models import kernel as K
+    from hsbearing.models.geometry import guide_lands
+
+    case = hsbearing.load_case("zhang2016", **{"cage.guidance": "inner_ring"})
+    gl = guide_lands(case)
+    assert gl.count == 2 and gl.radius == pytest.approx(22.2e-3) and gl.clearance == pytest.approx(2.95e-3)
+    m = build_model(case, gravity=0.0)
+    y = m.y0.copy()
+    cg, rg = m.layout.cage0, m.layout.ring0
+    y[cg + 1], y[cg + 8] = 0.5 * gl.clearance, 0.1 * gl.clearance * 600.0
+    y[rg + 1] = 0.1 * gl.clearance  # the ring centre moves too: the film sees the relative offset
+    P0 = m.P.copy()
+    P0[K.P_NLAND] = 0.0
+    scratch = (np.zeros((m.layout.Z, K.N_CONTRIB)), np.zeros((m.layout.Z, K.N_AUX)), False, np.zeros(K.N_CONTRIB))
+    on, off = np.empty_like(y), np.empty_like(y)
+    g_on, g_off = np.zeros(K.N_GAUX), np.zeros(K.N_GAUX)
+    K.rhs_kernel(y, m.P, m.qu, m.qw, on, *scratch, g_on)
+    K.rhs_kernel(y, P0, m.qu, m.qw, off, *scratch, g_off)
+    Fc = (on[cg + 7:cg + 9] - off[cg + 7:cg + 9]) * m.P[K.P_INDEX["m_c"]]
+    Fr = (on[rg + 6:rg + 8] - off[rg + 6:rg + 8]) * m.P[K.P_INDEX["m_i"]]
+    assert np.hypot(*Fc) > 1e-5 and Fr == pytest.approx(-Fc, abs=1e-9)  # round-off of the ~1 kN ring-load sum
+    assert g_on[K.GAUX_INDEX["M_cx"]] > 0  # the inner ring turns faster than the cage: the film drives it
+    assert g_on[K.GAUX_INDEX["P_land"]] > 0
+    ball = build_model(hsbearing.load_case("zhang2016", **{"cage.guidance": "ball"}), gravity=0.0)
+    assert ball.P[K.P_NLAND] == 0
+    _, g = ball.outputs(ball.y0)
+    assert np.all(g[[K.GAUX_INDEX[n] for n in ("F_cy", "F_cz", "M_cx", "P_land")]] == 0.0)
