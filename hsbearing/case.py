@@ -157,7 +157,10 @@ SCHEMA: dict[str, dict[str, Field]] = {
         "width": _f("length", "cage width", positive=True),
         "pocket_diameter": _f("length", "cage pocket diameter d_p", positive=True),
         "pocket_clearance": _f("length", "pocket clearance (d_p - D)/2 if pocket_diameter absent", nonneg=True),
-        "guide_land_width": _f("length", "axial length of the cage/guide-land film (default: cage width)", positive=True),
+        "guide_land_width": _f("length", "axial width of ONE guide-land film (default: cage/ring overlap beside the groove, "
+                               "docs/dynamics.md)", positive=True),
+        "guide_land_count": _f("int", "number of guide lands, separate films whose forces add (default 2: one each side "
+                               "of the groove; 0 for guidance = ball)", minimum=0, maximum=2),
         "mass": _f("mass", "cage mass m_c (computed from geometry and density if absent)", positive=True),
         "axial_inertia": _f("inertia", "cage polar moment of inertia", positive=True),
         "diametral_inertia": _f("inertia", "cage diametral moment of inertia", positive=True),
@@ -613,6 +616,7 @@ def _check_physical(case: Case, source: str) -> None:
         raise CaseError(source, "cage.pocket_diameter", f"cage pocket {c.pocket_diameter*1e3:g} mm is not larger than the ball {D*1e3:g} mm")
     if b.bore_diameter is not None and b.outside_diameter is not None and b.bore_diameter >= b.outside_diameter:
         raise CaseError(source, "bearing.bore_diameter", "bore diameter must be smaller than the outside diameter")
+    _check_guide_lands(case, source)
     if case.system in ("angular_contact", "deep_groove", "gyro_ribbon_cage"):
         from hsbearing.models import traction
 
@@ -628,6 +632,21 @@ def _check_physical(case: Case, source: str) -> None:
         if case.system == "angular_contact" and case.lubricant.temperature <= 273.15:
             raise CaseError(source, "lubricant.temperature",
                             "the seed 004 traction laws are fitted in degC and undefined at or below 0 degC")
+
+
+def _check_guide_lands(case: Case, source: str) -> None:
+    """Guide-land keys: land inside the cage, lands wider than the ring/cage, no land left by the groove."""
+    if case.system not in ("angular_contact", "deep_groove") or case.cage is None:
+        return
+    from hsbearing.models.geometry import GuideLandError, guide_lands
+
+    c = case.cage
+    if c.guide_land_count == 0 and c.guidance != "ball":
+        raise CaseError(source, "cage.guide_land_count", f"guidance = {c.guidance} needs at least one land (0 only for guidance = ball)")
+    try:
+        guide_lands(case)
+    except GuideLandError as exc:
+        raise CaseError(source, exc.key, exc.message) from None
 
 
 # ----------------------------------------------------------------------------

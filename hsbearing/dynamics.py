@@ -39,7 +39,7 @@ MODEL_DEFAULTS = {
     "pocket_eps": 1e-7,  # m, regularisation of the ball-in-pocket offset near zero
     "drag_coefficient": 0.5,  # C_D of a sphere (Re ~ 1e3..1e5)
     "drag_v0": 0.01,  # m/s
-    "land_length": None,  # m, guide-land film length (None: [cage] guide_land_width, else the cage width)
+    "land_length": None,  # m, width of each guide-land film (None: the case's lands, geometry.guide_lands)
     "land_eps_max": 0.95,  # saturation of the guide-land eccentricity ratio
     "land_contact_K": 6e9,  # N/m^1.5, elastic rub of the cage on the land beyond the clearance
     "gravity": 9.81,  # m/s^2 along -Y (horizontal shaft); 0 switches it off
@@ -155,16 +155,12 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
     opt = dict(MODEL_DEFAULTS, **options)
     g = derive(case)
     b, cg = case.bearing, case.cage
-    if cg.guidance != "outer_ring":
-        raise CaseError(case.source, "cage.guidance", "the dynamic model implements outer-ring guidance only")
     for key, val in (("cage.outside_diameter", cg.outside_diameter), ("cage.width", cg.width)):
         if val is None:
             raise CaseError(case.source, key, "required by the dynamic model")
     if not math.isfinite(g.pocket_clearance) or g.pocket_clearance <= 0:
         raise CaseError(case.source, "cage.pocket_diameter", "the dynamic model needs a pocket clearance > 0")
-    if not math.isfinite(g.guide_clearance) or g.guide_clearance <= 0:
-        raise CaseError(case.source, "bearing.outer_land_diameter",
-                        "the dynamic model needs a positive cage guide clearance (outer-ring land diameter > cage outside diameter)")
+    lands = _guide_lands(case, opt["land_length"])
     Z, D, dm, fi, fo, a0 = g.Z, g.D, g.dm, g.fi, g.fo, g.alpha0
     mb, Ib = g.ball_mass, g.ball_inertia
     mat = case.materials
@@ -201,7 +197,9 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
         rho_e=mixture_density(case.lubricant.density, case.lubricant.oil_volume_fraction),
         C_D=opt["drag_coefficient"], v0_D=opt["drag_v0"],
         m_c=g.cage_mass, Ip_c=g.cage_axial_inertia, Id_c=g.cage_diametral_inertia,
-        R_land=0.5 * cg.outside_diameter, L_land=opt["land_length"] or cg.guide_land_width or cg.width, c_land=g.guide_clearance,
+        R_land=lands.radius, L_land=lands.width, c_land=lands.clearance,
+        n_land=lands.count, a_land=abs(lands.offsets[0]) if lands.count else 0.0,
+        guide={"outer_ring": 1.0, "inner_ring": 2.0}.get(lands.guidance, 0.0),
         eps_max=opt["land_eps_max"], K_land=opt["land_contact_K"],
         m_i=g.inner_ring_mass, Ip_i=g.inner_ring_axial_inertia, Id_i=g.inner_ring_diametral_inertia,
         F_x=op.axial_load, F_y=op.radial_load, F_z=op.radial_load_z, M_y=op.moment_y, M_z=op.moment_z,
@@ -218,10 +216,41 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
     layout = StateLayout(Z)
     y0, info = initial_state(case, layout, g, kind=initial)
     hscale = _typical_scales(layout, case)
-    info.update(options=opt, friction=friction, damping=damping, ehl_rolling=ehl_rolling, drag=drag,
+    info.update(guide_lands=lands, options=opt, friction=friction, damping=damping, ehl_rolling=ehl_rolling, drag=drag,
                 oil_viscosity=eta, contact_K_inner=float(ci.K), contact_K_outer=float(co.K), pocket_K=float(cc.K))
     return DynamicModel(case=case, layout=layout, P=p, qu=np.ascontiguousarray(qu), qw=np.ascontiguousarray(qw),
                         y0=y0, hscale=hscale, info=info)
+
+
+def _guide_lands(case, land_length=None):
+    """The case's guide lands (:func:`hsbearing.models.geometry.guide_lands`), checked for the dynamic model.
+
+    ``land_length`` (model option) replaces the width of each land (e.g. ``land_length=11e-3`` with
+    ``cage.guide_land_count = 1``: the single cage-wide film of the model before issue 14).
+    """
+    from dataclasses import replace
+
+    from hsbearing.case import CaseError
+    from hsbearing.models.geometry import GuideLandError, guide_lands
+
+    try:
+        gl = guide_lands(case)
+    except GuideLandError as exc:
+        raise CaseError(case.source, exc.key, exc.message) from None
+    if gl.count == 0:
+        return gl
+    if land_length:  # the films keep reaching the cage faces
+        L = float(land_length)
+        a = 0.5 * max(case.cage.width - L, 0.0)
+        gl = replace(gl, width=L, offsets=(-a, a) if gl.count == 2 else (a,))
+    key = "bearing.outer_land_diameter" if gl.guidance == "outer_ring" else "bearing.inner_land_diameter"
+    if not (math.isfinite(gl.clearance) and gl.clearance > 0 and math.isfinite(gl.radius)):
+        raise CaseError(case.source, key, f"the dynamic model needs the land diameter of the {gl.guidance.replace('_', ' ')} "
+                                          "guidance (a positive guide clearance)")
+    if not (math.isfinite(gl.width) and gl.width > 0):
+        raise CaseError(case.source, "cage.guide_land_width", "cannot derive the land width (give it, or the ring width and "
+                                                               "conformity)")
+    return gl
 
 
 def _typical_scales(layout: StateLayout, case) -> np.ndarray:

@@ -185,13 +185,18 @@ def test_drive_work_equals_dissipation_plus_energy_change(regime):
     D = {s: trap(ds[f"power_loss_{s}"].values) for s in bl.SOURCES}
     E = dy.mechanical_energy(m, res.y)
     assert W > 0.0
-    # the issue asks 1 %; measured 3e-6 (default) and 2.6e-6 (reversed) of W = 0.225 J; the old ring
-    # reactions were off by ~4 W of 10-180 W (docs/power_loss.md), so 1e-4 keeps a wide margin both ways
-    assert abs(W - sum(D.values()) - (E[-1] - E[0])) < 1e-4 * W, (W, D, E[-1] - E[0])
+    # the issue asks 1 %; measured 3e-6 (default) and 2.6e-6 (reversed) of W = 0.225 J with the single
+    # 11 mm land, 1.2e-4 of W = 0.194 J with the two 1.8 mm lands (faster land-power transients: the
+    # trapezoidal rule on 10 us samples; the instantaneous balance above is exact to 1e-7).  The old ring
+    # reactions were off by ~4 W of 10-180 W (2-40 %, docs/power_loss.md), so 1e-3 keeps a wide margin both ways
+    assert abs(W - sum(D.values()) - (E[-1] - E[0])) < 1e-3 * W, (W, D, E[-1] - E[0])
     H = bl.angular_momentum_x(m, res.y)
     J = _impulse(m, res.y, t)
     Jd = trap(ds.drive_torque.values)
-    assert abs((H[-1] - H[0]) - J[-1]) < 1e-4 * abs(Jd), (H[-1] - H[0], J[-1], Jd)  # measured 8e-6
+    # measured 8e-6 with the single land at the cage centre; 7.1e-4 with the two lands at +-a along the cage
+    # axis: they couple the cage tilt into X, where the small-tilt Euler equations hold L_X only to second
+    # order in the tilt (the untilted instantaneous check above is exact to 1e-9)
+    assert abs((H[-1] - H[0]) - J[-1]) < 2e-3 * abs(Jd), (H[-1] - H[0], J[-1], Jd)
 
 
 def test_run_dataset_and_summary_carry_drive_torque_and_power_by_source():

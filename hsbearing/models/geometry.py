@@ -20,7 +20,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Geometry", "derive", "curvature_radii", "describe"]
+__all__ = ["Geometry", "derive", "curvature_radii", "describe", "GuideLands", "GuideLandError", "guide_lands", "groove_width_at"]
 
 
 @dataclass(frozen=True)
@@ -135,6 +135,122 @@ def derive(case) -> Geometry:
     )
 
 
+class GuideLandError(ValueError):
+    """A bad combination of guide-land keys; ``key`` names the case key (``table.key``)."""
+
+    def __init__(self, key: str, message: str):
+        super().__init__(f"{key}: {message}")
+        self.key, self.message = key, message
+
+
+@dataclass(frozen=True)
+class GuideLands:
+    """The cage guide lands of a case (SI).  ``count`` 0 for a ball-piloted cage (no land film)."""
+
+    guidance: str  #: outer_ring, inner_ring or ball
+    count: int  #: number of lands (separate films, forces add)
+    width: float  #: axial width of one land film [m]
+    diameter: float  #: land diameter [m] (nan for ball guidance)
+    radius: float  #: film radius = cage guide-surface radius [m]
+    clearance: float  #: radial guide clearance [m]
+    offsets: tuple  #: axial positions of the land centres from the cage mid-plane [m]
+    groove_width: float  #: raceway-groove width at the land diameter [m] (nan if not computable)
+    notes: tuple  #: where each value comes from (``hsbearing check``)
+
+
+def groove_width_at(diameter, groove_radius, groove_centre_radius):
+    """Axial width [m] of a circular groove (radius r, centre at radius rho) at the diameter d: 2 sqrt(r^2 - (d/2 - rho)^2).
+
+    nan when the groove does not reach that diameter.  The groove is the circle of the
+    groove cross-section (Harris & Kotzalas, 5th ed., Vol. 1, Ch. 2, Fig. 2.6).
+    """
+    q = groove_radius**2 - (0.5 * diameter - groove_centre_radius) ** 2
+    return 2.0 * math.sqrt(q) if q > 0 else float("nan")
+
+
+def guide_lands(case) -> GuideLands:
+    """Guide lands of the cage from the case: guidance, count, width, diameter, clearance, axial positions.
+
+    Defaults (each overridable in ``[cage]``):
+
+    * ``guide_land_count``: 2 for ring guidance -- one land on each side of the raceway groove;
+    * ``guide_land_width``: the axial overlap of the cage guide surface with the land on one side,
+      min(ring width, cage width)/2 - (groove width at the land diameter)/2, the groove (radius
+      f D, centre at d_o/2 - f D for the outer ring, d_i/2 + f D for the inner ring; raceway
+      diameters of :func:`derive`) taken symmetric about the cage mid-plane; the ring width is the
+      bearing ``width`` (the cage width if absent);
+    * land positions: each land film reaches the cage face, centres at +-(cage width - land width)/2
+      (one land: on the +X side).
+
+    Raises :class:`GuideLandError` naming the key for a land inside the cage, lands wider than the
+    ring or the cage, or a groove that leaves no land under the cage.
+    """
+    b, c = case.bearing, case.cage
+    nan = float("nan")
+    guidance = c.guidance
+    if guidance == "ball":
+        if c.guide_land_count not in (None, 0):
+            raise GuideLandError("cage.guide_land_count", "a ball-piloted cage (guidance = \"ball\") has no guide land")
+        return GuideLands("ball", 0, 0.0, nan, nan, nan, (), nan, ("ball-piloted: no land film",))
+    g = derive(case)
+    notes = []
+    if guidance == "outer_ring":
+        dkey, d_land, surf, surf_key = "bearing.outer_land_diameter", b.outer_land_diameter, c.outside_diameter, "cage.outside_diameter"
+        if d_land is not None and surf is not None and d_land <= surf:
+            raise GuideLandError(dkey, f"outer-ring land diameter {d_land*1e3:g} mm is not larger than the cage outside "
+                                       f"diameter {surf*1e3:g} mm (land inside the cage)")
+        if d_land is not None and d_land >= g.do:
+            raise GuideLandError(dkey, f"outer-ring land diameter {d_land*1e3:g} mm is not smaller than the outer raceway "
+                                       f"diameter {g.do*1e3:.4g} mm")
+        rho, r_g = 0.5 * g.do - g.ro, g.ro
+    else:
+        dkey, d_land, surf, surf_key = "bearing.inner_land_diameter", b.inner_land_diameter, c.bore_diameter, "cage.bore_diameter"
+        if d_land is not None and surf is not None and d_land >= surf:
+            raise GuideLandError(dkey, f"inner-ring land diameter {d_land*1e3:g} mm is not smaller than the cage bore "
+                                       f"{surf*1e3:g} mm (land inside the cage)")
+        if d_land is not None and d_land <= g.di:
+            raise GuideLandError(dkey, f"inner-ring land diameter {d_land*1e3:g} mm is not larger than the inner raceway "
+                                       f"diameter {g.di*1e3:.4g} mm")
+        rho, r_g = 0.5 * g.di + g.ri, g.ri
+    clearance = abs(0.5 * (d_land - surf)) if (d_land is not None and surf is not None) else nan
+    radius = 0.5 * surf if surf is not None else nan
+    gw = groove_width_at(d_land, r_g, rho) if d_land is not None else nan
+    w_cage = c.width
+    w_ring = b.width if b.width is not None else w_cage
+    span = min(w for w in (w_cage, w_ring) if w is not None) if (w_cage or w_ring) else nan
+    count = c.guide_land_count if c.guide_land_count is not None else 2
+    notes.append(f"{count} land(s)" + (" (default: one each side of the groove)" if c.guide_land_count is None else " (case)"))
+    if c.guide_land_width is not None:
+        width = c.guide_land_width
+        notes.append(f"land width {width*1e3:.4g} mm (case)")
+    else:
+        width = 0.5 * (span - gw) if math.isfinite(gw) and math.isfinite(span) else nan
+        if math.isfinite(width) and width <= 0:
+            raise GuideLandError("cage.guide_land_width",
+                                 f"the groove ({gw*1e3:.4g} mm wide at the land diameter {d_land*1e3:g} mm) covers the whole "
+                                 f"{span*1e3:g} mm of cage/ring overlap: no land under the cage; give the land width")
+        if math.isfinite(width):
+            notes.append(f"land width {width*1e3:.4g} mm (default: (min(ring width {w_ring*1e3:g}, cage width "
+                         f"{w_cage*1e3:g} mm) - groove width {gw*1e3:.4g} mm at the land diameter) / 2)")
+    if math.isfinite(width) and math.isfinite(span) and math.isfinite(gw) and width > 0.5 * (span - gw) * (1 + 1e-9):
+        raise GuideLandError("cage.guide_land_width",
+                             f"a land of {width*1e3:g} mm does not fit beside the {gw*1e3:.4g} mm groove (at the land diameter) in "
+                             f"the {span*1e3:g} mm the cage overlaps the ring: at most {0.5*(span-gw)*1e3:.4g} mm per land "
+                             f"(guide_land_width is now the width of ONE land; before guide_land_count it was the whole film length)")
+    if math.isfinite(width) and math.isfinite(span) and count * width > span * (1 + 1e-12):
+        raise GuideLandError("cage.guide_land_width",
+                             f"{count} land(s) of {width*1e3:g} mm are wider than the {span*1e3:g} mm the cage overlaps the ring "
+                             f"(guide_land_width is the width of ONE land; it was the whole film length before "
+                             f"guide_land_count existed: give guide_land_count = 1 for a single film)")
+    if math.isfinite(width) and w_cage is not None:
+        a = 0.5 * (w_cage - width)
+        offsets = (-a, a) if count == 2 else (a,)
+    else:
+        offsets = (0.0,) * count
+    return GuideLands(guidance, count, width, d_land if d_land is not None else nan, radius, clearance, offsets, gw,
+                      tuple(notes))
+
+
 def describe(case) -> list[str]:
     """Human-readable lines of the derived geometry (``hsbearing check``)."""
     mm, deg = 1e3, 180 / math.pi
@@ -166,4 +282,16 @@ def describe(case) -> list[str]:
         lines.append(f"pocket clearance {g.pocket_clearance*1e6:.4g} um (radial)")
     if math.isfinite(g.guide_clearance):
         lines.append(f"cage guide clearance {g.guide_clearance*1e6:.4g} um (radial, {case.cage.guidance})")
+    if case.cage is not None and case.system in ("angular_contact", "deep_groove"):
+        try:
+            gl = guide_lands(case)
+        except GuideLandError:
+            gl = None
+        if gl is not None and gl.count:
+            pos = ", ".join(f"{x*mm:+.4g}" for x in gl.offsets)
+            lines.append(f"guide lands ({gl.guidance}): {gl.count} x {gl.width*mm:.4g} mm on diameter {gl.diameter*mm:.4g} mm, "
+                         f"centres at {pos} mm from the cage mid-plane; groove width there {gl.groove_width*mm:.4g} mm")
+            lines.append("  from: " + "; ".join(gl.notes))
+        elif gl is not None:
+            lines.append("guide lands: none (ball-piloted cage)")
     return lines

@@ -64,8 +64,8 @@ def _invalidate_stale_cache() -> None:
 _invalidate_stale_cache()
 
 from hsbearing.models.ball import ball_equations_of_motion, ehl_rolling_force, groove_contact, hertz_normal_load
-from hsbearing.models.cage import (cage_equations_of_motion, cage_generalised_moments, cage_orientation, guide_land_forces, guide_land_torque,
-                                   pocket_friction_factor, pocket_normal_force, smooth_eccentricity)
+from hsbearing.models.cage import (cage_equations_of_motion, cage_generalised_moments, cage_orientation, guide_land_forces, guide_land_power,
+                                   guide_land_torque, pocket_friction_factor, pocket_normal_force, smooth_eccentricity)
 from hsbearing.models.drag import ball_drag_force
 from hsbearing.models.power import couple_power, elastic_energy_hertz, normal_damping_power, sliding_power
 from hsbearing.models.ring import (inner_groove_centre, ring_equations_of_motion, tilt_generalised_moments,
@@ -76,14 +76,17 @@ from hsbearing.models.traction.zhang2016 import coefficients_nb, mu_nb
 _names = """Z D m_b I_b rho_i g_i off_i rho_o g_o off_o K_i K_o cd_i cd_o acoef_i acoef_o
 omega_i omega_o Ep Rx_i Rx_o k_i k_o eta_in alpha T_K law_id U_eps s_eps friction damping dm
 c_p K_c eta_film Rsq_c h_min mu_c v0_c rho_e C_D v0_D m_c Ip_c Id_c R_land L_land c_land eps_max
-K_land m_i Ip_i Id_i F_x F_y F_z M_y M_z ehl drag e_eps grav""".split()
+K_land m_i Ip_i Id_i F_x F_y F_z M_y M_z ehl drag e_eps grav
+n_land a_land guide""".split()
 P_INDEX = {n: i for i, n in enumerate(_names)}
 N_PARAMS = len(_names)
 (P_Z, P_D, P_MB, P_IB, P_RHOI, P_GI, P_OFFI, P_RHOO, P_GO, P_OFFO, P_KI, P_KO, P_CDI, P_CDO, P_ACI, P_ACO,
  P_WI, P_WO, P_EP, P_RXI, P_RXO, P_KEI, P_KEO, P_ETAIN, P_ALPHA, P_TK, P_LAW, P_UEPS, P_SEPS, P_FRIC, P_DAMP, P_DM,
  P_CP, P_KC, P_ETAF, P_RSQC, P_HMIN, P_MUC, P_V0C, P_RHOE, P_CDRAG, P_V0D, P_MC, P_IPC, P_IDC, P_RLAND, P_LLAND,
  P_CLAND, P_EPSMAX, P_KLAND, P_MI, P_IPI, P_IDI, P_FX, P_FY, P_FZ, P_MY, P_MZ, P_EHL, P_DRAG, P_EEPS,
- P_GRAV) = range(N_PARAMS)
+ P_GRAV, P_NLAND, P_ALAND, P_GUIDE) = range(N_PARAMS)
+# guide lands: n_land films of width L_land each (0: ball-piloted), centred at +a_land (one land) or +-a_land
+# (two) along the cage axis from its mid-plane; guide = 1 outer ring, 2 inner ring (land speed and reaction)
 
 # contribution columns: forces/moments on the inner ring (inertial X, Y, Z; moments about its centre)
 # and on the cage (inertial; moments about the cage centre)
@@ -448,6 +451,91 @@ def ball_loop(y, P, qu, qw, ydot, contrib, aux, want_aux):
 
 
 @njit(cache=True)
+def guide_land_loads(y, P, Rc, wcx, wcy, wcz):
+    """Loads of the guide lands on the cage: one short-width film per land + elastic rub beyond the clearance.
+
+    Land k sits at a_k = +a_land (and -a_land for two lands) along the cage axis e = R_c e_x; its film sees
+    the offset of that axis point from the land centre (outer ring: the origin; inner ring: the ring
+    centre) and its velocity v_c + omega_c x (a_k e) -- so tilting the cage loads the two lands
+    differently and the films resist the tilt.  Forces and Petroff torques add over the lands
+    (:func:`~hsbearing.models.cage.guide_land_forces`, :func:`~hsbearing.models.cage.guide_land_torque`);
+    the film pressure acts through the cage axis, so its moment about the cage centre is a_k e x F_k.
+
+    Returns (F_y, F_z [N], M_x along the cage axis [N m], (M_x, M_y, M_z) of the axial offsets [N m],
+    reaction moment about X on the land's ring [N m] (inner guidance, else 0), dissipated power [W],
+    elastic energy of the rub [J]).
+    """
+    Z = int(P[P_Z])
+    cg = 9 * Z
+    rg = cg + 12
+    nl = int(P[P_NLAND])
+    Fly = Flz = Mlx = Mtx = Mty = Mtz = Mring = Pland = Uland = 0.0
+    if nl <= 0:
+        return Fly, Flz, Mlx, Mtx, Mty, Mtz, Mring, Pland, Uland
+    yc, zc, vyc, vzc, phd = y[cg + 1], y[cg + 2], y[cg + 7], y[cg + 8], y[cg + 9]
+    if P[P_GUIDE] == 2.0:  # inner ring: land centre = ring centre, land speed = ring speed
+        yr, zr, vyr, vzr, wl = y[rg + 1], y[rg + 2], y[rg + 6], y[rg + 7], P[P_WI]
+    else:
+        yr, zr, vyr, vzr, wl = 0.0, 0.0, 0.0, 0.0, P[P_WO]
+    cl = P[P_CLAND]
+    R = P[P_RLAND]
+    Kl = P[P_KLAND] / nl  # the rub stiffness is shared by the lands (unchanged for an untilted cage)
+    ex, ey, ez = Rc[0], Rc[3], Rc[6]
+    ew = ex * wcx + ey * wcy + ez * wcz  # cage angular velocity along its axis
+    for k in range(nl):
+        a = P[P_ALAND] if k == 0 else -P[P_ALAND]
+        py = yc + a * ey - yr
+        pz = zc + a * ez - zr
+        vy = vyc + a * (wcz * ex - wcx * ez) - vyr
+        vz = vzc + a * (wcx * ey - wcy * ex) - vzr
+        e = math.sqrt(py * py + pz * pz + (P[P_EEPS] * 1e-2) ** 2)
+        uy, uz = py / e, pz / e
+        ed = (py * vy + pz * vz) / e
+        whirl = (py * vz - pz * vy) / (e * e)
+        eps = smooth_eccentricity(e / cl, P[P_EPSMAX])
+        fy = fz = mx = 0.0
+        if P[P_DAMP] > 0.0:
+            Fr, Ft = guide_land_forces(eps, ed / cl, phd + wl, whirl, P[P_ETAF], R, P[P_LLAND], cl)
+            fy = Fr * uy - Ft * uz
+            fz = Fr * uz + Ft * uy
+        else:
+            Fr = Ft = 0.0
+        if P[P_FRIC] > 0.0:
+            mx = guide_land_torque(eps, phd - wl, P[P_ETAF], R, P[P_LLAND], cl)
+        # film dissipation: the Petroff moment acts along the cage axis e, so its power uses e.omega_c on
+        # the cage and e_x omega_land on the land (exact for a tilted cage, as the cage equations use it)
+        Pland += guide_land_power(Fr, Ft, e, ed, whirl, 0.0, 0.0, wl) - mx * (ew - wl * ex)
+        Mring += -mx - e * Ft  # the film's moment on the land (massless film)
+        if e > cl:
+            # elastic rub of the cage on the land (Hertz-like penalty), with regularised Coulomb friction
+            pen = e - cl
+            Fe = Kl * pen * math.sqrt(pen)
+            Uland += 0.4 * Kl * pen * pen * math.sqrt(pen)  # elastic energy 2/5 K pen^2.5
+            fy -= Fe * uy
+            fz -= Fe * uz
+            if P[P_FRIC] > 0.0:
+                # sliding speed of the cage surface on the land: tangential speed of the axis point relative to
+                # the land material there (omega_land e), plus the cage's spin relative to the land times R
+                vt = -vy * uz + vz * uy - wl * e + (ew - wl * ex) * R
+                ff = -Fe * pocket_friction_factor(vt, P[P_MUC], P[P_V0C]) * vt
+                fy += -ff * uz
+                fz += ff * uy
+                mx += ff * R
+                Pland -= ff * vt
+                Mring -= ff * R
+        Fly += fy
+        Flz += fz
+        Mlx += mx
+        # moment of the land force (through the axis point a e) about the cage centre: a e x (0, fy, fz)
+        Mtx += a * (ey * fz - ez * fy)
+        Mty += -a * ex * fz
+        Mtz += a * ex * fy
+    if P[P_GUIDE] != 2.0:
+        Mring = 0.0
+    return Fly, Flz, Mlx, Mtx, Mty, Mtz, Mring, Pland, Uland
+
+
+@njit(cache=True)
 def global_rows(y, P, csum, ydot, gaux):
     """Cage and inner-ring rows of ydot from the summed ball contributions ``csum`` (Eqs. 11-21)."""
     Z = int(P[P_Z])
@@ -455,52 +543,20 @@ def global_rows(y, P, csum, ydot, gaux):
     rg = cg + 12
     yc, zc = y[cg + 1], y[cg + 2]
     vyc, vzc, phd, psyd, pszd = y[cg + 7], y[cg + 8], y[cg + 9], y[cg + 10], y[cg + 11]
-    # guide land (outer ring): short journal bearing film + elastic rub
-    cl = P[P_CLAND]
-    e = math.sqrt(yc * yc + zc * zc + (P[P_EEPS] * 1e-2) ** 2)
-    uy, uz = yc / e, zc / e
-    Fly = Flz = Mlx = 0.0
-    Fe = 0.0
-    if P[P_DAMP] > 0.0:
-        eps = smooth_eccentricity(e / cl, P[P_EPSMAX])
-        ed = (yc * vyc + zc * vzc) / e
-        whirl = (yc * vzc - zc * vyc) / (e * e)
-        Fr, Ft = guide_land_forces(eps, ed / cl, phd + P[P_WO], whirl, P[P_ETAF], P[P_RLAND], P[P_LLAND], cl)
-        Fly += Fr * uy - Ft * uz
-        Flz += Fr * uz + Ft * uy
-    if P[P_FRIC] > 0.0:
-        eps = smooth_eccentricity(e / cl, P[P_EPSMAX])
-        Mlx = guide_land_torque(eps, phd - P[P_WO], P[P_ETAF], P[P_RLAND], P[P_LLAND], cl)
-    if e > cl:
-        # elastic rub of the cage on the land (Hertz-like penalty), with regularised Coulomb friction
-        pen = e - cl
-        Fe = P[P_KLAND] * pen * math.sqrt(pen)
-        Fly -= Fe * uy
-        Flz -= Fe * uz
-        if P[P_FRIC] > 0.0:
-            R = P[P_RLAND]
-            vt = -vyc * uz + vzc * uy + (phd - P[P_WO]) * R  # sliding speed of the cage surface on the land
-            ff = -Fe * pocket_friction_factor(vt, P[P_MUC], P[P_V0C]) * vt
-            Fly += -ff * uz
-            Flz += ff * uy
-            Mlx += ff * R
+    Rc, (wcx, wcy, wcz), Jc = cage_orientation(y[cg + 3], y[cg + 4], y[cg + 5], phd, psyd, pszd)
+    Fly, Flz, Mlx, Mtx, Mty, Mtz, Mring, Pland, Uland = guide_land_loads(y, P, Rc, wcx, wcy, wcz)
+    inner_guided = P[P_GUIDE] == 2.0
     gaux[0] = Fly
     gaux[1] = Flz
     gaux[2] = Mlx
-    gaux[3] = csum[C_RMX]
-    Rc, (wcx, wcy, wcz), Jc = cage_orientation(y[cg + 3], y[cg + 4], y[cg + 5], phd, psyd, pszd)
-    # guide land: the land actions (film forces through the cage centre, moment Mlx along the cage axis,
-    # rub) react on the outer ring, which turns at omega_o about X.  Dissipation = minus the work rate of
-    # the non-elastic part of the pair at the relative velocity (models.power); the elastic rub -Fe u is
-    # conservative (energy 2/5 K_land (e - c)^2.5)
-    wo = P[P_WO]
-    gaux[6] = (sliding_power(0.0, Fly + Fe * uy, Flz + Fe * uz, 0.0, vyc + wo * zc, vzc - wo * yc)
-               + couple_power(Mlx * Rc[0], Mlx * Rc[3], Mlx * Rc[6], wcx - wo, wcy, wcz))
-    pen = e - cl
-    gaux[7] = 0.4 * P[P_KLAND] * pen * pen * math.sqrt(pen) if pen > 0.0 else 0.0
-    gaux[8] = yc * Flz - zc * Fly + Mlx * Rc[0]
-    Qph, Qpy, Qpz = cage_generalised_moments(csum[C_CMX] + Mlx * Rc[0], csum[C_CMY] + Mlx * Rc[3],
-                                             csum[C_CMZ] + Mlx * Rc[6], Rc, Jc)
+    gaux[3] = csum[C_RMX] + Mring
+    # land dissipation (film + rub friction, models.cage.guide_land_power), elastic rub energy, and the moment
+    # about X (through the origin) of the land actions on the cage: c x F + the lands' offsets + Petroff torque
+    gaux[6] = Pland
+    gaux[7] = Uland
+    gaux[8] = yc * Flz - zc * Fly + Mtx + Mlx * Rc[0]
+    Qph, Qpy, Qpz = cage_generalised_moments(csum[C_CMX] + Mlx * Rc[0] + Mtx, csum[C_CMY] + Mlx * Rc[3] + Mty,
+                                             csum[C_CMZ] + Mlx * Rc[6] + Mtz, Rc, Jc)
     a = cage_equations_of_motion(csum[C_CFX], csum[C_CFY] + Fly - P[P_MC] * P[P_GRAV], csum[C_CFZ] + Flz, Qph,
                                  Qpy, Qpz, phd, psyd, pszd, P[P_MC], P[P_IPC], P[P_IDC])
     for k in range(6):
@@ -510,13 +566,16 @@ def global_rows(y, P, csum, ydot, gaux):
     # drive: the moment along the ring's own axis e = R e_x that holds the prescribed spin against the
     # ball actions and the external moment; its power at the ring's angular velocity omega_i e + J beta'
     ex, ey, ez = Rm[0], Rm[3], Rm[6]
-    Td = -(csum[C_RMX] * ex + (P[P_MY] + csum[C_RMY]) * ey + (P[P_MZ] + csum[C_RMZ]) * ez)
+    Td = -((csum[C_RMX] + Mring) * ex + (P[P_MY] + csum[C_RMY]) * ey + (P[P_MZ] + csum[C_RMZ]) * ez)
     byd, bzd = y[rg + 8], y[rg + 9]
     we = P[P_WI] + ex * (Jm[1] * byd + Jm[2] * bzd) + ey * (Jm[4] * byd + Jm[5] * bzd) + ez * (Jm[7] * byd + Jm[8] * bzd)
     gaux[4] = Td
     gaux[5] = Td * we
     Qy, Qz = tilt_generalised_moments(csum[C_RMX], P[P_MY] + csum[C_RMY], P[P_MZ] + csum[C_RMZ], Rm, Jm)
-    b = ring_equations_of_motion(P[P_FX] + csum[C_RFX], P[P_FY] + csum[C_RFY] - P[P_MI] * P[P_GRAV], P[P_FZ] + csum[C_RFZ],
+    Rly = Rlz = 0.0
+    if inner_guided:  # the land film's reaction on the inner ring (its moment about the ring centre is neglected)
+        Rly, Rlz = -Fly, -Flz
+    b = ring_equations_of_motion(P[P_FX] + csum[C_RFX], P[P_FY] + csum[C_RFY] + Rly - P[P_MI] * P[P_GRAV], P[P_FZ] + csum[C_RFZ] + Rlz,
                                  Qy, Qz, P[P_WI], y[rg + 8], y[rg + 9], P[P_MI], P[P_IPI], P[P_IDI])
     for k in range(5):
         ydot[rg + k] = y[rg + 5 + k]
