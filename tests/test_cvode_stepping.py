@@ -107,3 +107,19 @@ def test_bearing_model_same_trajectory_and_statistics():
     assert np.array_equal(a.y, b.y)
     assert a.stats["python_counted_steps"] == b.stats["steps"] > 100
     assert (a.stats["rhs_evals"], a.stats["jac_evals"]) == (b.stats["rhs_evals"], b.stats["jac_evals"])
+
+
+def test_cvode_settings_reach_cvode():
+    """A CVODE optional input set through the solver memory changes what CVODE does: LSetupFrequency = 1 (msbp)
+    makes CVODE refactor at every step (default: at most every 20 steps), with a solution of the same accuracy;
+    unknown names are refused."""
+    t = np.linspace(0.0, 3000.0, 31)
+    a = integrate(vdp, [2.0, 0.0], t, rtol=1e-6, atol=1e-9, jacfn=vdp_jac)
+    b = integrate(vdp, [2.0, 0.0], t, rtol=1e-6, atol=1e-9, jacfn=vdp_jac, cvode_settings={"LSetupFrequency": 1})
+    assert a.success and b.success
+    assert a.stats["linear_solver_setups"] < a.stats["steps"] / 2
+    assert b.stats["linear_solver_setups"] >= b.stats["steps"]
+    assert b.stats["cvode_settings"] == "LSetupFrequency=1"
+    assert np.max(np.abs(a.y[:, 0] - b.y[:, 0])) < 1e-3
+    with pytest.raises(ValueError, match="unknown CVODE setting"):
+        integrate(vdp, [2.0, 0.0], t, cvode_settings={"MaxSpeed": 1})

@@ -162,6 +162,32 @@ class _CvodeCounters:
                 "initial_step": h0.value}
 
 
+#: CVODE optional inputs that :func:`integrate` can set through ``cvode_settings`` (name -> C argument type)
+CVODE_SETTINGS = {
+    "LSetupFrequency": ctypes.c_long,  # msbp: max steps between linear-solver setups (LU), default 20
+    "JacEvalFrequency": ctypes.c_long,  # msbj: max steps between Jacobian evaluations, default 51
+    "DeltaGammaMaxLSetup": ctypes.c_double,  # dgmax_lsetup: |gamma/gamma_p - 1| forcing a setup, default 0.2
+    "DeltaGammaMaxBadJac": ctypes.c_double,  # dgmax_jbad: gamma ratio beyond which J is judged bad, default 0.2
+    "NonlinConvCoef": ctypes.c_double,  # Newton convergence coefficient, default 0.1
+}
+
+
+def _apply_settings(counters: "_CvodeCounters | None", settings: dict | None) -> None:
+    if not settings:
+        return
+    if counters is None:
+        raise RuntimeError("cvode_settings need CVODE's solver memory, which cannot be reached with "
+                           f"scikit-sundae {sun.__version__}")
+    for name, value in settings.items():
+        if name not in CVODE_SETTINGS:
+            raise ValueError(f"unknown CVODE setting {name!r}; known: {', '.join(CVODE_SETTINGS)}")
+        fn = getattr(counters.lib, f"CVodeSet{name}")
+        fn.argtypes = [ctypes.c_void_p, CVODE_SETTINGS[name]]
+        flag = fn(counters.mem, CVODE_SETTINGS[name](value))
+        if flag < 0:
+            raise ValueError(f"CVodeSet{name}({value!r}) failed with flag {flag}")
+
+
 def counters_available() -> bool:
     """True if CVODE's own counters can be read (normal-mode stepping available)."""
     solver = sun.cvode.CVODE(lambda t, y, yp: None)
@@ -200,6 +226,7 @@ def integrate(
     wall_limit: float | None = None,
     callback: Callable | None = None,
     stepping: str = "auto",
+    cvode_settings: dict | None = None,
 ) -> IntegrationResult:
     """Integrate ``rhs(t, y, ydot)`` (in place) from ``t_eval[0]`` through ``t_eval``.
 
@@ -220,6 +247,8 @@ def integrate(
     stepping : "normal" (one CVODE call per output interval, statistics from CVODE's counters), "onestep"
         (one Python round trip per internal step, steps counted in Python) or "auto" (normal when CVODE's
         counters can be read, else onestep).  Both take the same internal steps.
+    cvode_settings : optional CVODE inputs scikit-sundae does not expose, ``{name: value}`` with names from
+        :data:`CVODE_SETTINGS` (``CVodeSet<name>``), e.g. ``{"LSetupFrequency": 50}``; default: CVODE's defaults.
     """
     if stepping not in ("auto", "normal", "onestep"):
         raise ValueError(f"stepping must be 'auto', 'normal' or 'onestep', got {stepping!r}")
@@ -257,6 +286,7 @@ def integrate(
         if counters is None and stepping == "normal":
             raise RuntimeError("normal-mode stepping needs CVODE's counters, which cannot be read with "
                                f"scikit-sundae {sun.__version__}; use stepping='onestep'")
+        _apply_settings(counters, cvode_settings)
         normal = counters is not None and stepping != "onestep"
         loop = _normal_loop if normal else _onestep_loop
         loop(solver, counters, t_eval, ys, pr, wall0, wall_limit, callback, bar)
@@ -279,6 +309,8 @@ def integrate(
         "jacobian": "user" if jacfn is not None else "CVODE finite differences",
         "linear_solver": linsolver,
     }
+    if cvode_settings:
+        stats["cvode_settings"] = ", ".join(f"{k}={v}" for k, v in cvode_settings.items())
     if counters is not None and not normal and pr.nfev and counters.nfev() != pr.nfev:
         counters = None  # (iii) of _CvodeCounters failed: keep only the Python count
     if counters is not None:
