@@ -41,6 +41,7 @@ from __future__ import annotations
 
 import ctypes
 import glob
+import math
 import os
 import time as _time
 from dataclasses import dataclass, field
@@ -350,7 +351,7 @@ def _normal_loop(solver, counters, t_eval, ys, pr, wall0, wall_limit, callback, 
         if pr.t_cur != t_out:  # CVODE returns exactly tout (interpolated) or tstop = t_end
             raise _Failure(pr.t_cur, f"CVODE returned at t = {pr.t_cur!r} instead of the output time {t_out!r}")
         ys[k] = r.y
-        if not np.all(np.isfinite(ys[k])):
+        if not math.isfinite(ys[k].sum()):  # one reduction (a third of np.all(np.isfinite()))
             raise _Failure(t_out, "non-finite state")
         pr.k_done = k + 1
         if callback is not None:
@@ -384,7 +385,7 @@ def _onestep_loop(solver, counters, t_eval, ys, pr, wall0, wall_limit, callback,
             if ro.status < 0:
                 raise _Failure(pr.t_cur, ro.message)
             ys[k] = ro.y
-        if not np.all(np.isfinite(ys[k])):
+        if not math.isfinite(ys[k].sum()):  # one reduction (a third of np.all(np.isfinite()))
             raise _Failure(t_out, "non-finite state")
         pr.k_done = k + 1
         if callback is not None:
