@@ -45,11 +45,11 @@ def _timeit(fn, n):
 
 
 def _best(fn, repeat):
-    """Run ``fn`` (returning (result, wall, cpu)) ``repeat`` times; keep the run with the least wall time."""
+    """Run ``fn`` (returning (result, wall, cpu)) ``repeat`` times; keep the run with the least CPU time."""
     best = None
     for _ in range(repeat):
         r = fn()
-        if best is None or r[1] < best[1]:
+        if best is None or r[2] < best[2]:
             best = r
     return best
 
