@@ -123,3 +123,14 @@ def test_cvode_settings_reach_cvode():
     assert np.max(np.abs(a.y[:, 0] - b.y[:, 0])) < 1e-3
     with pytest.raises(ValueError, match="unknown CVODE setting"):
         integrate(vdp, [2.0, 0.0], t, cvode_settings={"MaxSpeed": 1})
+
+
+def test_long_output_interval_resumes_after_max_num_steps():
+    """One output interval needing more internal steps than max_num_steps: normal mode resumes (CV_TOO_MUCH_WORK)
+    and ends with the same steps and state as one-step mode, which has no per-interval limit."""
+    t = np.array([0.0, 3000.0])
+    a = integrate(vdp, [2.0, 0.0], t, rtol=1e-6, atol=1e-9, jacfn=vdp_jac, max_num_steps=50, stepping="onestep")
+    b = integrate(vdp, [2.0, 0.0], t, rtol=1e-6, atol=1e-9, jacfn=vdp_jac, max_num_steps=50, stepping="normal")
+    assert a.success and b.success
+    assert b.stats["steps"] > 10 * 50
+    assert b.stats["steps"] == a.stats["steps"] and np.array_equal(a.y, b.y)

@@ -239,7 +239,8 @@ def integrate(
     rtol, atol : CVODE tolerances (``atol`` scalar or per-state array).
     jacfn : optional ``jacfn(t, y, ydot, JJ)`` filling the dense (N, N) Jacobian.
     max_step, first_step, max_order : CVODE options (0 = CVODE default).
-    max_num_steps : internal steps allowed between two outputs.
+    max_num_steps : internal steps per CVODE call (normal mode: a call that takes this many steps without reaching
+        the output time is resumed while time advances, with the wall limit checked in between).
     linsolver : scikit-sundae linear solver ("dense": SUNDIALS' own dense LU, "lapackdense": LAPACK).
     progress : show a tqdm bar of simulated time with ETA (stderr), updated at each output.
     wall_limit : stop (status "failed ... wall-time limit") after this many seconds; checked at each output in
@@ -345,6 +346,14 @@ def _normal_loop(solver, counters, t_eval, ys, pr, wall0, wall_limit, callback, 
     for k in range(1, t_eval.size):
         t_out = float(t_eval[k])
         r = solver.step(t_out, method="normal", tstop=t_end)
+        # CV_TOO_MUCH_WORK: max_num_steps internal steps without reaching t_out.  Resume while time advances (the
+        # one-step path has no per-interval limit either; the same steps follow); the wall limit is checked at
+        # every resumption, so a long output interval is not an unchecked stretch.
+        while r.status == _CV_TOO_MUCH_WORK and np.isfinite(r.t) and float(r.t) > pr.t_cur:
+            pr.t_cur = float(r.t)
+            if wall_limit is not None and _time.perf_counter() - wall0 > wall_limit:
+                raise _Failure(pr.t_cur, f"wall-time limit of {wall_limit:g} s reached")
+            r = solver.step(t_out, method="normal", tstop=t_end)
         if r.status < 0 or not np.isfinite(r.t):
             raise _Failure(float(r.t) if np.isfinite(r.t) else pr.t_cur, r.message)
         pr.t_cur = float(r.t)
@@ -392,6 +401,9 @@ def _onestep_loop(solver, counters, t_eval, ys, pr, wall0, wall_limit, callback,
             callback(t_out, ys[k])
         if bar is not None:
             bar.update(t_out - float(t_eval[k - 1]))
+
+
+_CV_TOO_MUCH_WORK = -1  # CVODE return flag (cvode.h)
 
 
 class _Failure(Exception):
