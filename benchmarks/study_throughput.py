@@ -1,6 +1,6 @@
 """Study throughput before/after normal-mode stepping (issue 18 item 5): a reduced seed 004 study, in one sitting.
 
-    .venv/bin/python benchmarks/bench_study.py [--tables table5] [--duration 0.05s] [--repeat 2]
+    .venv/bin/python benchmarks/study_throughput.py [--tables table5] [--duration 0.05s] [--repeat 2]
 
 Runs the bundled ``zhang2016`` study restricted to ``--tables`` with a short ``--duration`` per run, in this
 process (``-j 1``, so that the stepping mode can be switched and CPU time measured), once with CVODE in
