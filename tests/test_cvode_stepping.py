@@ -60,8 +60,8 @@ def test_outputs_are_cvode_interpolation_not_step_limited():
 
 
 def test_callback_per_output_and_interrupt_keeps_partial_result():
-    """A KeyboardInterrupt raised inside the rhs (as Ctrl-C would) ends the run with the outputs reached so far;
-    the per-output callback (the progress-bar hook) saw exactly those outputs."""
+    """A KeyboardInterrupt raised inside the rhs (as Ctrl-C would) ends the run with the outputs reached so far,
+    with the tqdm progress bar on; the per-output callback saw exactly those outputs."""
     seen = []
 
     def rhs(t, y, yp):
@@ -69,7 +69,7 @@ def test_callback_per_output_and_interrupt_keeps_partial_result():
             raise KeyboardInterrupt
         yp[0] = -y[0]
 
-    res = integrate(rhs, [1.0], np.linspace(0, 1, 11), rtol=1e-8, atol=1e-12,
+    res = integrate(rhs, [1.0], np.linspace(0, 1, 11), rtol=1e-8, atol=1e-12, progress=True,
                     callback=lambda t, y: seen.append(t))
     assert res.status.endswith("interrupted")
     assert 5 <= res.t.size <= 7
