@@ -110,8 +110,10 @@ class _CvodeCounters:
     ``cdef class CVODE``).  The pointer is accepted only if (i) the scikit-sundae version is one whose layout
     was checked (1.2.x), (ii) CVODE's memory record starts with that same ``SUNContext`` followed by the unit
     roundoff (``CVodeMemRec`` in SUNDIALS 7: ``cv_sunctx``, ``cv_uround``), and (iii) after the first CVODE
-    call, ``CVodeGetNumRhsEvals`` through this pointer equals the count scikit-sundae itself reports.  Otherwise
-    :func:`integrate` falls back to the one-step path, which counts steps in Python.
+    call, ``CVodeGetNumRhsEvals`` through this pointer equals the count scikit-sundae itself reports.  If (i) or
+    (ii) fails, :func:`integrate` falls back to the one-step path, which counts steps in Python; if (iii) fails
+    in normal mode it raises (a layout that passes (i)-(ii) but reads wrong counts is a bug to report, not to
+    hide), in one-step mode the counters are dropped.
     """
 
     _HEADER = ctypes.sizeof(ctypes.c_ssize_t) + ctypes.sizeof(ctypes.c_void_p)  # PyObject_HEAD
@@ -333,6 +335,8 @@ def integrate(
 def _normal_loop(solver, counters, t_eval, ys, pr, wall0, wall_limit, callback, bar):
     """One ``CV_NORMAL`` call per output interval; no Python work per internal step."""
     t_end = float(t_eval[-1])
+    if t_eval.size < 2:
+        return
     # The first call is one internal step towards t_end, as in one-step mode: CVODE's initial step estimate
     # (cvHin) is bounded by the distance to the first tout, so starting with tout = t_eval[1] would choose a
     # different h0 and a different (equally valid) step sequence.  Later calls ask for the output times.
