@@ -60,6 +60,34 @@ def slope_window(oil, W, U, T_C, rho=960.0):
     return tuple(linear_region.low_slip_slope(W, U, eta, alpha, Rx, a, b, h, G) for G in (1e8, 1e9)), float(c.p_max)
 
 
+def isothermal_level(oil, S, W, U, T_C, Lambda, rho=960.0):
+    """Isothermal Eyring / limiting-shear estimate of mu(S) (traction.eyring_limit) on the inner contact."""
+    from hsbearing.models import ehl, hertz, viscosity
+    from hsbearing.models.traction import eyring_limit
+
+    Rx, Ry, Ep, _ = inner_contact()
+    c = hertz.point_contact(Rx, Ry, W, 208e9, 0.3, 208e9, 0.3)
+    eta = float(viscosity.dynamic_viscosity(oil, T_C + 273.15, "walther", density=rho))
+    alpha = traction.OILS[oil].alpha
+    h = float(ehl.film_thickness(W, U, Rx, Ry, Ep, eta, alpha)[0])
+    return eyring_limit.isothermal_mu(S, W, U, eta, alpha, float(c.a), float(c.b), h, Lambda)
+
+
+def level_table():
+    """Default laws (S in percent) against the isothermal Eyring / limiting-shear estimate (Lambda 0.035-0.047)."""
+    _, _, Ep, _ = inner_contact()
+    rows = ["| oil | W [N] | T [degC] | law mu at S = 0.1 % / 1 % / plateau (S = 0.1) | isothermal estimate at S = 0.1 %, "
+            "Lambda 0.035-0.047 | at S = 1 % | plateau / estimate at 1 % (Lambda 0.035) |", "|---|---|---|---|---|---|---|"]
+    for oil in traction.OILS:
+        for W, Tc in itertools.product(REF_W, REF_T):
+            law = traction.get(oil, PERCENT[oil])(np.array([1e-3, 1e-2, 0.1]), W, REF_U, Tc + 273.15, Ep, inner_contact()[0])
+            lo = isothermal_level(oil, np.array([1e-3, 1e-2]), W, REF_U, Tc, 0.035)
+            hi = isothermal_level(oil, np.array([1e-3, 1e-2]), W, REF_U, Tc, 0.047)
+            rows.append(f"| {oil} | {W:g} | {Tc:g} | {law[0]:.4f} / {law[1]:.4f} / {law[2]:.4f} | {lo[0]:.3f}-{hi[0]:.3f} | "
+                        f"{lo[1]:.3f}-{hi[1]:.3f} | {law[2] / lo[1]:.2f} |")
+    return f"U = {REF_U:g} m/s, default-case inner contact, inlet viscosity from the walther law\n\n" + "\n".join(rows)
+
+
 def curve_metrics(oil, law, W, U, T_C):
     """(initial slope B - A C, peak mu, S at the peak) of one law at one operating point."""
     Rx, Ry, Ep, _ = inner_contact()
@@ -155,6 +183,11 @@ def make_figure(path=HERE / "traction.png"):
             los, his = zip(*(slope_window(o, W, U, Tc)[0] for o in traction.OILS))
             lo, hi = min(los), max(his)
             ax.fill_between(S, lo * S, hi * S, color="0.85", lw=0, label="independent linear-region window (all oils)")
+            # isothermal Eyring / limiting-shear upper estimate, Lambda bracket 0.035-0.047 (all oils)
+            ulo = np.min([isothermal_level(o, S, W, U, Tc, 0.035) for o in traction.OILS], axis=0)
+            uhi = np.max([isothermal_level(o, S, W, U, Tc, 0.047) for o in traction.OILS], axis=0)
+            ax.fill_between(S, ulo, uhi, facecolor="none", edgecolor="tab:red", hatch="///", lw=0.0, alpha=0.5,
+                            label="isothermal Eyring / limiting-shear upper estimate, Lambda 0.035-0.047 (all oils)")
             for oil in traction.OILS:
                 ax.plot(S, traction.get(oil, PERCENT[oil])(S, W, U, T, Ep, Rx), "-", color=colors[oil], lw=1.8,
                         label=f"{oil} {PERCENT[oil]} (chosen: S in percent)")
@@ -163,7 +196,7 @@ def make_figure(path=HERE / "traction.png"):
             ax.plot(S, traction.get("4050", "printed")(S, W, U, T, Ep, Rx), ":", color="0.4", lw=1.2,
                     label="4050 Eq. 4 as printed")
             ax.set_xscale(xscale)
-            ax.set_ylim(0, 0.03)
+            ax.set_ylim(0, 0.05)
             ax.grid(alpha=0.3)
             ax.set_xlabel("slide-roll ratio S [-] (fraction)")
             if row == 0:
@@ -175,8 +208,8 @@ def make_figure(path=HERE / "traction.png"):
         axes[1, col].set_ylabel("traction coefficient mu [-]") if col == 0 else None
     handles, labels = axes[0, 0].get_legend_handles_labels()
     fig.legend(handles, labels, loc="lower center", ncol=3, fontsize=8, frameon=False)
-    fig.suptitle("Seed 004 traction laws, default-case inner contact: chosen (solid) vs old (dashed) reading; "
-                 "no published measured points could be retrieved (docs/traction.md)", fontsize=10)
+    fig.suptitle("Seed 004 traction laws, default-case inner contact: chosen (solid) vs old (dashed) reading; no published "
+                 "measured traction points of comparable oils could be retrieved (search log: docs/traction.md)", fontsize=10)
     fig.tight_layout(rect=(0, 0.1, 1, 0.97))
     fig.savefig(path, dpi=100)
     plt.close(fig)
@@ -365,6 +398,7 @@ if __name__ == "__main__":
         print(critical_load_table(), end="\n\n")
         print(eq4_required_groups(), end="\n\n")
         print(oil_comparison_table(), end="\n\n")
+        print(level_table(), end="\n\n")
         print(brute_force_search())
     else:
         print(make_figure())
