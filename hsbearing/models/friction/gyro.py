@@ -1200,35 +1200,13 @@ def study(case, key: str, values, *, duration=None, out_dir=None, jobs: int = 1,
 
 
 def plot_run(ds, path) -> Path:
-    """Figure of a gyro run (like [J] Figs. 7-9): speeds, M_C, the five sources and M; returns the PNG path."""
-    from matplotlib.figure import Figure
+    """Figure of a gyro run (like [J] Figs. 7-9): speeds, M_C, the five sources and M; returns the PNG path.
 
-    path = Path(path)
-    t = ds["time"].values
-    fig = Figure(figsize=(8, 8), layout="constrained")
-    ax = fig.subplots(3, 1, sharex=True)
-    ax[0].plot(t, ds["ball_orbit_speed"].isel(ball=0).values, "k-", lw=1, label="ball 1 orbit speed")
-    ax[0].plot(t, ds["cage_speed"].values, "r-", lw=0.8, label="cage speed")
-    ax[0].set_ylabel("angular speed [rad/s]")
-    ax[0].legend(loc="best", fontsize=8)
-    u = 1e6
-    ax[1].plot(t, ds["friction_moment_cage"].values * u, "m-", lw=0.8)
-    ax[1].set_ylabel(r"$M_C$ [$\mu$N m]")
-    for name, lab, col in [("friction_moment_viscous", "M_L", "c"), ("friction_moment_hysteresis", "M_E", "g"),
-                           ("friction_moment_differential", "M_D", "orange"), ("friction_moment_pivoting", "M_S", "brown"),
-                           ("friction_moment_cage", "M_C", "m"), ("friction_moment_total", "M", "b")]:
-        ax[2].plot(t, np.maximum(ds[name].values, 0) * u, color=col, lw=1 if name != "friction_moment_total" else 1.2, label=lab)
-    ax[2].set_ylabel(r"friction moment [$\mu$N m]")
-    ax[2].set_xlabel("time [s]")
-    ax[2].legend(loc="upper right", fontsize=8, ncol=3)
-    title = f"{ds.attrs.get('case_name', '')}: " + ", ".join(
-        f"{v.upper()} = {float(ds[v]) * u:.3g} uN m" for v in ("sfmc", "sfmo", "rfmc") if v in ds and np.isfinite(float(ds[v])))
-    if ds.attrs.get("status", "ok") != "ok":
-        title += f" [{ds.attrs['status']}]"
-    fig.suptitle(title, fontsize=9)
-    from hsbearing.plotting import save_figure
+    Drawn by :func:`hsbearing.plotting.plot_gyro` (figures live in the plotting module).
+    """
+    from hsbearing.plotting import plot_gyro
 
-    return save_figure(fig, path)
+    return plot_gyro(ds, Path(path))
 
 
 def circumferential_play_angle(D, Dp, k, dm):
