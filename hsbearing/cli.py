@@ -40,27 +40,50 @@ def _default_out(case, suffix: str, extra: str = "") -> Path:
 
 
 def _print_summary(ds, out: Path | None = None) -> None:
+    """The scalars of a run in the units users read (hsbearing.display), with the reasons behind values
+    that are not defined (parked cage, undetermined classification) and the whirl radius explained."""
     import numpy as np
 
+    from hsbearing.display import format_solver_stats, format_value
+
     print(f"status: {ds.attrs.get('status', '?')}")
+    note = None
+    if "whirl_frequency_ratio" in ds:
+        try:
+            from hsbearing.analysis.orbit import whirl_ratio_note
+
+            note = whirl_ratio_note(ds)
+        except Exception:  # noqa: BLE001 - the value is printed as stored
+            note = None
+    gc = ds.attrs.get("guide_clearance")
     for name, var in ds.data_vars.items():
-        if var.ndim == 0:
-            val = var.values.item()
-            unit = var.attrs.get("units", "")
-            if isinstance(val, (float, np.floating)):
-                print(f"{name}: {val:.6g} {unit}".rstrip())
-            else:
-                print(f"{name}: {val} {unit}".rstrip())
+        if var.ndim != 0:
+            continue
+        text = format_value(var, name)
+        if name == "whirl_frequency_ratio" and note:
+            text = f"not defined ({note})"
+        elif name in ("whirl_amplitude", "whirl_radius_max"):
+            text += " (RMS radius of the cage mass-centre orbit)" if name == "whirl_amplitude" else ""
+            r = float(var.values)
+            if name == "whirl_radius_max" and gc is not None and np.isfinite(r) and r > float(gc):
+                text += (f" (cage centre {(r - float(gc)) * 1e6:.2g} \u00b5m beyond the {float(gc) * 1e6:.0f} \u00b5m "
+                         "guide clearance: elastic penetration of the cage-land rub contact)")
+        print(f"{name}: {text}")
     if "sfmc_ensemble" in ds:  # gyro start ensemble (simulation.start_positions > 1): mean +/- sd and each start
         from hsbearing.models.friction import gyro
 
         print("\n".join(gyro.ensemble_lines(ds)))
-    for key in ("classification", "classification_confidence"):
-        if key in ds.attrs:
-            print(f"{key}: {ds.attrs[key]}")
+    if "classification" in ds.attrs:
+        cls = ds.attrs["classification"]
+        reason = ds.attrs.get("classification_reason", "")
+        if cls == "undetermined":
+            print(f"classification: undetermined ({reason})" if reason else "classification: undetermined")
+        else:
+            conf = ds.attrs.get("classification_confidence")
+            print(f"classification: {cls}" + (f" (confidence {float(conf):.2f})" if conf is not None else ""))
     stats = {k[len("solver_"):]: v for k, v in ds.attrs.items() if k.startswith("solver_")}
     if stats:
-        print("solver: " + ", ".join(f"{k}={v}" for k, v in stats.items()))
+        print("solver: " + format_solver_stats(stats))
     if out is not None:
         print(f"archive: {out}")
 
