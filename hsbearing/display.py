@@ -108,3 +108,28 @@ def format_solver_stats(stats: dict) -> str:
             txt = str(v)
         parts.append(f"{k}={txt}")
     return ", ".join(parts)
+
+
+#: Contact pressure [Pa] bearing steel carries at rest in a ball bearing: ISO 76:2006 (Rolling bearings --
+#: Static load ratings), the basic static load rating C_0 of radial and thrust ball bearings corresponds to
+#: 4200 MPa at the centre of the most heavily loaded ball/raceway contact (4600 MPa for self-aligning ball
+#: bearings), where the permanent deformation of ball + raceway reaches about 1e-4 of the ball diameter.
+ISO76_BALL_PRESSURE = 4.2e9
+
+
+def contact_pressure_warning(p_max, where: str = "") -> str | None:
+    """A warning line when the largest of ``p_max`` [Pa] exceeds :data:`ISO76_BALL_PRESSURE`, else None.
+
+    ``where`` says at which point the largest value occurs (e.g. ``"at preload 160 µm"``).
+    """
+    import numpy as np
+
+    p = np.asarray(p_max, dtype=float)
+    if not p.size or not np.isfinite(p).any():
+        return None
+    top = float(np.nanmax(p))
+    if top <= ISO76_BALL_PRESSURE:
+        return None
+    return (f"hsbearing: warning: maximum contact pressure {top * 1e-9:.3g} GPa{(' (' + where + ')') if where else ''} "
+            f"exceeds the {ISO76_BALL_PRESSURE * 1e-9:g} GPa bearing steel carries in a ball bearing (ISO 76:2006 static "
+            "load rating); beyond it the raceways deform permanently and the elastic (Hertz) results do not hold")

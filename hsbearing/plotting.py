@@ -33,11 +33,7 @@ import numpy as np
 __all__ = ["archive_kind", "is_sweep_summary", "plot_run", "plot_sweep", "plot_friction", "plot_preload", "plot_gyro",
            "save_figure", "sweep_figure", "sweep_layout", "title_lines", "ISO76_BALL_PRESSURE"]
 
-#: Contact pressure [Pa] that bearing steel carries at rest without harmful permanent deformation:
-#: ISO 76:2006, Sec. 6.2 (basic static load rating C_0 of radial and thrust ball bearings), 4200 MPa at
-#: the centre of the most heavily loaded ball/raceway contact (permanent deformation ~ 1e-4 of the
-#: ball diameter).  Used for the warning of ``hsbearing preload`` / ``quasistatic`` and the figures.
-ISO76_BALL_PRESSURE = 4.2e9
+from hsbearing.display import ISO76_BALL_PRESSURE  # noqa: E402  (ISO 76 static limit of ball bearings [Pa])
 
 _RPM = 60.0 / (2.0 * math.pi)
 
