@@ -217,7 +217,7 @@ def _plot_dynamic(ds, path: Path) -> Path:
                 ax.plot(gcu * np.cos(th), gcu * np.sin(th), "r--", lw=1.0,
                         label=f"guide clearance {float(gc) * 1e6:.0f} \u00b5m")
                 if rmax > gcu:  # the rub contact is compliant: the cage centre passes the nominal clearance
-                    ax.plot([], [], " ", label=f"cage centre up to {rmax:.1f} {lu}: {rmax - gcu:.2g} {lu} "
+                    ax.plot([], [], " ", label=f"cage centre up to {rmax:.1f} {lu}: {rmax - gcu:.2g} {lu}\n"
                                                "elastic penetration of the cage-land rub contact")
             else:
                 used = 100 * rmax / gcu
@@ -294,7 +294,7 @@ def _plot_dynamic(ds, path: Path) -> Path:
             short = short if len(short) <= 300 else short[:297] + "..."
             txt += "\n" + _wrap(short, 70)
         # below the panel (under the axis label), never over the section points
-        ax.annotate(txt, xy=(0.5, 0.0), xycoords="axes fraction", xytext=(0, -30), textcoords="offset points",
+        ax.annotate(txt, xy=(0.5, 0.0), xycoords=ax.xaxis.label, xytext=(0, -4), textcoords="offset points",
                     ha="center", va="top", fontsize=7.5, annotation_clip=False,
                     bbox=dict(boxstyle="round", fc="white", ec="0.6", alpha=0.9))
     ax.grid(alpha=0.3)

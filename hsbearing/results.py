@@ -66,8 +66,8 @@ for _n, _d, _u, _l in [
     ("ball_spin_speed", ("time", "ball"), "rad/s", "magnitude of the ball angular velocity relative to the orbiting (cage) frame, omega_R"),
     ("inner_ring_axial_displacement", ("time",), "m", "inner-ring displacement along the bearing axis X"),
     # label coordinates of the quasi-static stiffness matrix (rows dof, columns dof2); text, so no units
-    ("dof", ("dof",), "", "inner-ring degree of freedom of a stiffness row (x, y, z axial/radial displacement, "
-                          "tilt_y, tilt_z)"),
+    ("dof", ("dof",), "", "inner-ring degree of freedom of a stiffness row: x (axial), y, z (radial) displacement, "
+                          "theta_y, theta_z tilt"),
     ("dof2", ("dof2",), "", "inner-ring degree of freedom of a stiffness column (same labels as dof)"),
 ]:
     register(_n, _d, _u, _l)
@@ -83,12 +83,14 @@ ATTR_UNITS: dict[str, str] = {
     "transient_discarded": "s", "cage_slip_contact_angle": "rad",
     # solver statistics
     "solver_wall_time": "s", "solver_total_wall_time": "s", "solver_wall_time_s": "s", "solver_rtol": "1",
+    "solver_atol": "SI unit of each state times its scale (hsbearing.solvers.state.ATOL_SCALE)",
     # quasi-static equilibrium
     "inner_speed": "rad/s", "outer_speed": "rad/s", "applied_loads": "N, N, N, N m, N m (F_x, F_y, F_z, M_y, M_z)",
     # gyro bearing (seed 000 model)
     "contact_angle_deg": "degree", "ball_load_N": "N", "cage_mass_kg": "kg", "ball_cage_stiffness": "N/m^1.5",
     "hunt_crossley_chi": "s/m", "creep_speed": "m/s", "cage_slip_speed": "m/s", "fine_interval": "s",
-    "pocket_clearance_m": "m", "oscillation_period": "s", "cage_gravity": "m/s^2",
+    "pocket_clearance_m": "m", "oscillation_period": "s", "cage_gravity": "m/s^2", "cage_gravity_direction": "1",
+    "prl_inner": "1 (fraction of the contact semi-major axis)", "prl_outer": "1 (fraction of the contact semi-major axis)",
     "start_ensemble_play_rad": "rad", "start_ensemble_duration_s": "s", "start_ensemble_wall_time_s": "s",
     # wire-race preload sweep (seed 001 model)
     "rolling_resistance": "m", "unconsidered_torque": "N m", "framework_weight": "N", "contact_angle": "rad",
