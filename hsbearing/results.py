@@ -144,7 +144,7 @@ def make_dataset(
     for cname, cval in (coords or {}).items():
         c_attrs = _var_attrs(VARIABLES[cname]) if cname in VARIABLES else {}
         ds = ds.assign_coords({cname: xr.Variable((cname,), np.asarray(cval), attrs=c_attrs)})
-    ds.attrs.update(_clean_attrs(attrs or {}))
+    ds.attrs.update(_clean_attrs(with_attr_units(attrs or {})))
     return ds
 
 

@@ -180,6 +180,7 @@ def test_poincare_note_does_not_hide_section_points(tmp_path, figures):
     fig = figures[-1]
     ax = fig.axes[1]  # (b) Poincare map
     assert ax.get_title().startswith("(b) Poincar")
+    fig.canvas.draw()  # layout at the figure's own dpi, then measure in display coordinates
     r = fig.canvas.get_renderer()
     notes = [c for c in ax.get_children() if type(c).__name__ == "Annotation"]
     assert notes, "the classification note is drawn"
