@@ -447,3 +447,21 @@ def test_compile_notice_comes_before_the_bar_and_compilation_before_integration(
 
     assert any(not sig[0].mutable for sig in K.rhs_kernel.signatures)
     assert any(not sig[0].mutable for sig in K.jac_kernel.signatures)
+
+
+def test_start_ensemble_bars_say_which_start(monkeypatch):
+    """A 5-start gyro run shows five progress bars: each is labelled "start k/5" (they were identical)."""
+    from hsbearing.models.friction import gyro
+
+    descs = []
+
+    def fake(case, duration=None, progress=False, *, progress_desc="gyro", **kw):
+        descs.append(progress_desc)
+        return {"sfmc": 1.0}
+
+    monkeypatch.setattr(gyro, "_simulate_one", fake)
+    case = hsbearing.load_case("jiang2014_gyro")
+    vals = list(gyro._ensemble_sfmc(case, gyro.start_offsets(5), progress=True))
+    assert vals == [1.0] * 5
+    assert [d.split(" (")[0] for d in descs] == [f"gyro start {k}/5" for k in range(1, 6)]
+    assert len(set(descs)) == 5
