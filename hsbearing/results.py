@@ -235,10 +235,16 @@ class atomic_write:
 
 
 def write_netcdf(ds: xr.Dataset, path: str | os.PathLike) -> Path:
-    """Write ``ds`` to ``path`` atomically (temporary file in the same directory, then rename), zlib-compressed."""
+    """Write ``ds`` to ``path`` atomically (temporary file in the same directory, then rename), zlib-compressed.
+
+    ``ds.attrs`` gains the ``NAME_units`` companions of :data:`ATTR_UNITS` it lacks (in place, so the
+    Dataset in memory and the archive carry the same attributes).
+    """
     path = Path(path)
+    for k, v in with_attr_units(ds.attrs).items():  # the unit companions (ATTR_UNITS) also on the caller's Dataset,
+        ds.attrs.setdefault(k, v)                     # so that what is written is what is in memory
     ds = ds.copy()
-    ds.attrs = _clean_attrs(with_attr_units(ds.attrs))
+    ds.attrs = _clean_attrs(ds.attrs)
     encoding = {
         name: {"zlib": True, "complevel": 4, "shuffle": True}
         for name, var in ds.variables.items()
