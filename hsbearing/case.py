@@ -256,11 +256,11 @@ def parse_quantity(value: Any, kind: str, *, source: str = "<value>", key: str |
         raise KeyError(kind)
     si = DIMENSIONS[kind]
     if isinstance(value, bool):
-        raise CaseError(source, key, f"expected a {kind.replace('_', ' ')} with units, got {value!r}")
+        raise CaseError(source, key, f"expected {_a(kind)} with units, got {value!r}")
     if isinstance(value, (int, float)):
         if value == 0:
             return 0.0
-        raise CaseError(source, key, f"expected a {kind.replace('_', ' ')} with units like \"{value} {_example_unit(kind)}\", got bare number {value!r}")
+        raise CaseError(source, key, f"expected {_a(kind)} with units like \"{value} {_example_unit(kind)}\", got bare number {value!r}")
     if not isinstance(value, str):
         raise CaseError(source, key, f"expected a quantity string with units, got {type(value).__name__}")
     ureg = _ureg()
@@ -277,9 +277,15 @@ def parse_quantity(value: Any, kind: str, *, source: str = "<value>", key: str |
             out = q.to(si).magnitude
     except Exception:
         raise CaseError(
-            source, key, f"{value!r} is not a {kind.replace('_', ' ')} (expected units like {_example_unit(kind)})"
+            source, key, f"{value!r} is not {_a(kind)} (expected units like {_example_unit(kind)})"
         ) from None
     return float(out)
+
+
+def _a(kind: str) -> str:
+    """``"angular_speed"`` -> ``"an angular speed"``, ``"length"`` -> ``"a length"`` (for messages)."""
+    words = kind.replace("_", " ")
+    return ("an " if words[:1] in "aeiou" else "a ") + words
 
 
 def _example_unit(kind: str) -> str:

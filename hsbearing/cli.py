@@ -40,17 +40,35 @@ def _default_out(case, suffix: str, extra: str = "") -> Path:
 
 
 def _print_summary(ds, out: Path | None = None) -> None:
+    """The scalars of a run in the units users read (hsbearing.display), with the reasons behind values
+    that are not defined (parked cage, undetermined classification) and the whirl radius explained."""
     import numpy as np
 
+    from hsbearing.display import format_solver_stats, format_value
+
     print(f"status: {ds.attrs.get('status', '?')}")
+    note = None
+    if "whirl_frequency_ratio" in ds:
+        try:
+            from hsbearing.analysis.orbit import whirl_ratio_note
+
+            note = whirl_ratio_note(ds)
+        except Exception:  # noqa: BLE001 - the value is printed as stored
+            note = None
+    gc = ds.attrs.get("guide_clearance")
     for name, var in ds.data_vars.items():
-        if var.ndim == 0:
-            val = var.values.item()
-            unit = var.attrs.get("units", "")
-            if isinstance(val, (float, np.floating)):
-                print(f"{name}: {val:.6g} {unit}".rstrip())
-            else:
-                print(f"{name}: {val} {unit}".rstrip())
+        if var.ndim != 0:
+            continue
+        text = format_value(var, name)
+        if name == "whirl_frequency_ratio" and note:
+            text = f"not defined ({note})"
+        elif name in ("whirl_amplitude", "whirl_radius_max"):
+            text += " (RMS radius of the cage mass-centre orbit)" if name == "whirl_amplitude" else ""
+            r = float(var.values)
+            if name == "whirl_radius_max" and gc is not None and np.isfinite(r) and r > float(gc):
+                text += (f" (cage centre {(r - float(gc)) * 1e6:.2g} \u00b5m beyond the {float(gc) * 1e6:.0f} \u00b5m "
+                         "guide clearance: elastic penetration of the cage-land rub contact)")
+        print(f"{name}: {text}")
     if "sfmc_ensemble" in ds:  # gyro start ensemble (simulation.start_positions > 1): mean +/- sd and each start
         from hsbearing.models.friction import gyro
 
@@ -59,12 +77,17 @@ def _print_summary(ds, out: Path | None = None) -> None:
         from hsbearing.balances import power_summary_lines
 
         print("\n".join(power_summary_lines(ds)))
-    for key in ("classification", "classification_confidence"):
-        if key in ds.attrs:
-            print(f"{key}: {ds.attrs[key]}")
+    if "classification" in ds.attrs:
+        cls = ds.attrs["classification"]
+        reason = ds.attrs.get("classification_reason", "")
+        if cls == "undetermined":
+            print(f"classification: undetermined ({reason})" if reason else "classification: undetermined")
+        else:
+            conf = ds.attrs.get("classification_confidence")
+            print(f"classification: {cls}" + (f" (confidence {float(conf):.2f})" if conf is not None else ""))
     stats = {k[len("solver_"):]: v for k, v in ds.attrs.items() if k.startswith("solver_")}
     if stats:
-        print("solver: " + ", ".join(f"{k}={v}" for k, v in stats.items()))
+        print("solver: " + format_solver_stats(stats))
     if out is not None:
         print(f"archive: {out}")
 
@@ -134,6 +157,12 @@ def cmd_quasistatic(args) -> int:
     from hsbearing.solvers import quasistatic
 
     quasistatic.print_summary(ds)
+    from hsbearing.display import contact_pressure_warning
+
+    p_all = [ds[n].values for n in ("inner_contact_pressure", "outer_contact_pressure") if n in ds]
+    warn = contact_pressure_warning(p_all) if p_all else None
+    if warn:
+        print(warn, file=sys.stderr)
     if args.output:
         write_netcdf(ds, args.output)
         print(f"archive: {args.output}")
@@ -213,24 +242,29 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--version", action="version", version=f"hsbearing {__version__}")
     sub = p.add_subparsers(dest="command", metavar="COMMAND")
 
-    def with_case(sp, optional=True):
-        sp.add_argument("case", nargs="?" if optional else None, default=None,
-                        help="bundled case name or path to a TOML case (default: %s)" % DEFAULT_CASE)
+    def with_case(sp, optional=True, examples=""):
+        if optional:
+            sp.add_argument("case", nargs="?", default=None,
+                            help=f"bundled case name (see 'hsbearing cases') or path to a TOML case (default: {DEFAULT_CASE})")
+        else:  # required: no default is shown (friction and preload need a case of their own system)
+            sp.add_argument("case", help="bundled case name (see 'hsbearing cases') or path to a TOML case" + examples)
         sp.add_argument("--set", action="append", metavar="KEY=VALUE",
                         help='override a case value, e.g. --set operating.axial_load="2 kN" (repeatable)')
 
-    sp = sub.add_parser("cases", help="list the bundled cases")
+    sp = sub.add_parser("cases", help="list the bundled cases (paper, bearing, operating point)")
     sp.set_defaults(func=cmd_cases)
 
     sp = sub.add_parser("check", help="validate a case and print the derived geometry")
     with_case(sp)
     sp.set_defaults(func=cmd_check)
 
-    sp = sub.add_parser("run", help="dynamic simulation (default case: zhang2016)")
+    sp = sub.add_parser("run", help=f"dynamic simulation (default case {DEFAULT_CASE}: the 7206-size angular-contact "
+                                    "bearing of Zhang et al. 2016, 14000 r/min, Fa = 1 kN, oil 4109, 130 \N{DEGREE SIGN}C)")
     with_case(sp)
     sp.add_argument("-o", "--output", help="netCDF archive (default runs/<case>-<hash>.nc)")
     sp.add_argument("--duration", help="simulated time, e.g. 0.2s (default: [simulation] duration)")
-    sp.add_argument("--no-plot", action="store_true", help="do not draw the PNG figure")
+    sp.add_argument("--no-figure", "--no-plot", dest="no_plot", action="store_true",
+                    help="do not draw the PNG figure (--no-plot is the older spelling)")
     sp.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     sp.set_defaults(func=cmd_run)
 
@@ -246,31 +280,48 @@ def build_parser() -> argparse.ArgumentParser:
     sp.add_argument("--zip", action="store_true", help="vary the keys together (zipped lists) instead of the product")
     sp.add_argument("--keep-going", action="store_true",
                     help="record points whose values make an invalid case (status 'invalid') and run the rest, instead of exit 2")
-    sp.add_argument("-j", "--jobs", type=int, default=None, help="worker processes (default: cores)")
-    sp.add_argument("--scheduler", default=None, help="dask.distributed scheduler address tcp://host:port")
+    sp.add_argument("-j", "--jobs", type=int, default=None,
+                    help="local worker processes (default: the number of cores; 1 = in this process)")
+    sp.add_argument("--scheduler", default=None, metavar="ADDR",
+                    help="address tcp://host:port of a running dask.distributed scheduler; the points run on its "
+                         "workers instead of local processes (-j is then ignored)")
     sp.add_argument("--kind", default="run", choices=("run", "quasistatic"), help="what each point computes")
     sp.add_argument("--duration", help="simulated time of each run, e.g. 0.05s")
     sp.add_argument("-o", "--output", required=True, help="output directory")
-    sp.add_argument("--no-figure", action="store_true", help="do not draw DIR/sweep.png")
+    sp.add_argument("--no-figure", "--no-plot", dest="no_figure", action="store_true",
+                    help="do not draw DIR/sweep.png (--no-plot is accepted as in 'hsbearing run')")
     sp.set_defaults(func=cmd_sweep)
 
-    sp = sub.add_parser("study", help="a bundled study (e.g. zhang2016: Tables 3-5 of seed 004)")
-    sp.add_argument("name", help="study name")
+    from hsbearing.study import study_help
+
+    sp = sub.add_parser("study", help="a bundled study: the paper's tables recomputed, with a report "
+                                      "(zhang2016: cage stability, Zhang et al. 2016 Tables 3-5)",
+                        description="Run a bundled study: its sweeps, the paper's values next to ours, DIR/report.md "
+                                    "and one figure per table.", epilog=study_help(),
+                        formatter_class=argparse.RawDescriptionHelpFormatter)
+    sp.add_argument("name", help="study name (listed below)")
     sp.add_argument("-o", "--output", required=True, help="output directory")
-    sp.add_argument("-j", "--jobs", type=int, default=None)
-    sp.add_argument("--scheduler", default=None)
-    sp.add_argument("--duration", help="simulated time of each run")
-    sp.add_argument("--no-figure", action="store_true", help="do not draw DIR/<table>.png (summary figure of each table)")
+    sp.add_argument("-j", "--jobs", type=int, default=None,
+                    help="local worker processes (default: the number of cores; 1 = in this process)")
+    sp.add_argument("--scheduler", default=None, metavar="ADDR",
+                    help="address tcp://host:port of a running dask.distributed scheduler; the points run on its "
+                         "workers instead of local processes")
+    sp.add_argument("--duration", help="simulated time of each run (default: the study's, e.g. 1.2 s)")
+    sp.add_argument("--no-figure", "--no-plot", dest="no_figure", action="store_true",
+                    help="do not draw DIR/<table>.png (summary figure of each table)")
     sp.set_defaults(func=cmd_study)
 
-    sp = sub.add_parser("friction", help="DGBB friction torque: seed 003 sliding method and SKF 2004 model")
-    with_case(sp, optional=False)
+    sp = sub.add_parser("friction", help="friction torque of a ball-bearing case: sliding friction by spinning and "
+                                         "differential sliding with pure-rolling lines (deep-groove bearing paper, "
+                                         "cases dgbb_6206/6207/6208) and the SKF 2004 frictional-moment model")
+    with_case(sp, optional=False, examples=", e.g. dgbb_6206")
     sp.add_argument("--speeds", default="500,5000,15000rpm", help="comma list with a unit, e.g. 500,5000,15000rpm")
     sp.add_argument("-o", "--output", help="netCDF archive")
     sp.set_defaults(func=cmd_friction)
 
-    sp = sub.add_parser("preload", help="wire-race bearing: preload vs starting torque (seed 001)")
-    with_case(sp, optional=False)
+    sp = sub.add_parser("preload", help="wire-race bearing: preload vs starting torque (Shan et al. 2010, "
+                                        "case shan2010_wire_race)")
+    with_case(sp, optional=False, examples=", e.g. shan2010_wire_race")
     sp.add_argument("--preload", default="10..160um", help="range lo..hi[unit] or comma list, e.g. 10..160um")
     sp.add_argument("--target-torque", default=None, help="starting-torque window lo..hi, e.g. 90..100N*m -> preload window")
     sp.add_argument("-o", "--output", help="netCDF archive")

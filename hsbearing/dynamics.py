@@ -383,7 +383,12 @@ def simulate(case, duration=None, progress: bool = False, *, model: DynamicModel
         from hsbearing.case import CaseError
 
         raise CaseError(case.source, "simulation.duration", f"must be positive, got {duration!r}")
+    from hsbearing import jit
+
+    if progress:  # before the quasi-static start and the compilation; the bar then times integration only
+        jit.compile_notice((K.rhs_kernel, K.jac_kernel), "the model")
     m = model or build_model(case, **model_kwargs)
+    jit.warm_up(m.rhs, m.y0, m.jac if jacobian == "arrowhead" else None, extra=lambda: m.outputs(m.y0))
     rtol = float(sim.rtol if rtol is None else rtol)
     atol_v = m.layout.atol(float(sim.atol if atol is None else atol))
     t_eval = _time_grid(duration, min(sim.output_interval, duration))

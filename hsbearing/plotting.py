@@ -2,12 +2,17 @@
 
 :func:`plot_run` dispatches on the Dataset:
 
-- a sweep or study summary (:func:`is_sweep_summary`: ``attrs["title"] == "hsbearing sweep"`` or
-  ``sweep_vary`` in the attrs, as written by :func:`hsbearing.sweeps.assemble`) -> :func:`plot_sweep`:
+the kind of archive (:func:`archive_kind`, from its attributes and dimensions) selects the figure:
+
+- ``"sweep"``: a sweep or study summary (:func:`is_sweep_summary`: ``attrs["title"] == "hsbearing sweep"``
+  or ``sweep_vary`` in the attrs, as written by :func:`hsbearing.sweeps.assemble`) -> :func:`plot_sweep`:
   the summary variables against the varied keys;
-- ``attrs["model"] == "gyro_ribbon_cage"`` -> :func:`hsbearing.models.friction.gyro.plot_run`;
-- no ``time`` dimension (quasi-static result) -> per-ball contact loads and angles;
-- otherwise the dynamic-run figure: (a) cage whirl orbit D_Y-D_Z with the
+- ``"gyro"``: a gyro-bearing run (``attrs["model"] == "gyro_ribbon_cage"``) -> :func:`plot_gyro`
+  (through :func:`hsbearing.models.friction.gyro.plot_run`): speeds, M_C, the friction-moment sources;
+- ``"friction"``: ``hsbearing friction`` (dim ``speed``, ``sliding_torque``) -> :func:`plot_friction`;
+- ``"preload"``: ``hsbearing preload`` (dim ``preload``) -> :func:`plot_preload`;
+- ``"quasistatic"``: no ``time`` dimension, per-ball contact loads -> per-ball contact loads and angles;
+- ``"run"``: the dynamic-run figure: (a) cage whirl orbit D_Y-D_Z with the
   guide clearance circle, (b) Poincare map (D_Y, V_Y) -- the same section
   points as the stored classification (:mod:`hsbearing.analysis.poincare`),
   (c) cage speed against time with the pure-rolling speed, (d) cage slip ratio.
@@ -25,7 +30,10 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["is_sweep_summary", "plot_run", "plot_sweep", "save_figure", "sweep_figure", "sweep_layout", "title_lines"]
+__all__ = ["archive_kind", "is_sweep_summary", "plot_run", "plot_sweep", "plot_friction", "plot_preload", "plot_gyro",
+           "save_figure", "sweep_figure", "sweep_layout", "title_lines", "ISO76_BALL_PRESSURE"]
+
+from hsbearing.display import ISO76_BALL_PRESSURE  # noqa: E402  (ISO 76 static limit of ball bearings [Pa])
 
 _RPM = 60.0 / (2.0 * math.pi)
 
@@ -116,15 +124,48 @@ def plot_run(ds, path) -> Path:
     ratio, the Poincare map and the classification.
     """
     path = Path(path)
-    if is_sweep_summary(ds):
+    kind = archive_kind(ds)
+    if kind == "sweep":
         return plot_sweep(ds, path)
-    if ds.attrs.get("model") == "gyro_ribbon_cage":
+    if kind == "gyro":
         from hsbearing.models.friction import gyro
 
         return gyro.plot_run(ds, path)
-    if "time" not in ds.dims:
+    if kind == "friction":
+        return plot_friction(ds, path)
+    if kind == "preload":
+        return plot_preload(ds, path)
+    if kind == "quasistatic":
         return _plot_static(ds, path)
     return _plot_dynamic(ds, path)
+
+
+def archive_kind(ds) -> str:
+    """What an hsbearing Dataset holds: ``"sweep"``, ``"gyro"``, ``"friction"``, ``"preload"``,
+    ``"quasistatic"`` or ``"run"`` (see the module docstring).
+
+    Decided from the attributes every archive carries (``title``, ``model``, ``case_system``) and
+    the dimensions / variables, so archives written before this function existed are recognised too.
+    Raises :class:`hsbearing.case.CaseError` for a Dataset that is none of these.
+    """
+    from hsbearing.case import CaseError
+
+    if is_sweep_summary(ds):
+        return "sweep"
+    system = ds.attrs.get("case_system", "")
+    if ds.attrs.get("model") == "gyro_ribbon_cage" or (system == "gyro_ribbon_cage" and "time" in ds.dims):
+        return "gyro"
+    if "speed" in ds.dims and "sliding_torque" in ds:
+        return "friction"
+    if "preload" in ds.dims or system == "wire_race":
+        return "preload"
+    if "time" in ds.dims:
+        return "run"
+    if "inner_contact_load" in ds or "outer_contact_load" in ds:
+        return "quasistatic"
+    source = str(ds.encoding.get("source", "dataset"))
+    raise CaseError(source, None, "not an hsbearing result this command can draw (no run, quasi-static, friction, "
+                                  "preload, gyro or sweep variables)")
 
 
 def _figure(figsize):
@@ -175,6 +216,9 @@ def _plot_dynamic(ds, path: Path) -> Path:
                 view = max(view, 1.08 * gcu)
                 ax.plot(gcu * np.cos(th), gcu * np.sin(th), "r--", lw=1.0,
                         label=f"guide clearance {float(gc) * 1e6:.0f} \u00b5m")
+                if rmax > gcu:  # the rub contact is compliant: the cage centre passes the nominal clearance
+                    ax.plot([], [], " ", label=f"cage centre up to {rmax:.1f} {lu}: {rmax - gcu:.2g} {lu}\n"
+                                               "elastic penetration of the cage-land rub contact")
             else:
                 used = 100 * rmax / gcu
                 ax.plot([], [], "r--", lw=1.0, label=f"guide clearance {float(gc) * 1e6:.0f} \u00b5m (off view: orbit "
@@ -187,10 +231,19 @@ def _plot_dynamic(ds, path: Path) -> Path:
         ax.set_ylabel(f"cage centre $D_Z$ [{lu}]")
         amp = float(ds["whirl_amplitude"]) * lf if "whirl_amplitude" in ds else float("nan")
         ratio = float(ds["whirl_frequency_ratio"]) if "whirl_frequency_ratio" in ds else float("nan")
-        ttl = "(a) cage whirl orbit"
+        ttl = "(a) cage centre orbit"
         if np.isfinite(amp):
             ttl += f": RMS radius {amp:.3g} {lu}"
-        if np.isfinite(ratio):
+        note = None
+        try:
+            from hsbearing.analysis.orbit import whirl_ratio_note
+
+            note = whirl_ratio_note(ds)
+        except Exception:  # noqa: BLE001 - an old or partial archive: the ratio is shown as stored
+            note = None
+        if note:
+            ttl += ", no whirl (cage parked)"
+        elif np.isfinite(ratio):
             ttl += f", whirl/cage speed {ratio:.3g}"
         ax.set_title(ttl, fontsize=10)
         ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=2, frameon=False)
@@ -240,8 +293,10 @@ def _plot_dynamic(ds, path: Path) -> Path:
             short = reason.split("; 0-1 test")[0]
             short = short if len(short) <= 300 else short[:297] + "..."
             txt += "\n" + _wrap(short, 70)
-        ax.text(0.02, 0.98, txt, transform=ax.transAxes, va="top", fontsize=7.5,
-                bbox=dict(boxstyle="round", fc="white", ec="0.6", alpha=0.9))
+        # below the panel (under the axis label), never over the section points
+        ax.annotate(txt, xy=(0.5, 0.0), xycoords=ax.xaxis.label, xytext=(0, -4), textcoords="offset points",
+                    ha="center", va="top", fontsize=7.5, annotation_clip=False,
+                    bbox=dict(boxstyle="round", fc="white", ec="0.6", alpha=0.9))
     ax.grid(alpha=0.3)
 
     # (c) cage speed
@@ -337,6 +392,177 @@ def _plot_static(ds, path: Path) -> Path:
             a = np.degrees(np.atleast_1d(np.asarray(ds[name].values, float)))
             ax2.plot(np.arange(1, len(a) + 1), a, "o-", color=c, label=lab)
     _per_ball_axes(ax2, nb, "contact angle [\N{DEGREE SIGN}]", "contact angles per ball", grid_axis="both")
+    return _save(fig, path)
+
+
+# ----------------------------------------------------------------------------- friction, preload, gyro figures
+
+
+def _vals(ds, name, factor=1.0):
+    return np.asarray(ds[name].values, dtype=float) * factor
+
+
+def plot_friction(ds, path) -> Path:
+    """Figure of ``hsbearing friction`` (seed 003 sliding method and SKF 2004 model) to ``path`` (PNG).
+
+    (a) torques against the inner-ring speed [N mm]: the sliding components M_s (spinning), M_r (ball
+    rotation), M_d (orbital) and their sum M_sl by the seed 003 method (solid), the SKF 2004 M_sl,
+    M_rr, M_drag and total M (dashed / dotted); (b) contact load and angle of each ball at the first
+    speed (the archive's ``note``).
+    """
+    path = Path(path)
+    fig = _figure((12, 4.9))
+    ax1, ax2 = fig.subplots(1, 2, width_ratios=[1.4, 1.0])
+    rpm = _vals(ds, "speed", _RPM)
+    lab = _case_labels(ds)
+    head = ", ".join([ds.attrs.get("case_name", "friction torque")]
+                     + [lab[k] for k in ("axial_load", "radial_load") if k in lab])
+    extra = [f"law {ds.attrs['friction_law']}" if "friction_law" in ds.attrs else "",
+             f"\u03bd = {float(ds.attrs['kinematic_viscosity_mm2_s']):g} mm\u00b2/s" if "kinematic_viscosity_mm2_s" in ds.attrs else ""]
+    fig.suptitle("friction torque: " + ", ".join([head] + [e for e in extra if e]), fontsize=11)
+    rows = (("sliding_torque", "$M_{sl}$ sliding (seed 003 method)", "k", "-", 2.0),
+            ("spinning_torque", "$M_s$ spinning", "C0", "-", 1.2),
+            ("orbital_sliding_torque", "$M_d$ orbital (differential) sliding", "C2", "-", 1.2),
+            ("rotation_sliding_torque", "$M_r$ ball-rotation sliding", "C1", "-", 1.2),
+            ("skf_sliding_torque", "SKF 2004 $M_{sl}$", "k", "--", 1.4),
+            ("skf_rolling_torque", "SKF 2004 $M_{rr}$ rolling", "C4", "--", 1.2),
+            ("skf_drag_torque", "SKF 2004 $M_{drag}$", "C5", ":", 1.2),
+            ("skf_total_torque", "SKF 2004 total $M$", "C3", "--", 1.6))
+    for name, label, col, ls, lw in rows:
+        if name in ds:
+            ax1.plot(rpm, _vals(ds, name, 1e3), ls=ls, color=col, lw=lw, marker="o" if len(rpm) <= 12 else None,
+                     ms=4, label=label)
+    if len(rpm) > 1 and np.all(rpm > 0) and rpm.max() / rpm.min() >= 10:
+        ax1.set_xscale("log")
+    ax1.set_xlabel("inner-ring speed n [r/min]")
+    ax1.set_ylabel("torque [N mm]")
+    ax1.set_title("(a) friction torques", fontsize=10)
+    ax1.grid(alpha=0.3, which="both")
+    ax1.legend(fontsize=7.5, loc="best")
+    nb = None
+    if "ball_contact_load" in ds:
+        q = np.atleast_1d(_vals(ds, "ball_contact_load"))
+        nb = q.size
+        x = np.arange(1, nb + 1)
+        ax2.bar(x, q, width=0.6, color="C0", label="contact load Q")
+        ax2.set_xticks(x)
+        ax2.set_ylabel("contact load Q [N]")
+        if "ball_contact_angle" in ds:
+            a2 = ax2.twinx()
+            a2.plot(x, np.degrees(np.atleast_1d(_vals(ds, "ball_contact_angle"))), "o-", color="C3", label="contact angle")
+            a2.set_ylabel("contact angle [\N{DEGREE SIGN}]", color="C3")
+    ax2.set_xlabel("ball")
+    sp = f" at n = {rpm[0]:.0f} r/min" if len(rpm) else ""
+    ax2.set_title(f"(b) ball contacts{sp}", fontsize=10)
+    ax2.grid(alpha=0.3, axis="y")
+    return _save(fig, path)
+
+
+def plot_preload(ds, path) -> Path:
+    """Figure of ``hsbearing preload`` (wire-race bearing, seed 001) to ``path`` (PNG).
+
+    (a) starting torque against the preload: rolling-resistance torque M_sc (Eq. 4) and M_s = M_sc + M_u
+    (Eq. 11), with the target-torque band and the preload window when the archive has them;
+    (b) maximum contact pressure of the four ball/wire contacts, with the ISO 76 limit
+    (:data:`ISO76_BALL_PRESSURE`) drawn and the preloads beyond it shaded.
+    """
+    path = Path(path)
+    fig = _figure((12, 4.9))
+    ax1, ax2 = fig.subplots(1, 2)
+    um = _vals(ds, "preload", 1e6)
+    fig.suptitle(f"{ds.attrs.get('case_name', 'wire race')}: starting torque and contact pressure against the preload "
+                 "(seed 001 model)", fontsize=11)
+    ax1.plot(um, _vals(ds, "rolling_torque"), "-", color="C0", label="$M_{sc}$ rolling resistance (Eq. 4)")
+    ax1.plot(um, _vals(ds, "torque"), "--", color="C1", label="$M_s = M_{sc} + M_u$ (Eq. 11)")
+    tt, win = ds.attrs.get("target_torque"), ds.attrs.get("preload_window")
+    if tt is not None and np.size(tt) == 2:
+        ax1.axhspan(float(np.ravel(tt)[0]), float(np.ravel(tt)[1]), color="0.85", zorder=0,
+                    label=f"target {float(np.ravel(tt)[0]):g}-{float(np.ravel(tt)[1]):g} N m")
+    if win is not None and np.size(win) == 2:
+        w = np.ravel(win) * 1e6
+        ax1.axvspan(w[0], w[1], color="C0", alpha=0.12, zorder=0, label=f"preload window {w[0]:.1f}-{w[1]:.1f} \u00b5m")
+    ax1.set_xlabel("preload \u03b4 [\u00b5m]")
+    ax1.set_ylabel("starting torque [N m]")
+    ax1.set_title("(a) starting torque", fontsize=10)
+    ax1.grid(alpha=0.3)
+    ax1.legend(fontsize=8, loc="upper left")
+    pmax = np.zeros_like(um)
+    for j in range(1, 5):
+        name = f"p_max{j}"
+        if name in ds:
+            p = _vals(ds, name, 1e-9)
+            pmax = np.maximum(pmax, p)
+            ax2.plot(um, p, lw=1.1, ls=("-", "--", "-.", ":")[j - 1], label=f"contact {j}: $P_{{0{j}}}$")
+    lim = ISO76_BALL_PRESSURE * 1e-9
+    ax2.axhline(lim, color="r", lw=1.2, label=f"ISO 76 static limit for ball bearings, {lim:g} GPa")
+    over = pmax > lim
+    if over.any():
+        ax2.axvspan(um[over].min(), um.max(), color="r", alpha=0.08, zorder=0,
+                    label=f"above the limit from {um[over].min():.3g} \u00b5m")
+    ax2.set_xlabel("preload \u03b4 [\u00b5m]")
+    ax2.set_ylabel("maximum contact pressure [GPa]")
+    ax2.set_title("(b) maximum contact pressure", fontsize=10)
+    ax2.grid(alpha=0.3)
+    ax2.legend(fontsize=8, loc="upper left")
+    return _save(fig, path)
+
+
+#: The five friction-moment sources of the gyro model ([J] Eq. 1), in stacking order: name, label, colour.
+GYRO_SOURCES = (("friction_moment_viscous", "$M_L$ viscous", "#17becf"),
+                ("friction_moment_hysteresis", "$M_E$ elastic hysteresis", "#2ca02c"),
+                ("friction_moment_differential", "$M_D$ differential sliding", "#ff7f0e"),
+                ("friction_moment_pivoting", "$M_S$ pivoting", "#8c564b"),
+                ("friction_moment_cage", "$M_C$ ball/cage (driving part)", "#e377c2"))
+
+
+def plot_gyro(ds, path) -> Path:
+    """Figure of a gyro-bearing run (like [J] Figs. 7-9) to ``path`` (PNG).
+
+    (a) outer-race, cage and ball-1 orbital speeds [r/min]; (b) ball/cage friction moment M_C [uN m];
+    (c) the sources stacked as bands, M_L + M_E + M_D + M_S + max(M_C, 0) = M ([J] Eq. 1), so that
+    sources of nearly equal size stay distinguishable (their time means are in the legend), and M on top.
+    """
+    path = Path(path)
+    u = 1e6
+    t = _vals(ds, "time")
+    fig = _figure((10, 9))
+    ax = fig.subplots(3, 1, sharex=True)
+    if "outer_race_speed" in ds:
+        ax[0].plot(t, _vals(ds, "outer_race_speed", _RPM), color="0.5", lw=1.0, ls="--", label="outer race")
+    if "ball_orbit_speed" in ds:
+        ax[0].plot(t, _vals(ds.isel(ball=0), "ball_orbit_speed", _RPM), "k-", lw=1, label="ball 1 orbit")
+    if "cage_speed" in ds:
+        ax[0].plot(t, _vals(ds, "cage_speed", _RPM), "r-", lw=0.8, label="cage")
+    ax[0].set_ylabel("angular speed [r/min]")
+    ax[0].set_title("(a) speeds", fontsize=10)
+    ax[0].legend(loc="best", fontsize=8)
+    if "friction_moment_cage" in ds:
+        ax[1].plot(t, _vals(ds, "friction_moment_cage", u), "-", color=GYRO_SOURCES[-1][2], lw=0.8)
+    ax[1].set_ylabel("$M_C$ [\u00b5N m]")
+    ax[1].set_title("(b) ball/cage friction moment $M_C$ (signed; peak of each output interval)", fontsize=10)
+    bands, labels, colours = [], [], []
+    for name, lab, col in GYRO_SOURCES:
+        if name in ds:
+            v = _vals(ds, name, u)
+            v = np.maximum(v, 0.0) if name == "friction_moment_cage" else v
+            bands.append(v)
+            labels.append(f"{lab}: mean {np.nanmean(v):.3g} \u00b5N m")
+            colours.append(col)
+    if bands:
+        ax[2].stackplot(t, *bands, labels=labels, colors=colours, alpha=0.85, lw=0)
+    if "friction_moment_total" in ds:
+        ax[2].plot(t, _vals(ds, "friction_moment_total", u), color="b", lw=1.1, label="$M$ total (Eq. 1)")
+    ax[2].set_ylabel("friction moment [\u00b5N m]")
+    ax[2].set_xlabel("time [s]")
+    ax[2].set_title("(c) friction-moment sources, stacked: $M_L + M_E + M_D + M_S + \\max(M_C, 0) = M$", fontsize=10)
+    ax[2].legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, frameon=False)
+    for a in ax:
+        a.grid(alpha=0.3)
+    title = f"{ds.attrs.get('case_name', '')}: " + ", ".join(
+        f"{v.upper()} = {float(ds[v]) * u:.3g} \u00b5N m" for v in ("sfmc", "sfmo", "rfmc") if v in ds and np.isfinite(float(ds[v])))
+    if ds.attrs.get("status", "ok") != "ok":
+        title += f" [{ds.attrs['status']}]"
+    fig.suptitle(title, fontsize=10)
     return _save(fig, path)
 
 

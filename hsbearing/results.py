@@ -22,7 +22,8 @@ from typing import Any, Mapping
 import numpy as np
 import xarray as xr
 
-__all__ = ["Variable", "VARIABLES", "register", "make_dataset", "write_netcdf", "open_run", "solver_attrs", "atomic_write"]
+__all__ = ["Variable", "VARIABLES", "register", "make_dataset", "write_netcdf", "open_run", "solver_attrs", "atomic_write",
+           "ATTR_UNITS", "register_attr_units", "with_attr_units"]
 
 
 @dataclass(frozen=True)
@@ -64,8 +65,58 @@ for _n, _d, _u, _l in [
     ("ball_orbit_speed", ("time", "ball"), "rad/s", "ball orbital (revolution) speed about the bearing axis"),
     ("ball_spin_speed", ("time", "ball"), "rad/s", "magnitude of the ball angular velocity relative to the orbiting (cage) frame, omega_R"),
     ("inner_ring_axial_displacement", ("time",), "m", "inner-ring displacement along the bearing axis X"),
+    # label coordinates of the quasi-static stiffness matrix (rows dof, columns dof2); text, so no units
+    ("dof", ("dof",), "", "inner-ring degree of freedom of a stiffness row: x (axial), y, z (radial) displacement, "
+                          "theta_y, theta_z tilt"),
+    ("dof2", ("dof2",), "", "inner-ring degree of freedom of a stiffness column (same labels as dof)"),
 ]:
     register(_n, _d, _u, _l)
+
+
+#: Units of the global attributes that carry a dimension.  An archive written by :func:`write_netcdf`
+#: stores, next to each such attribute ``NAME`` present, a companion attribute ``NAME_units`` (netCDF
+#: global attributes have no attributes of their own; CF has no convention for them).  Attributes not
+#: listed here are texts, counts or dimensionless numbers.  Declare new ones with :func:`register_attr_units`.
+ATTR_UNITS: dict[str, str] = {
+    # dynamic run (hsbearing.dynamics) and its annotation (hsbearing.analysis)
+    "guide_clearance": "m", "pocket_clearance": "m", "theoretical_cage_speed_nominal": "rad/s",
+    "transient_discarded": "s", "cage_slip_contact_angle": "rad",
+    # solver statistics
+    "solver_wall_time": "s", "solver_total_wall_time": "s", "solver_wall_time_s": "s", "solver_rtol": "1",
+    "solver_atol": "SI unit of each state times its scale (hsbearing.solvers.state.ATOL_SCALE)",
+    # quasi-static equilibrium
+    "inner_speed": "rad/s", "outer_speed": "rad/s", "applied_loads": "N, N, N, N m, N m (F_x, F_y, F_z, M_y, M_z)",
+    # gyro bearing (seed 000 model)
+    "contact_angle_deg": "degree", "ball_load_N": "N", "cage_mass_kg": "kg", "ball_cage_stiffness": "N/m^1.5",
+    "hunt_crossley_chi": "s/m", "creep_speed": "m/s", "cage_slip_speed": "m/s", "fine_interval": "s",
+    "pocket_clearance_m": "m", "oscillation_period": "s", "cage_gravity": "m/s^2", "cage_gravity_direction": "1",
+    "prl_inner": "1 (fraction of the contact semi-major axis)", "prl_outer": "1 (fraction of the contact semi-major axis)",
+    "start_ensemble_play_rad": "rad", "start_ensemble_duration_s": "s", "start_ensemble_wall_time_s": "s",
+    # wire-race preload sweep (seed 001 model)
+    "rolling_resistance": "m", "unconsidered_torque": "N m", "framework_weight": "N", "contact_angle": "rad",
+    "target_torque": "N m", "preload_window": "m",
+    # friction torque
+    "kinematic_viscosity_mm2_s": "mm^2/s",
+    # sweeps and studies
+    "sweep_wall_time": "s", "sweep_duration": "s",
+}
+
+
+def register_attr_units(name: str, units: str) -> None:
+    """Declare the unit of a global attribute ``name`` (see :data:`ATTR_UNITS`)."""
+    old = ATTR_UNITS.get(name)
+    if old is not None and old != units:
+        raise ValueError(f"global attribute {name!r} declared with units {old!r} and {units!r}")
+    ATTR_UNITS[name] = units
+
+
+def with_attr_units(attrs: Mapping[str, Any]) -> dict[str, Any]:
+    """``attrs`` plus ``NAME_units`` for every attribute of :data:`ATTR_UNITS` present (existing companions kept)."""
+    out = dict(attrs)
+    for name, units in ATTR_UNITS.items():
+        if name in attrs and f"{name}_units" not in attrs:
+            out[f"{name}_units"] = units
+    return out
 
 
 def make_dataset(
@@ -88,15 +139,18 @@ def make_dataset(
         dims = v.dims[len(v.dims) - arr.ndim :] if arr.ndim <= len(v.dims) else None
         if dims is None:
             raise ValueError(f"{name}: array has {arr.ndim} dims, declared {v.dims}")
-        vars_[name] = xr.Variable(dims, arr, attrs={"units": v.units, "long_name": v.long_name})
+        vars_[name] = xr.Variable(dims, arr, attrs=_var_attrs(v))
     ds = xr.Dataset(vars_)
     for cname, cval in (coords or {}).items():
-        c_attrs = {}
-        if cname in VARIABLES:
-            c_attrs = {"units": VARIABLES[cname].units, "long_name": VARIABLES[cname].long_name}
+        c_attrs = _var_attrs(VARIABLES[cname]) if cname in VARIABLES else {}
         ds = ds.assign_coords({cname: xr.Variable((cname,), np.asarray(cval), attrs=c_attrs)})
-    ds.attrs.update(_clean_attrs(attrs or {}))
+    ds.attrs.update(_clean_attrs(with_attr_units(attrs or {})))
     return ds
+
+
+def _var_attrs(v: Variable) -> dict[str, str]:
+    """``units`` (omitted for a text/label variable declared with units "") and ``long_name``."""
+    return {"units": v.units, "long_name": v.long_name} if v.units else {"long_name": v.long_name}
 
 
 def solver_attrs(stats: Mapping[str, Any]) -> dict[str, Any]:
@@ -134,9 +188,18 @@ def standard_attrs(case=None, status: str = "ok", **extra) -> dict[str, Any]:
         attrs["case_name"] = case.name
         attrs["case_system"] = case.system
         attrs["case_toml"] = case.to_toml()
-        attrs["case_source"] = case.source
+        attrs["case_source"] = _absolute_source(case.source)
     attrs.update(extra)
     return _clean_attrs(attrs)
+
+
+def _absolute_source(source) -> str:
+    """The case file as an absolute path when ``source`` names an existing file (else unchanged, e.g. ``<string>``)."""
+    try:
+        p = Path(str(source))
+        return str(p.resolve()) if p.is_file() else str(source)
+    except (OSError, ValueError):
+        return str(source)
 
 
 class atomic_write:
@@ -172,8 +235,14 @@ class atomic_write:
 
 
 def write_netcdf(ds: xr.Dataset, path: str | os.PathLike) -> Path:
-    """Write ``ds`` to ``path`` atomically (temporary file in the same directory, then rename), zlib-compressed."""
+    """Write ``ds`` to ``path`` atomically (temporary file in the same directory, then rename), zlib-compressed.
+
+    ``ds.attrs`` gains the ``NAME_units`` companions of :data:`ATTR_UNITS` it lacks (in place, so the
+    Dataset in memory and the archive carry the same attributes).
+    """
     path = Path(path)
+    for k, v in with_attr_units(ds.attrs).items():  # the unit companions (ATTR_UNITS) also on the caller's Dataset,
+        ds.attrs.setdefault(k, v)                     # so that what is written is what is in memory
     ds = ds.copy()
     ds.attrs = _clean_attrs(ds.attrs)
     encoding = {

@@ -40,7 +40,7 @@ from hsbearing.case import CaseError, load_case, parse_quantity
 from hsbearing.results import open_run, write_netcdf, atomic_write
 from hsbearing import sweeps
 
-__all__ = ["list_studies", "load_study", "run_study", "normalise_label", "write_report", "cli_main"]
+__all__ = ["list_studies", "study_help", "load_study", "run_study", "normalise_label", "write_report", "cli_main"]
 
 RUNS = "runs"
 FIGURES = "figures"
@@ -57,6 +57,18 @@ def list_studies() -> dict[str, str]:
         with contextlib.suppress(tomllib.TOMLDecodeError):
             out[p.stem] = tomllib.loads(p.read_text()).get("study", {}).get("title", "")
     return out
+
+
+def study_help() -> str:
+    """The bundled studies for ``hsbearing study --help``: name, title and measured runtime of each."""
+    lines = ["bundled studies:"]
+    for p in sorted(_studies_dir().glob("*.toml")):
+        with contextlib.suppress(tomllib.TOMLDecodeError):
+            st = tomllib.loads(p.read_text()).get("study", {})
+            lines.append(f"  {p.stem}: {st.get('title', '')}")
+            if st.get("runtime"):
+                lines.append(f"    runtime: {st['runtime']} (--duration shortens it)")
+    return "\n".join(lines)
 
 
 def normalise_label(label: str) -> str:

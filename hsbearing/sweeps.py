@@ -1015,7 +1015,9 @@ def _parse_vary(items: Sequence[str]) -> dict[str, str]:
 
 
 def print_table(ds: xr.Dataset, file=None) -> None:
-    """One line per point: varied values, status, a few summary values, error."""
+    """One line per point: varied values, status, a few summary values (with their units), error."""
+    from hsbearing.display import format_value
+
     file = file or sys.stdout
     keys = [v for v in ("mean_cage_slip_ratio", "whirl_amplitude", "classification", "mean_inner_contact_load",
                         "mean_outer_contact_load", "cage_speed", "sfmc", "sfmc_ensemble_mean", "sfmc_ensemble_sd",
@@ -1026,9 +1028,8 @@ def print_table(ds: xr.Dataset, file=None) -> None:
         pt = ds.isel(dict(zip_(dims, idx)))
         parts = [f"{str(c)[:-6]}={pt[c].values.item()}" for c in labels]
         parts.append(f"status={pt['status'].values.item()}")
-        for k in keys:
-            v = pt[k].values.item()
-            parts.append(f"{k}={v:.4g}" if isinstance(v, float) else f"{k}={v}")
+        for k in keys:  # in the units users read (hsbearing.display): um, r/min, %, uN m
+            parts.append(f"{k}={format_value(pt[k], k)}")
         if pt["error"].values.item():
             parts.append(f"error={pt['error'].values.item()}")
         print("  ".join(parts), file=file)

@@ -44,6 +44,13 @@ def generated() -> str:
         if name.startswith("test_only"):
             continue
         out.append(f"| `{name}` | {', '.join(v.dims) or 'scalar'} | {v.units} | {v.long_name} |")
+    from hsbearing.results import ATTR_UNITS
+
+    out += ["", "## Global attributes with units (`hsbearing.results.ATTR_UNITS`)", "",
+            "An archive stores next to each of these attributes a companion `NAME_units` (docs/output.md).", "",
+            "| attribute | units |", "|---|---|"]
+    for name in sorted(ATTR_UNITS):
+        out.append(f"| `{name}` | {ATTR_UNITS[name]} |")
     return "\n".join(out) + "\n"
 
 

@@ -35,7 +35,14 @@ from hsbearing.results import VARIABLES, register
 
 _trapz = getattr(np, "trapezoid", None) or np.trapz  # numpy < 2 has only trapz
 
-__all__ = ["annotate", "summary", "whirl_metrics", "whirl_frequency", "REQUIRED"]
+__all__ = ["annotate", "summary", "whirl_metrics", "whirl_frequency", "whirl_ratio_note", "REQUIRED",
+           "PARKED_MOTION_FRACTION", "PARKED_OFFSET_FRACTION"]
+
+#: A cage is "parked" when its centre, after the transient, moves less than this fraction of the guide
+#: clearance (RMS about its mean position) ...
+PARKED_MOTION_FRACTION = 0.05
+#: ... while that mean position lies at least this fraction of the clearance off the bearing axis.
+PARKED_OFFSET_FRACTION = 0.5
 
 #: Variables a dynamic-run Dataset must carry for :func:`annotate`.
 REQUIRED = ("time", "cage_speed", "cage_center_y", "cage_center_z")
@@ -133,6 +140,45 @@ def whirl_metrics(ds, transient=None) -> dict[str, float]:
     if np.isfinite(fw) and out["mean_cage_speed"] != 0:
         out["whirl_frequency_ratio"] = 2 * np.pi * fw / out["mean_cage_speed"]
     return out
+
+
+def whirl_ratio_note(ds, clearance: float | None = None) -> str | None:
+    """Why ``whirl_frequency_ratio`` is not defined for this run, or None when it is.
+
+    A cage pressed against its guide land (e.g. radial load + moment) does not whirl: its centre rests
+    at an offset and only jitters about it, so the dominant frequency of the (mean-removed) orbit is
+    that jitter -- typically the ball-pass frequency Z x cage speed -- not a whirl.  "Parked" here: after
+    the transient the centre moves less than :data:`PARKED_MOTION_FRACTION` of the guide clearance
+    (RMS about its mean position) while the mean position lies at least :data:`PARKED_OFFSET_FRACTION`
+    of the clearance off the axis.  ``clearance`` [m] defaults to ``attrs["guide_clearance"]``.
+    """
+    c = clearance if clearance is not None else ds.attrs.get("guide_clearance")
+    if c is None or not all(v in ds.variables for v in REQUIRED):
+        return None
+    c = float(c)
+    mask, _ = _pc.after_transient(ds)
+    y = np.asarray(ds["cage_center_y"].values, float)
+    z = np.asarray(ds["cage_center_z"].values, float)
+    mask = mask & np.isfinite(y) & np.isfinite(z)
+    if not (c > 0 and mask.sum() >= 2):
+        return None
+    y, z = y[mask], z[mask]
+    yc, zc = float(np.mean(y)), float(np.mean(z))
+    offset = math.hypot(yc, zc)
+    motion = math.sqrt(float(np.mean((y - yc) ** 2 + (z - zc) ** 2)))
+    if not (motion < PARKED_MOTION_FRACTION * c and offset >= PARKED_OFFSET_FRACTION * c):
+        return None
+    text = (f"cage parked: its centre rests {offset * 1e6:.0f} \u00b5m off the axis ({100 * offset / c:.0f} % of the "
+            f"{c * 1e6:.0f} \u00b5m guide clearance) and moves only {motion * 1e6:.2g} \u00b5m RMS about that point, so it does not whirl")
+    if "whirl_frequency" in ds and "mean_cage_speed" in ds:
+        fw, wc = float(ds["whirl_frequency"]), float(ds["mean_cage_speed"])
+        if np.isfinite(fw) and np.isfinite(wc) and wc != 0:
+            k = abs(2 * np.pi * fw / wc)
+            text += f"; the {abs(fw):.4g} Hz peak of that jitter is {k:.2f} x the cage speed"
+            nb = ds.sizes.get("ball")
+            if nb and abs(k - nb) < 0.05 * nb:
+                text += f" (ball pass, Z = {nb})"
+    return text
 
 
 def annotate(ds: xr.Dataset, case=None, *, alpha=None, section: str = "cage_revolution",

@@ -1028,22 +1028,26 @@ def ensemble_lines(ds) -> list[str]:
     vals = np.asarray(ds["sfmc_ensemble"].values, dtype=float)
     offs = np.asarray(ds["start_offset"].values, dtype=float)
     lines = [(f"start ensemble: SFMC = {float(ds['sfmc_ensemble_mean']) * u:.4g} +/- {float(ds['sfmc_ensemble_sd']) * u:.4g} "
-              f"uN m (mean +/- sample sd of {vals.size} constant-rate starts, cage turned by start_offset of its play)")]
+              f"\u00b5N m (mean +/- sample sd of {vals.size} constant-rate starts, cage turned by start_offset of its play)")]
     for f, v in zip(offs, vals):
-        lines.append(f"  start_offset {f:5g}: SFMC {v * u:.4g} uN m" + (" (the default start)" if f == 0.0 else ""))
+        lines.append(f"  start_offset {f:5g}: SFMC {v * u:.4g} \u00b5N m" + (" (the default start)" if f == 0.0 else ""))
     return lines
 
 
 def _simulate_one(case, duration=None, progress: bool = False, *, fine_interval: float = 5e-6,
                   wall_limit: float | None = None, settle: bool = True, cage_offset=(0.0, 0.0, 0.0),
-                  cage_angle: float = 0.0, **kw):
-    """One run of :func:`simulate`, without the start ensemble."""
+                  cage_angle: float = 0.0, progress_desc: str = "gyro", **kw):
+    """One run of :func:`simulate`, without the start ensemble (``progress_desc``: label of the progress bar)."""
     from hsbearing.solvers.cvode import integrate
 
     if isinstance(duration, str):
         from hsbearing.case import parse_quantity
 
         duration = parse_quantity(duration, "time", source="duration", key="duration")
+    if progress:  # say so before a first-run compilation (hsbearing.jit)
+        from hsbearing.jit import compile_notice
+
+        compile_notice((_kernel,), "the gyro model", seconds=5)
     model = build_model(case, **kw)
     sim = case.simulation
     T_end = float(duration if duration is not None else sim.duration)
@@ -1056,9 +1060,12 @@ def _simulate_one(case, duration=None, progress: bool = False, *, fine_interval:
     n_out = int(math.floor(T_end / dt_out + 1e-9))
     t_fine = np.linspace(0.0, n_out * dt_out, n_out * nsub + 1)
     y0 = model.y0(settle=settle, cage_offset=cage_offset, cage_angle=cage_angle)
+    from hsbearing.jit import warm_up
+
+    warm_up(model.rhs, y0)  # compile the read-only-state signature CVODE uses before the progress bar starts
     res = integrate(model.rhs, y0, t_fine, rtol=min(sim.rtol, 1e-6), atol=model.atol,
                     max_step=min(model.case.operating.ramp_time, 0.01), max_num_steps=200000,
-                    progress=progress, progress_desc="gyro", wall_limit=wall_limit)
+                    progress=progress, progress_desc=progress_desc, wall_limit=wall_limit)
     ds = _assemble(model, res, nsub)
     ds.attrs["cage_start"] = ("settled" if settle else "centred") + (
         f", offset {list(map(float, cage_offset))} m" if any(cage_offset) else "") + (
@@ -1200,35 +1207,13 @@ def study(case, key: str, values, *, duration=None, out_dir=None, jobs: int = 1,
 
 
 def plot_run(ds, path) -> Path:
-    """Figure of a gyro run (like [J] Figs. 7-9): speeds, M_C, the five sources and M; returns the PNG path."""
-    from matplotlib.figure import Figure
+    """Figure of a gyro run (like [J] Figs. 7-9): speeds, M_C, the five sources and M; returns the PNG path.
 
-    path = Path(path)
-    t = ds["time"].values
-    fig = Figure(figsize=(8, 8), layout="constrained")
-    ax = fig.subplots(3, 1, sharex=True)
-    ax[0].plot(t, ds["ball_orbit_speed"].isel(ball=0).values, "k-", lw=1, label="ball 1 orbit speed")
-    ax[0].plot(t, ds["cage_speed"].values, "r-", lw=0.8, label="cage speed")
-    ax[0].set_ylabel("angular speed [rad/s]")
-    ax[0].legend(loc="best", fontsize=8)
-    u = 1e6
-    ax[1].plot(t, ds["friction_moment_cage"].values * u, "m-", lw=0.8)
-    ax[1].set_ylabel(r"$M_C$ [$\mu$N m]")
-    for name, lab, col in [("friction_moment_viscous", "M_L", "c"), ("friction_moment_hysteresis", "M_E", "g"),
-                           ("friction_moment_differential", "M_D", "orange"), ("friction_moment_pivoting", "M_S", "brown"),
-                           ("friction_moment_cage", "M_C", "m"), ("friction_moment_total", "M", "b")]:
-        ax[2].plot(t, np.maximum(ds[name].values, 0) * u, color=col, lw=1 if name != "friction_moment_total" else 1.2, label=lab)
-    ax[2].set_ylabel(r"friction moment [$\mu$N m]")
-    ax[2].set_xlabel("time [s]")
-    ax[2].legend(loc="upper right", fontsize=8, ncol=3)
-    title = f"{ds.attrs.get('case_name', '')}: " + ", ".join(
-        f"{v.upper()} = {float(ds[v]) * u:.3g} uN m" for v in ("sfmc", "sfmo", "rfmc") if v in ds and np.isfinite(float(ds[v])))
-    if ds.attrs.get("status", "ok") != "ok":
-        title += f" [{ds.attrs['status']}]"
-    fig.suptitle(title, fontsize=9)
-    from hsbearing.plotting import save_figure
+    Drawn by :func:`hsbearing.plotting.plot_gyro` (figures live in the plotting module).
+    """
+    from hsbearing.plotting import plot_gyro
 
-    return save_figure(fig, path)
+    return plot_gyro(ds, Path(path))
 
 
 def circumferential_play_angle(D, Dp, k, dm):
@@ -1263,8 +1248,10 @@ def _ensemble_sfmc(case, offsets, duration: float | None = None, *, cage_angle: 
     T = duration if duration is not None else case.operating.oscillation_period
     # a constant-rate case is used as it is, so that offset 0 is bit for bit the plain start of that case
     c = case if case.operating.mode == "constant" else override(case, **{"operating.mode": "constant"})
-    for f in offsets:
-        yield float(_simulate_one(c, duration=T, cage_angle=cage_angle + f * play, **kw)["sfmc"])
+    n = len(offsets)
+    for k, f in enumerate(offsets, 1):  # each progress bar says which start it is
+        yield float(_simulate_one(c, duration=T, cage_angle=cage_angle + f * play,
+                                  progress_desc=f"gyro start {k}/{n} (offset {f:+g})", **kw)["sfmc"])
 
 
 def start_ensemble(case, n: int = 5, duration: float | None = None, **kw):

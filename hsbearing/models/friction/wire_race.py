@@ -646,7 +646,8 @@ def parse_range(text: str, kind: str, option: str, n: int = 31) -> np.ndarray:
 def _format_table(ds: xr.Dataset) -> list[str]:
     head = (f"{'preload':>8} {'F1':>9} {'F2':>9} {'F3':>9} {'F4':>9} {'delta1':>7} {'delta2':>7} {'delta3':>7} {'delta4':>7} "
             f"{'P01':>6} {'P02':>6} {'P03':>6} {'P04':>6} {'M_sc':>8} {'M_s':>8}")
-    units = (f"{'[um]':>8} {'[N]':>9} {'[N]':>9} {'[N]':>9} {'[N]':>9} {'[um]':>7} {'[um]':>7} {'[um]':>7} {'[um]':>7} "
+    um = "[\u00b5m]"
+    units = (f"{um:>8} {'[N]':>9} {'[N]':>9} {'[N]':>9} {'[N]':>9} {um:>7} {um:>7} {um:>7} {um:>7} "
              f"{'[GPa]':>6} {'[GPa]':>6} {'[GPa]':>6} {'[GPa]':>6} {'[N m]':>8} {'[N m]':>8}")
     lines = [head, units]
     for i in range(ds.sizes["preload"]):
@@ -687,10 +688,16 @@ def cli_main(args) -> int:
     for line in _format_table(ds):
         print(line)
     print("M_sc: rolling-resistance torque, Eq. 4; M_s = M_sc + M_u, Eq. 11")
+    from hsbearing.display import contact_pressure_warning
+
+    p_all = np.max([ds[f"p_max{j}"].values for j in range(1, 5)], axis=0)
+    warn = contact_pressure_warning(p_all, f"at preload {float(ds['preload'].values[int(np.nanargmax(p_all))]) * 1e6:.4g} \u00b5m")
+    if warn:
+        print(warn, file=sys.stderr)
     if window is not None:
         ds.attrs["target_torque"] = list(target)
         ds.attrs["preload_window"] = [window[0], window[1]]
-        print(f"preload window for {target[0]:g}..{target[1]:g} N m: {window[0] * 1e6:.2f} .. {window[1] * 1e6:.2f} um")
+        print(f"preload window for {target[0]:g}..{target[1]:g} N m: {window[0] * 1e6:.2f} .. {window[1] * 1e6:.2f} \u00b5m")
     if out:
         write_netcdf(ds, out)
         print(f"archive: {out}")
