@@ -64,7 +64,7 @@ for _n, _d, _u, _l in [
     ("outer_rolling_speed", ("time", "ball"), "m/s", "entrainment (rolling) speed U at the outer contact"),
     ("inner_rolling_force", ("time", "ball"), "N", "EHL hydrodynamic rolling force F_R at the inner contact"),
     ("outer_rolling_force", ("time", "ball"), "N", "EHL hydrodynamic rolling force F_R at the outer contact"),
-    ("ball_cage_force", ("time", "ball"), "N", "ball/cage-pocket normal force Q_c"),
+    ("ball_cage_force", ("time", "ball"), "N", "ball/cage-pocket force on the ball in the pocket plane Q_c (film + contact + friction)"),
     ("ball_cage_friction", ("time", "ball"), "N", "ball/cage-pocket sliding friction force P_S (magnitude)"),
     ("ball_drag_force", ("time", "ball"), "N", "drag of the air-oil mixture on the ball F_D (signed, circumferential)"),
     ("ball_cage_film_load", ("time", "ball"), "N", "ball/cage-pocket film: pressure integrated over the pocket wall (both sides)"),

@@ -346,9 +346,10 @@ def pocket_film_power(Fx, Fr, Ft, Mx, Mr, Mt, vx, vr, vt, wx, wr, wt):
 def pocket_wrench(ex, et, s0, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, R_out, hdm, n_st, h_c, K, mu, v0):
     """Total pocket wrench on the ball: film (rigid isoviscous, floored at h_c) + Hertz + boundary friction.
 
-    Returns (Fx, Fr, Ft, Mx, Mr, Mt, Q_film, Q_solid, P_film, P_boundary) in the pocket frame:
+    Returns (Fx, Fr, Ft, Mx, Mr, Mt, Q_film, Q_solid, P_film, P_boundary, P_S) in the pocket frame:
     force [N] and moment about the ball centre [N m] on the ball, the film normal load, the Hertz
-    load and the powers dissipated by the film and by boundary friction [W].
+    load, the powers dissipated by the film and by boundary friction [W] (sources ``pocket_film``
+    and ``pocket_boundary``) and the boundary friction force magnitude P_S [N].
     """
     c = Rp - Rb
     e = math.sqrt(ex * ex + et * et)
@@ -363,6 +364,7 @@ def pocket_wrench(ex, et, s0, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, R_out
         Pf = pocket_film_power(Fx, Fr, Ft, Mx, Mr, Mt, vx, vr, vt, wx, wr, wt)
     Qs = pocket_elastic_force(e, c, K)
     Pb = 0.0
+    fb = 0.0
     if Qs > 0.0:
         nx, nt = ex / e, et / e
         Fx -= Qs * nx
@@ -387,4 +389,4 @@ def pocket_wrench(ex, et, s0, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, R_out
                 Mr += pt * gx - px * gt
                 Mt += px * gr - pr * gx
                 Pb = fb * vs
-    return Fx, Fr, Ft, Mx, Mr, Mt, Qf, Qs, Pf, Pb
+    return Fx, Fr, Ft, Mx, Mr, Mt, Qf, Qs, Pf, Pb, fb
