@@ -62,59 +62,49 @@ __all__ = ["station_film", "station_angle", "pocket_edges", "pocket_film_wrench"
 
 # ---------------------------------------------------------------- 1-D line-contact integrals
 @njit(cache=True, inline="always")
-def _k2(xi):
-    """int_0^xi dxi / (1 + xi^2)^2."""
+def _kk(xi, at):
+    """int_0^xi dxi/H^2, int_0^xi dxi/H^3 and an antiderivative of xi/H^3, H = 1 + xi^2 (at = atan(xi))."""
     H = 1.0 + xi * xi
-    return 0.5 * (xi / H + math.atan(xi))
-
-
-@njit(cache=True, inline="always")
-def _k3(xi):
-    """int_0^xi dxi / (1 + xi^2)^3."""
-    H = 1.0 + xi * xi
-    return xi / (4.0 * H * H) + 3.0 * xi / (8.0 * H) + 0.375 * math.atan(xi)
-
-
-@njit(cache=True, inline="always")
-def _m3(xi):
-    """An antiderivative of xi / (1 + xi^2)^3."""
-    H = 1.0 + xi * xi
-    return -0.25 / (H * H)
+    return 0.5 * (xi / H + at), xi / (4.0 * H * H) + 3.0 * xi / (8.0 * H) + 0.375 * at, -0.25 / (H * H)
 
 
 @njit(cache=True)
-def _station_dimless(A, beta, lo, hi):
-    """Dimensionless line contact with A >= 0: returns (xi_1, xi_2, gamma, IP, IPxi).
+def _station_dimless(A, beta, lo, hi, at_lo, at_hi):
+    """Dimensionless line contact with A >= 0: returns (xi_2, IP, IPxi, pressurised).
 
-    dP/dxi = A / H^2 + beta xi / H^3 + gamma / H^3, H = 1 + xi^2, P(xi_1) = P(xi_2) = 0,
-    P > 0 inside, p >= 0 complementarity (Reynolds exit condition P = P' = 0 at a free xi_2).
-    IP = int P dxi, IPxi = int P xi dxi over [xi_1, xi_2].
+    dP/dxi = A / H^2 + beta xi / H^3 + gamma / H^3, H = 1 + xi^2, P(lo) = P(xi_2) = 0, P > 0
+    inside, p >= 0 complementarity (Reynolds exit condition P = P' = 0 at a free xi_2 < hi).
+    IP = int P dxi, IPxi = int P xi dxi over [lo, xi_2]; at_lo, at_hi = atan(lo), atan(hi).
     """
     if A <= 0.0:
         if beta >= 0.0:
-            return lo, lo, 0.0, 0.0, 0.0
+            return lo, 0.0, 0.0
         x2 = hi  # pure approach: the whole wall is pressurised
+        at2 = at_hi
     else:
         xs = -beta / (2.0 * A)  # source 2 A xi + beta < 0 for xi < xs: pressure builds there
         if xs <= lo:
-            return lo, lo, 0.0, 0.0, 0.0
-        k2l, k3l, m3l = _k2(lo), _k3(lo), _m3(lo)
+            return lo, 0.0, 0.0
+        k2l, k3l, m3l = _kk(lo, at_lo)
         # free boundary G(x2) = P(x2) with gamma = -(A H2 + beta x2); G > 0 on (lo, xs], concave, decreasing after
-        Hh = 1.0 + hi * hi
-        Ghi = A * (_k2(hi) - k2l) + beta * (_m3(hi) - m3l) - (A * Hh + beta * hi) * (_k3(hi) - k3l)
+        k2h, k3h, m3h = _kk(hi, at_hi)
+        Ghi = A * (k2h - k2l) + beta * (m3h - m3l) - (A * (1.0 + hi * hi) + beta * hi) * (k3h - k3l)
         if Ghi >= 0.0:
             x2 = hi
+            at2 = at_hi
         else:
-            # safeguarded Newton inside the bracket (max(xs, lo), hi)
+            # Newton inside the bracket (xs, hi)
             a_ = xs
             b_ = hi
             x = xs + 0.5 * math.sqrt(1.0 + xs * xs)
             if x >= b_:
-                x = 0.5 * (a_ + b_)
+                x = b_
+            at2 = at_hi
             for _ in range(60):
-                H2 = 1.0 + x * x
-                dk3 = _k3(x) - k3l
-                G = A * (_k2(x) - k2l) + beta * (_m3(x) - m3l) - (A * H2 + beta * x) * dk3
+                at2 = math.atan(x)
+                k2x, k3x, m3x = _kk(x, at2)
+                dk3 = k3x - k3l
+                G = A * (k2x - k2l) + beta * (m3x - m3l) - (A * (1.0 + x * x) + beta * x) * dk3
                 if G > 0.0:
                     a_ = x
                 else:
@@ -126,15 +116,15 @@ def _station_dimless(A, beta, lo, hi):
                     # overshoots; from the right bracket point (G < 0) Newton converges monotonically
                     xn = b_ if G > 0.0 else 0.5 * (a_ + b_)
                 if abs(xn - x) <= 1e-11 * (1.0 + abs(x)):
-                    x = xn
                     break
                 x = xn
             x2 = x
-    k2l, k3l, m3l = _k2(lo), _k3(lo), _m3(lo)
+    k2l, k3l, m3l = _kk(lo, at_lo)
+    k2x, k3x, m3x = _kk(x2, at2)
     H2 = 1.0 + x2 * x2
-    dk2 = _k2(x2) - k2l
-    dk3 = _k3(x2) - k3l
-    dm3 = _m3(x2) - m3l
+    dk2 = k2x - k2l
+    dk3 = k3x - k3l
+    dm3 = m3x - m3l
     if x2 < hi:
         gamma = -(A * H2 + beta * x2)
     else:  # full film to the far edge: P(hi) = 0
@@ -142,11 +132,26 @@ def _station_dimless(A, beta, lo, hi):
     Hl = 1.0 + lo * lo
     d1 = -0.5 / H2 + 0.5 / Hl  # [int xi/H^2]
     d2 = -0.25 / (H2 * H2) + 0.25 / (Hl * Hl)  # [int xi/H^3]
-    dat = math.atan(x2) - math.atan(lo)
+    dat = at2 - at_lo
     # int P = -int xi P' ; int P xi = -(1/2) int xi^2 P'   (P = 0 at both ends)
     IP = -(A * d1 + beta * (dk2 - dk3) + gamma * d2)
     IPxi = -0.5 * (A * (dat - dk2) + beta * (d1 + d2) + gamma * (dk2 - dk3))
-    return lo, x2, gamma, IP, IPxi
+    return x2, IP, IPxi
+
+
+@njit(cache=True, inline="always")
+def _station(a, U_e, F0, lo, hi, at_lo, at_hi, L, eta):
+    """:func:`station_film` on the dimensionless edges (lo, hi) = x/L with their atans given: (W, Wx, x1, x2) / L."""
+    A = 6.0 * eta * U_e
+    beta = F0 * L / a
+    if A >= 0.0:
+        x2, IP, IPxi = _station_dimless(A, beta, lo, hi, at_lo, at_hi)
+        x1 = lo
+    else:  # mirror xi -> -xi: (A, beta, gamma) -> (-A, beta, -gamma)
+        x2m, IP, IPxi = _station_dimless(-A, beta, -hi, -lo, -at_hi, -at_lo)
+        x1, x2 = -x2m, hi
+        IPxi = -IPxi
+    return (L * L / (a * a)) * IP, (L * L * L / (a * a)) * IPxi, x1, x2  # p = (L/a^2) P, dx = L dxi
 
 
 @njit(cache=True)
@@ -169,17 +174,8 @@ def station_film(a, U_e, F0, x_lo, x_hi, R, eta):
     W : int p dx [N/m]; Wx : int p x dx [N]; x1, x2 : pressurised interval [m].
     """
     L = math.sqrt(2.0 * R * a)
-    A = 6.0 * eta * U_e
-    beta = F0 * L / a
     lo, hi = x_lo / L, x_hi / L
-    if A >= 0.0:
-        x1, x2, g, IP, IPxi = _station_dimless(A, beta, lo, hi)
-    else:  # mirror xi -> -xi: (A, beta, gamma) -> (-A, beta, -gamma)
-        x1m, x2m, g, IP, IPxi = _station_dimless(-A, beta, -hi, -lo)
-        x1, x2 = -x2m, -x1m
-        IPxi = -IPxi
-    W = (L * L / (a * a)) * IP  # p = (L/a^2) P, dx = L dxi
-    Wx = (L * L * L / (a * a)) * IPxi
+    W, Wx, x1, x2 = _station(a, U_e, F0, lo, hi, math.atan(lo), math.atan(hi), L, eta)
     return W, Wx, x1 * L, x2 * L
 
 
@@ -237,16 +233,19 @@ def pocket_film_wrench(ex, et, s0, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, 
         cte, ste = ex / e, et / e
     else:
         cte, ste = 1.0, 0.0
-    k = ((c - e) / (c + e)) ** 0.25
+    k = math.sqrt(math.sqrt((c - e) / (c + e)))  # station_angle with half the exponent (docstring there)
     Fx = Fr = Ft = 0.0
     Mx = Mr = Mt = 0.0
     Wn = 0.0
     dtau = 2.0 * math.pi / n_st
     for i in range(n_st):
-        tau = (i + 0.5) * dtau - math.pi
-        ph, dph = station_angle(tau, k)
+        # station_angle in rational form: T = k tan(tau/2), cos = (1 - T^2)/(1 + T^2), sin = 2 T/(1 + T^2)
+        tq = math.tan(0.5 * ((i + 0.5) * dtau - math.pi))
+        T = k * tq
+        den = 1.0 / (1.0 + T * T)
+        cp, sp = (1.0 - T * T) * den, 2.0 * T * den
+        dph = k * (1.0 + tq * tq) * den
         # station angle in the pocket plane: measured from the offset direction
-        cp, sp = math.cos(ph), math.sin(ph)
         cth = cte * cp - ste * sp
         sth = ste * cp + cte * sp
         a = c - e * cp  # a = c - e . n
@@ -261,13 +260,13 @@ def pocket_film_wrench(ex, et, s0, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, 
         hs = e * sp / Rp  # dh/ds = -(e . theta_hat)/R_p
         F0 = 6.0 * eta * dUs * hs - 12.0 * eta * vn
         xlo, xhi = pocket_edges(sth, Rp, R_bore, R_out, hdm)
-        xlo -= s0
-        xhi -= s0
-        W, Wx, x1, x2 = station_film(a, Ue, F0, xlo, xhi, Rb, eta)
-        # Couette integrals over the wetted wall: int dx/h, int x dx/h
         L = math.sqrt(2.0 * Rb * a)
-        I1 = (L / a) * (math.atan(xhi / L) - math.atan(xlo / L))
-        I1x = Rb * math.log((a + xhi * xhi / (2.0 * Rb)) / (a + xlo * xlo / (2.0 * Rb)))
+        lo, hi = (xlo - s0) / L, (xhi - s0) / L
+        at_lo, at_hi = math.atan(lo), math.atan(hi)
+        W, Wx, x1, x2 = _station(a, Ue, F0, lo, hi, at_lo, at_hi, L, eta)
+        # Couette integrals over the wetted wall: int dx/h, int x dx/h
+        I1 = (L / a) * (at_hi - at_lo)
+        I1x = Rb * math.log((1.0 + hi * hi) / (1.0 + lo * lo))
         Tu = -eta * dUu * I1 + 0.5 * Wx / Rb  # shear on the ball along e_r: Couette + Poiseuille
         Ts = -eta * dUs * I1  # along theta_hat
         Tsx = -eta * dUs * I1x
