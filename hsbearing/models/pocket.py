@@ -61,14 +61,14 @@ __all__ = ["station_film", "station_angle", "pocket_edges", "pocket_film_wrench"
 
 
 # ---------------------------------------------------------------- 1-D line-contact integrals
-@njit(cache=True, inline="always")
+@njit(cache=True, fastmath=True, inline="always")
 def _kk(xi, at):
     """int_0^xi dxi/H^2, int_0^xi dxi/H^3 and an antiderivative of xi/H^3, H = 1 + xi^2 (at = atan(xi))."""
     H = 1.0 + xi * xi
     return 0.5 * (xi / H + at), xi / (4.0 * H * H) + 3.0 * xi / (8.0 * H) + 0.375 * at, -0.25 / (H * H)
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=True)
 def _station_dimless(A, beta, lo, hi, at_lo, at_hi):
     """Dimensionless line contact with A >= 0: returns (xi_2, IP, IPxi, pressurised).
 
@@ -96,7 +96,8 @@ def _station_dimless(A, beta, lo, hi, at_lo, at_hi):
             # Newton inside the bracket (xs, hi)
             a_ = xs
             b_ = hi
-            x = xs + 0.5 * math.sqrt(1.0 + xs * xs)
+            # start: Martin's exit 0.475 (infinite inlet, no source) scaled by the local width sqrt(1 + xs^2)
+            x = xs + 0.475 * math.sqrt(1.0 + xs * xs)
             if x >= b_:
                 x = b_
             at2 = at_hi
@@ -115,7 +116,10 @@ def _station_dimless(A, beta, lo, hi, at_lo, at_hi):
                     # G is concave and decreasing beyond xs: from a point left of the root the Newton step
                     # overshoots; from the right bracket point (G < 0) Newton converges monotonically
                     xn = b_ if G > 0.0 else 0.5 * (a_ + b_)
-                if abs(xn - x) <= 1e-11 * (1.0 + abs(x)):
+                elif abs(xn - x) <= 1e-6 * (1.0 + abs(x)):
+                    # quadratic convergence: xn is exact to ~1e-12; atan(xn) to first order (error ~ step^2)
+                    at2 += (xn - x) / (1.0 + x * x)
+                    x = xn
                     break
                 x = xn
             x2 = x
@@ -139,7 +143,7 @@ def _station_dimless(A, beta, lo, hi, at_lo, at_hi):
     return x2, IP, IPxi
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, fastmath=True, inline="always")
 def _station(a, U_e, F0, lo, hi, at_lo, at_hi, L, eta):
     """:func:`station_film` on the dimensionless edges (lo, hi) = x/L with their atans given: (W, Wx, x1, x2) / L."""
     A = 6.0 * eta * U_e
@@ -207,7 +211,7 @@ def pocket_edges(sin_theta, Rp, R_bore, R_out, hdm):
     return math.sqrt(R_bore * R_bore - t2) - hdm, math.sqrt(R_out * R_out - t2) - hdm
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=True)
 def pocket_film_wrench(ex, et, s0, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, R_out, hdm, n_st):
     """Film force and moment on the ball from a rigid isoviscous film in its cylindrical pocket.
 
@@ -238,9 +242,13 @@ def pocket_film_wrench(ex, et, s0, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, 
     Mx = Mr = Mt = 0.0
     Wn = 0.0
     dtau = 2.0 * math.pi / n_st
+    # half-angles tau/2 = -pi/2 + (i + 1/2) dtau/2 by a rotation recurrence (no tan per station)
+    ch, sh = math.sin(0.25 * dtau), -math.cos(0.25 * dtau)
+    cd, sd = math.cos(0.5 * dtau), math.sin(0.5 * dtau)
     for i in range(n_st):
         # station_angle in rational form: T = k tan(tau/2), cos = (1 - T^2)/(1 + T^2), sin = 2 T/(1 + T^2)
-        tq = math.tan(0.5 * ((i + 0.5) * dtau - math.pi))
+        tq = sh / ch
+        ch, sh = ch * cd - sh * sd, sh * cd + ch * sd
         T = k * tq
         den = 1.0 / (1.0 + T * T)
         cp, sp = (1.0 - T * T) * den, 2.0 * T * den
