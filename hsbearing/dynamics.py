@@ -324,7 +324,7 @@ def mechanical_energy(model: DynamicModel, y) -> np.ndarray:
         di = (Qi / P[K.P_KI]) ** (2.0 / 3.0)
         do = (Qo / P[K.P_KO]) ** (2.0 / 3.0)
         E[k] += (0.4 * Qi * di).sum() + (0.4 * Qo * do).sum()
-        Qc = aux[:, 12]
+        Qc = aux[:, K.AUX_INDEX["Q_solid"]]  # Hertz part of the pocket load (the film is off without damping)
         dc = (Qc / P[K.P_KC]) ** (2.0 / 3.0)
         E[k] += (0.4 * Qc * dc).sum()
     # elastic rub of the cage on the guide land: 2/5 K_land (e - c)^2.5
