@@ -472,6 +472,8 @@ def read_case_text(path: str | Path) -> str:
         raise CaseError(str(path), None, f"cannot read the case file ({exc.strerror or type(exc).__name__})") from None
     if head.startswith((b"\x89HDF", b"CDF")):  # a netCDF archive: the case stored in it (``hsbearing run OUT.nc``)
         return case_text_from_archive(path)
+    if path.suffix == ".nc":
+        raise CaseError(str(path), None, "not a netCDF archive (and not a TOML case: the name ends in .nc)")
     try:
         return path.read_bytes().decode("utf-8")
     except UnicodeDecodeError as exc:
@@ -772,8 +774,8 @@ def _check_possible(case: Case, source: str) -> None:
             raise CaseError(source, "cage.outside_diameter", f"cage {mm(c.outside_diameter)} is larger than the "
                             f"bearing (outside diameter {mm(b.outside_diameter)})")
         if c.guidance == "outer_ring" and b.outer_land_diameter is not None and c.outside_diameter >= b.outer_land_diameter:
-            raise CaseError(source, "cage.outside_diameter", f"outer-ring guided cage {mm(c.outside_diameter)} does not "
-                            f"fit in the guide land {mm(b.outer_land_diameter)} (bearing.outer_land_diameter)")
+            raise CaseError(source, "bearing.outer_land_diameter", f"guide land {mm(b.outer_land_diameter)} is not "
+                            f"larger than the outer-ring guided cage (cage.outside_diameter {mm(c.outside_diameter)})")
     if c.bore_diameter is not None:
         if c.bore_diameter >= dm:
             raise CaseError(source, "cage.bore_diameter", f"cage bore {mm(c.bore_diameter)} must be smaller than the "
@@ -784,8 +786,8 @@ def _check_possible(case: Case, source: str) -> None:
             raise CaseError(source, "cage.bore_diameter", f"cage bore {mm(c.bore_diameter)} is inside the bearing bore "
                             f"{mm(b.bore_diameter)}")
         if c.guidance == "inner_ring" and b.inner_land_diameter is not None and c.bore_diameter <= b.inner_land_diameter:
-            raise CaseError(source, "cage.bore_diameter", f"inner-ring guided cage bore {mm(c.bore_diameter)} does not "
-                            f"clear the guide land {mm(b.inner_land_diameter)} (bearing.inner_land_diameter)")
+            raise CaseError(source, "bearing.inner_land_diameter", f"guide land {mm(b.inner_land_diameter)} is not "
+                            f"smaller than the inner-ring guided cage bore (cage.bore_diameter {mm(c.bore_diameter)})")
     check_output_samples(case, source=source)
 
 

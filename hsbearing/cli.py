@@ -385,7 +385,9 @@ def main(argv: list[str] | None = None) -> int:
         parser.print_help()
         return 2
     try:
-        return int(args.func(args) or 0)
+        rc = int(args.func(args) or 0)
+        sys.stdout.flush()  # a closed pipe shows here (BrokenPipeError below), not in the interpreter's exit
+        return rc
     except CaseError as exc:
         print(f"hsbearing: error: {exc}", file=sys.stderr)
         return 2
