@@ -187,17 +187,6 @@ def test_write_failure_leaves_no_temporary(tmp_path):
     assert _files(tmp_path) == {"x.nc"}
 
 
-def test_contact_angle_near_90_is_a_numerical_failure(work, capsys, monkeypatch):
-    """89 deg is a valid case; the equilibrium solver does not converge there: exit 1, one line, no traceback."""
-    monkeypatch.undo()
-    monkeypatch.chdir(work)
-    rc = cli.main(["quasistatic", "--set", "contact_angle=89 deg"])
-    err = capsys.readouterr().err
-    assert rc in (0, 1) and "Traceback" not in err
-    if rc == 1:
-        assert len(err.strip().splitlines()) == 1 and err.startswith("hsbearing: numerical failure:")
-
-
 def test_closed_stdout_pipe_is_not_an_error(tmp_path):
     """``hsbearing check ... | head -1``: the reader is gone before we print; no BrokenPipeError traceback."""
     p = subprocess.Popen([HSBEARING, "check", "zhang2016"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=tmp_path)
@@ -246,7 +235,7 @@ def test_case_round_trip_any_text():
 
     base = load_case("zhang2016")
 
-    @settings(max_examples=60, deadline=None)
+    @settings(max_examples=20, deadline=None)
     @given(st.text(st.characters(blacklist_categories=("Cs",)), max_size=40))
     def check(text):
         c = base.with_overrides(**{"case.description": text})
