@@ -98,9 +98,12 @@ def _keep_interrupted(partial, out: Path) -> int:
     from hsbearing.results import write_netcdf
 
     if partial is not None and partial.sizes.get("time", 0) > 1:
+        t = float(partial["time"].values[-1])
+        partial = partial.copy()
+        partial.attrs["status"] = f"interrupted at t = {t:.6g} s"  # also for integrators that say "failed ...: interrupted"
         write_netcdf(partial, out)
-        hint = f"; continue it: hsbearing run --continue {out}" if "final_state" in partial else ""
-        print(f"hsbearing: interrupted ({partial.attrs.get('status', '')}); partial run in {out}{hint}", file=sys.stderr)
+        hint = f" (continue it: hsbearing run --continue {out})" if "final_state" in partial else ""
+        print(f"hsbearing: interrupted at t = {t:.6g} s; partial run in {out}{hint}", file=sys.stderr)
     else:
         print("hsbearing: interrupted (nothing computed yet, nothing written)", file=sys.stderr)
     return 130

@@ -378,7 +378,7 @@ def test_ctrl_c_keeps_partial_run_and_continue_extends_it(tmp_path, capsys):
     assert p.returncode == 130, err
     assert "Traceback" not in err
     last = err.replace("\r", "\n").strip().splitlines()[-1]
-    assert last.startswith("hsbearing: interrupted (interrupted at t = ") and "--continue" in last
+    assert last.startswith("hsbearing: interrupted at t = ") and f"partial run in {out}" in last and "--continue" in last
     ds = hsbearing.open_run(out)
     t_end = float(ds.time[-1])
     assert ds.attrs["status"] == f"interrupted at t = {t_end:.6g} s"
