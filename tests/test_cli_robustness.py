@@ -422,3 +422,38 @@ def test_continue_refuses_what_it_cannot_continue(work, capsys):
     _one_error_line(capsys, rc, r"q.nc: final_state: not a dynamic run")
     rc = cli.main(["run", "--continue", "missing.nc"])
     _one_error_line(capsys, rc, r"missing.nc: no such archive")
+
+
+def test_interrupt_status_of_another_integrator_is_kept_as_interrupt(tmp_path, monkeypatch, capsys):
+    """The gyro model reports Ctrl-C as a SolverError "... interrupted": still exit 130 and the partial run kept."""
+    from hsbearing.results import standard_attrs
+
+    case = load_case("jiang2014_gyro")
+    part = xr.Dataset({"x": ("time", np.zeros(3))}, coords={"time": [0.0, 0.1, 0.2]},
+                      attrs=standard_attrs(case, status="failed at t = 0.2 s: interrupted"))
+
+    def interrupted(*a, **k):
+        raise SolverError("gyro model: failed at t = 0.2 s: interrupted", partial=part)
+
+    monkeypatch.setattr(hsbearing, "simulate", interrupted)
+    out = tmp_path / "g.nc"
+    rc = cli.main(["run", "jiang2014_gyro", "-o", str(out), "-q", "--no-plot"])
+    _one_error_line(capsys, rc, r"^hsbearing: interrupted at t = 0.2 s; partial run in ", code=130)
+    assert hsbearing.open_run(out).attrs["status"] == "interrupted at t = 0.2 s"
+
+
+def _interrupt(case, duration):
+    from hsbearing.errors import Interrupted
+
+    raise Interrupted("interrupted at t = 0 s")
+
+
+def test_ctrl_c_in_an_in_process_sweep_stops_it(tmp_path):
+    """simulate raises Interrupted on Ctrl-C; inside a jobs=1 sweep it stops the sweep (it used to be a
+    SolverError, recorded as a failed point, and the sweep went on)."""
+    from hsbearing.sweeps import run_sweep
+
+    with pytest.raises(KeyboardInterrupt):
+        run_sweep("zhang2016", {"axial_load": ["500 N", "1000 N"]}, kind="quasistatic", jobs=1, out_dir=tmp_path,
+                  progress=False, point_fn=_interrupt)
+    assert not list(tmp_path.glob("zhang2016-*.nc"))
