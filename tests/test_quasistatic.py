@@ -154,10 +154,12 @@ def test_pure_axial_static_matches_closed_form(case7206, static7206):
 
 
 # Rings and cage around a 250 mm pitch circle (the 7206's 30/62 mm rings cannot hold it: refused since
-# issue 13, item 7); a static solution at 0 rpm does not depend on them.
+# issue 13, item 7), lands and cage at the 7206's offsets from the pitch circle (inner land d_m - 7.5 mm,
+# outer land d_m + 6.4 mm, cage 1.6 mm inside and 6.0 mm outside); a static solution at 0 rpm does not
+# depend on them.
 RINGS_250 = {"bearing.bore_diameter": "200 mm", "bearing.outside_diameter": "300 mm",
-             "bearing.inner_land_diameter": "235 mm", "bearing.outer_land_diameter": "265 mm",
-             "cage.bore_diameter": "240 mm", "cage.outside_diameter": "260 mm"}
+             "bearing.inner_land_diameter": "242.5 mm", "bearing.outer_land_diameter": "256.4 mm",
+             "cage.bore_diameter": "248.4 mm", "cage.outside_diameter": "256 mm"}
 
 
 @pytest.mark.parametrize("kind", ["angular", "deep_groove"])
