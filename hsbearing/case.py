@@ -22,6 +22,7 @@ import dataclasses
 import difflib
 import functools
 import math
+import re
 import tomllib
 from dataclasses import dataclass
 from importlib import resources
@@ -263,6 +264,7 @@ def parse_quantity(value: Any, kind: str, *, source: str = "<value>", key: str |
         raise CaseError(source, key, f"expected {_a(kind)} with units like \"{value} {_example_unit(kind)}\", got bare number {value!r}")
     if not isinstance(value, str):
         raise CaseError(source, key, f"expected a quantity string with units, got {type(value).__name__}")
+    _check_quantity_text(value, kind, source, key)
     ureg = _ureg()
     try:
         q = ureg.Quantity(value.strip())
@@ -279,7 +281,49 @@ def parse_quantity(value: Any, kind: str, *, source: str = "<value>", key: str |
         raise CaseError(
             source, key, f"{value!r} is not {_a(kind)} (expected units like {_example_unit(kind)})"
         ) from None
-    return float(out)
+    try:
+        out = float(out)
+    except (TypeError, ValueError, OverflowError):
+        raise CaseError(source, key, f"cannot parse quantity {value!r} (not a real number)") from None
+    if not math.isfinite(out):
+        raise CaseError(source, key, f"must be finite, got {value!r}")
+    limit = MAX_MAGNITUDE.get(kind, 1e20)
+    if abs(out) > limit:
+        raise CaseError(source, key, f"{value!r} is an absurd magnitude for a {kind.replace('_', ' ')} "
+                                     f"(more than {limit:g} {DIMENSIONS[kind]})")
+    return out
+
+
+#: Largest accepted magnitude of a quantity, in SI units of its dimension: far above any bearing
+#: (a 100 m bearing, 1e7 rad/s, 1e10 N), so that only typing errors such as "1e30 mm" are refused.
+MAX_MAGNITUDE: dict[str, float] = {
+    "length": 100.0, "angle": 1e4, "angular_speed": 1e7, "force": 1e10, "moment": 1e10, "temperature": 1e4,
+    "time": 1e7, "pressure": 1e13, "density": 1e5, "mass": 1e7, "inertia": 1e7, "dynamic_viscosity": 1e8,
+    "kinematic_viscosity": 1e2, "stiffness": 1e15, "damping": 1e12, "pressure_coefficient": 1e-3,
+    "thermal_conductivity": 1e4, "temperature_coefficient": 1e2, "velocity": 1e5, "frequency": 1e9,
+}
+
+#: Longest quantity string accepted (a case value is a number and a unit).
+MAX_QUANTITY_CHARS = 100
+
+# a power operator and its exponent: only a small literal exponent of a unit is accepted ("m^3", "m**-2")
+_POWER = re.compile(r"(\*\*|\^)")
+_UNIT_POWER = re.compile(r"[A-Za-z_\u00b5\u03bc\u00b0]\s*(?:\*\*|\^)\s*\(?\s*[-+]?\d{1,2}(?:\.\d+)?\s*\)?(?!\s*(?:\*\*|\^|\d))")
+
+
+def _check_quantity_text(value: str, kind: str, source: str, key: str | None) -> None:
+    """Refuse, before pint sees it, text whose evaluation is unbounded.
+
+    pint evaluates powers of integers exactly (``"10**10**10 mm"`` never returns), so a power is
+    accepted only as a small literal exponent of a unit (``"kg/m^3"``, ``"m**2/s"``); numbers are
+    written in e-notation (``"1e10"``).
+    """
+    if len(value) > MAX_QUANTITY_CHARS:
+        raise CaseError(source, key, f"quantity text longer than {MAX_QUANTITY_CHARS} characters")
+    n_pow = len(_POWER.findall(value))
+    if n_pow and len(_UNIT_POWER.findall(value)) != n_pow:
+        raise CaseError(source, key, f"cannot parse quantity {value!r}: a power is accepted only as a small "
+                                     "exponent of a unit (m^3, m**2); write numbers in e-notation (1e10)")
 
 
 def _a(kind: str) -> str:
@@ -390,9 +434,11 @@ def list_cases() -> dict[str, str]:
 def case_path(name_or_path: str | Path) -> Path:
     """Resolve a bundled case name or a path to a file path."""
     p = Path(name_or_path)
-    if p.suffix == ".toml" or p.exists():
+    if p.suffix in (".toml", ".nc") or p.exists():
         if not p.exists():
-            raise CaseError(str(p), None, "no such case file")
+            raise CaseError(str(p), None, "no such case file" if p.suffix == ".toml" else "no such archive")
+        if p.is_dir():
+            raise CaseError(str(p), None, "is a directory, not a case file")
         return p
     cand = _cases_dir() / f"{name_or_path}.toml"
     if cand.exists():
@@ -417,7 +463,47 @@ def load_case(name_or_path: str | Path | None = None, /, **overrides) -> Case:
         ``axial_load`` is accepted when it names exactly one table's key.
     """
     path = case_path(name_or_path or DEFAULT_CASE)
-    return _build(path.read_text(), str(path), overrides)
+    return _build(read_case_text(path), str(path), overrides)
+
+
+def read_case_text(path: str | Path) -> str:
+    """The TOML text of a case file, or of the case stored in an hsbearing archive (``.nc``).
+
+    Anything else (a directory, a file that is not UTF-8 text, a netCDF file without a stored case)
+    raises :class:`CaseError` naming the path.
+    """
+    path = Path(path)
+    if path.is_dir():
+        raise CaseError(str(path), None, "is a directory, not a case file")
+    try:
+        with open(path, "rb") as fh:
+            head = fh.read(8)
+    except OSError as exc:
+        raise CaseError(str(path), None, f"cannot read the case file ({exc.strerror or type(exc).__name__})") from None
+    if head.startswith((b"\x89HDF", b"CDF")):  # a netCDF archive: the case stored in it (``hsbearing run OUT.nc``)
+        return case_text_from_archive(path)
+    if path.suffix == ".nc":
+        raise CaseError(str(path), None, "not a netCDF archive (and not a TOML case: the name ends in .nc)")
+    try:
+        return path.read_bytes().decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise CaseError(str(path), None, f"not a UTF-8 text file (byte {exc.start}); TOML case files must be UTF-8") from None
+    except OSError as exc:
+        raise CaseError(str(path), None, f"cannot read the case file ({exc.strerror or type(exc).__name__})") from None
+
+
+def case_text_from_archive(path: str | Path) -> str:
+    """The case TOML (global attribute ``case_toml``) stored in an archive written by hsbearing."""
+    try:
+        import netCDF4
+
+        with netCDF4.Dataset(str(path), "r") as nc:
+            text = nc.getncattr("case_toml") if "case_toml" in nc.ncattrs() else None
+    except Exception as exc:  # noqa: BLE001 - any HDF/netCDF failure is "not a readable archive"
+        raise CaseError(str(path), None, f"not a readable netCDF archive ({type(exc).__name__})") from None
+    if not isinstance(text, str) or not text.strip():
+        raise CaseError(str(path), "case_toml", "the archive stores no case (not written by hsbearing run)")
+    return text
 
 
 def loads_case(text: str, source: str = "<string>", **overrides) -> Case:
@@ -512,6 +598,7 @@ def _build_checked(text: str, source: str, overrides: Mapping[str, Any]) -> Case
         overrides=dict(overrides or {}),
     )
     _check_physical(case, source)
+    _check_possible(case, source)
     return case
 
 
@@ -531,6 +618,8 @@ def _validate_tables(raw: dict, source: str) -> dict[str, dict[str, Any]]:
             close = difflib.get_close_matches(sub, ["ball", "races", "cage"], n=1)
             hint = f"; did you mean [materials.{close[0]}]?" if close else ""
             raise CaseError(source, f"materials.{sub}", f"unknown table{hint}")
+        if not isinstance(mats[sub], dict):
+            raise CaseError(source, f"materials.{sub}", f"expected a table [materials.{sub}], got {mats[sub]!r}")
     system = raw.get("case", {}).get("system")
     if system is None:
         raise CaseError(source, "case.system", f"missing required key (one of: {', '.join(SYSTEMS)})")
@@ -654,6 +743,78 @@ def _check_guide_lands(case: Case, source: str) -> None:
     except GuideLandError as exc:
         raise CaseError(source, exc.key, exc.message) from None
 
+#: Most output samples one run may store (duration / output_interval + 1); about 3 kB each for an
+#: 11-ball bearing, so the limit keeps a run's arrays near 1.5 GB.
+MAX_OUTPUT_SAMPLES = 500_000
+
+#: A case name becomes a file name (``runs/<name>-<hash>.nc``): letters, digits, ``_ - . +``, no path.
+_NAME = re.compile(r"^[A-Za-z0-9][A-Za-z0-9_.+-]{0,99}$")
+
+
+def check_output_samples(case: "Case", duration: float | None = None, *, source: str | None = None,
+                         key: str = "simulation.output_interval") -> int:
+    """Number of output samples of a run of ``duration`` [s] (None: the case's); CaseError above the limit."""
+    sim = case.simulation
+    T = sim.duration if duration is None else float(duration)
+    dt = min(sim.output_interval, T) if T > 0 else sim.output_interval
+    n = T / dt + 1.0 if dt > 0 else math.inf
+    if not n <= MAX_OUTPUT_SAMPLES:
+        raise CaseError(source or case.source, key,
+                        f"duration {T:g} s / output_interval {sim.output_interval:g} s gives {n:.3g} output samples "
+                        f"(at most {MAX_OUTPUT_SAMPLES}): raise simulation.output_interval or shorten the duration")
+    return int(n)
+
+
+def _check_possible(case: Case, source: str) -> None:
+    """Values that are each in range but impossible for a bearing, or unsafe as file names (issue 13, item 7)."""
+    b, c, info = case.bearing, case.cage, case.info
+    if not _NAME.match(info.name):
+        raise CaseError(source, "case.name", f"{info.name!r} is not a plain file name (letters, digits, _ - . +; "
+                                             "no path, no spaces; at most 100 characters): it names the output files")
+    if b.contact_angle is not None and not b.contact_angle < 0.5 * math.pi:
+        raise CaseError(source, "bearing.contact_angle",
+                        f"must be below 90 deg (a radial or angular-contact bearing), got {math.degrees(b.contact_angle):g} deg")
+    if case.lubricant.temperature is not None and not case.lubricant.temperature > 0:
+        raise CaseError(source, "lubricant.temperature",
+                        f"{case.lubricant.temperature:g} K is at or below absolute zero")
+    D, dm = b.ball_diameter, b.pitch_diameter
+    mm = lambda x: f"{x * 1e3:g} mm"  # noqa: E731
+    if b.bore_diameter is not None and b.bore_diameter >= dm - D:
+        raise CaseError(source, "bearing.bore_diameter", f"bore {mm(b.bore_diameter)} does not leave room for the "
+                        f"inner raceway (pitch diameter {mm(dm)} - ball diameter {mm(D)} = {mm(dm - D)})")
+    if b.outside_diameter is not None and b.outside_diameter <= dm + D:
+        raise CaseError(source, "bearing.outside_diameter", f"outside diameter {mm(b.outside_diameter)} does not "
+                        f"enclose the outer raceway (pitch diameter + ball diameter = {mm(dm + D)})")
+    if b.inner_land_diameter is not None and not (b.bore_diameter or 0.0) < b.inner_land_diameter < dm:
+        raise CaseError(source, "bearing.inner_land_diameter", f"{mm(b.inner_land_diameter)} must lie between the bore "
+                        f"and the pitch diameter {mm(dm)}")
+    if b.outer_land_diameter is not None and not dm < b.outer_land_diameter < (b.outside_diameter or math.inf):
+        raise CaseError(source, "bearing.outer_land_diameter", f"{mm(b.outer_land_diameter)} must lie between the "
+                        f"pitch diameter {mm(dm)} and the outside diameter")
+    if c.outside_diameter is not None:
+        if c.outside_diameter <= dm:
+            raise CaseError(source, "cage.outside_diameter", f"cage outside diameter {mm(c.outside_diameter)} must be "
+                            f"larger than the pitch diameter {mm(dm)} (the pockets straddle the pitch circle)")
+        if b.outside_diameter is not None and c.outside_diameter >= b.outside_diameter:
+            raise CaseError(source, "cage.outside_diameter", f"cage {mm(c.outside_diameter)} is larger than the "
+                            f"bearing (outside diameter {mm(b.outside_diameter)})")
+        if c.guidance == "outer_ring" and b.outer_land_diameter is not None and c.outside_diameter >= b.outer_land_diameter:
+            raise CaseError(source, "bearing.outer_land_diameter", f"guide land {mm(b.outer_land_diameter)} is not "
+                            f"larger than the outer-ring guided cage (cage.outside_diameter {mm(c.outside_diameter)})")
+    if c.bore_diameter is not None:
+        if c.bore_diameter >= dm:
+            raise CaseError(source, "cage.bore_diameter", f"cage bore {mm(c.bore_diameter)} must be smaller than the "
+                            f"pitch diameter {mm(dm)} (the pockets straddle the pitch circle)")
+        if c.outside_diameter is not None and c.bore_diameter >= c.outside_diameter:
+            raise CaseError(source, "cage.bore_diameter", "cage bore must be smaller than the cage outside diameter")
+        if b.bore_diameter is not None and c.bore_diameter <= b.bore_diameter:
+            raise CaseError(source, "cage.bore_diameter", f"cage bore {mm(c.bore_diameter)} is inside the bearing bore "
+                            f"{mm(b.bore_diameter)}")
+        if c.guidance == "inner_ring" and b.inner_land_diameter is not None and c.bore_diameter <= b.inner_land_diameter:
+            raise CaseError(source, "bearing.inner_land_diameter", f"guide land {mm(b.inner_land_diameter)} is not "
+                            f"smaller than the inner-ring guided cage bore (cage.bore_diameter {mm(c.bore_diameter)})")
+    check_output_samples(case, source=source)
+
 
 # ----------------------------------------------------------------------------
 # tiny TOML writer for the raw dict (strings, numbers, bools, nested tables)
@@ -668,7 +829,7 @@ def _dump_toml(raw: Mapping[str, Any]) -> str:
         if isinstance(v, (int, float)):
             return repr(v)
         if isinstance(v, str):
-            return '"' + v.replace("\\", "\\\\").replace('"', '\\"') + '"'
+            return _toml_string(v)
         if isinstance(v, list):
             return "[" + ", ".join(scalar(x) for x in v) + "]"
         raise TypeError(type(v))
@@ -679,11 +840,34 @@ def _dump_toml(raw: Mapping[str, Any]) -> str:
         if prefix and plain:
             lines.append(f"[{prefix}]")
         for k, v in plain.items():
-            lines.append(f"{k} = {scalar(v)}")
+            lines.append(f"{_toml_key(k)} = {scalar(v)}")
         if plain:
             lines.append("")
         for k, v in subs.items():
-            emit(f"{prefix}.{k}" if prefix else k, v)
+            emit(f"{prefix}.{_toml_key(k)}" if prefix else _toml_key(k), v)
 
     emit("", raw)
     return "\n".join(lines)
+
+
+_TOML_ESCAPES = {"\\": "\\\\", '"': '\\"', "\b": "\\b", "\t": "\\t", "\n": "\\n", "\f": "\\f", "\r": "\\r"}
+
+
+def _toml_string(v: str) -> str:
+    """A TOML basic string: quote, backslash and every control character escaped (TOML 1.0, "String")."""
+    out = []
+    for ch in v:
+        if ch in _TOML_ESCAPES:
+            out.append(_TOML_ESCAPES[ch])
+        elif ord(ch) < 0x20 or ord(ch) == 0x7F:
+            out.append(f"\\u{ord(ch):04X}")
+        else:
+            out.append(ch)
+    return '"' + "".join(out) + '"'
+
+
+_BARE_KEY = re.compile(r"^[A-Za-z0-9_-]+$")
+
+
+def _toml_key(k: str) -> str:
+    return k if _BARE_KEY.match(k) else _toml_string(k)

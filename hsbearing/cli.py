@@ -111,24 +111,68 @@ def cmd_check(args) -> int:
     return 0
 
 
-def cmd_run(args) -> int:
-    from hsbearing import simulate
+def _duration_arg(text: str | None) -> float | None:
+    if not text:
+        return None
+    duration = parse_quantity(text, "time", source="--duration", key="duration")
+    if not duration > 0:
+        raise CaseError("--duration", "duration", f"must be positive, got {text!r}")
+    return duration
+
+
+def _keep_interrupted(partial, out: Path) -> int:
+    """Ctrl-C: keep what was computed (status "interrupted at t = ..."), say how to go on, exit 130."""
     from hsbearing.results import write_netcdf
 
+    if partial is not None and partial.sizes.get("time", 0) > 1:
+        t = float(partial["time"].values[-1])
+        partial = partial.copy()
+        partial.attrs["status"] = f"interrupted at t = {t:.6g} s"  # also for integrators that say "failed ...: interrupted"
+        write_netcdf(partial, out)
+        hint = f" (continue it: hsbearing run --continue {out})" if "final_state" in partial else ""
+        print(f"hsbearing: interrupted at t = {t:.6g} s; partial run in {out}{hint}", file=sys.stderr)
+    else:
+        print("hsbearing: interrupted (nothing computed yet, nothing written)", file=sys.stderr)
+    return 130
+
+
+def _is_interrupt_failure(exc: SolverError) -> bool:
+    return str(exc).rstrip().endswith("interrupted")  # an integrator's Ctrl-C status (e.g. the gyro model's)
+
+
+def cmd_run(args) -> int:
+    from hsbearing import simulate
+    from hsbearing.case import check_output_samples
+    from hsbearing.errors import Interrupted
+    from hsbearing.results import check_output_path, write_netcdf
+
+    if getattr(args, "continue_from", None):
+        return _cmd_continue(args)
     case = _load(args)
-    duration = parse_quantity(args.duration, "time", source="--duration", key="duration") if args.duration else None
-    if duration is not None and not duration > 0:
-        raise CaseError("--duration", "duration", f"must be positive, got {args.duration!r}")
+    duration = _duration_arg(args.duration)
+    if duration is not None:
+        check_output_samples(case, duration, source="--duration", key="duration")
     out = Path(args.output) if args.output else _default_out(case, ".nc", f"duration={duration}")
+    check_output_path(out, source="-o" if args.output else "output")
     try:
         ds = simulate(case, duration=duration, progress=not args.quiet)
+    except Interrupted as exc:
+        return _keep_interrupted(exc.partial, out)
     except SolverError as exc:
+        if _is_interrupt_failure(exc):
+            return _keep_interrupted(exc.partial, out)
         if exc.partial is not None:
             write_netcdf(exc.partial, out)
             print(f"hsbearing: numerical failure: {exc}; partial result in {out}", file=sys.stderr)
         else:
             print(f"hsbearing: numerical failure: {exc}", file=sys.stderr)
         return 1
+    return _finish_run(ds, out, args)
+
+
+def _finish_run(ds, out: Path, args) -> int:
+    from hsbearing.results import write_netcdf
+
     write_netcdf(ds, out)
     _print_summary(ds, out)
     if not args.no_plot:
@@ -140,11 +184,44 @@ def cmd_run(args) -> int:
     return 0
 
 
+def _cmd_continue(args) -> int:
+    """``hsbearing run --continue ARCHIVE.nc [--duration T] [-o OUT.nc]``: extend a run from its last state."""
+    from hsbearing import dynamics
+    from hsbearing.errors import Interrupted
+    from hsbearing.results import check_output_path, open_run, write_netcdf
+
+    src = Path(args.continue_from)
+    if args.case or args.set:
+        raise CaseError("--continue", None, "takes no CASE and no --set: the run goes on with the case stored in the archive")
+    if not src.is_file():
+        raise CaseError(str(src), None, "no such archive" if not src.exists() else "not a file")
+    try:
+        prev = open_run(src)
+    except Exception as exc:  # noqa: BLE001 - any netCDF/HDF failure is bad input here
+        raise CaseError(str(src), None, f"not a readable netCDF archive ({type(exc).__name__})") from None
+    out = Path(args.output) if args.output else src
+    check_output_path(out, source="-o" if args.output else "--continue")
+    try:
+        ds = dynamics.continue_run(prev, _duration_arg(args.duration), progress=not args.quiet, source=str(src))
+    except Interrupted as exc:
+        return _keep_interrupted(exc.partial, out)
+    except SolverError as exc:
+        if exc.partial is not None:
+            write_netcdf(exc.partial, out)
+            print(f"hsbearing: numerical failure: {exc}; partial result in {out}", file=sys.stderr)
+        else:
+            print(f"hsbearing: numerical failure: {exc}", file=sys.stderr)
+        return 1
+    return _finish_run(ds, out, args)
+
+
 def cmd_quasistatic(args) -> int:
     from hsbearing import quasi_static
-    from hsbearing.results import write_netcdf
+    from hsbearing.results import check_output_path, write_netcdf
 
     case = _load(args)
+    if args.output:
+        check_output_path(args.output)
     try:
         ds = quasi_static(case)
     except SolverError as exc:
@@ -184,6 +261,11 @@ def _summary_figure(nc: Path, png: Path) -> None:
 
 def cmd_sweep(args) -> int:
     from hsbearing import sweeps
+    from hsbearing.results import check_output_path
+
+    check_output_path(args.output, directory=True)
+    if args.scheduler:
+        sweeps.check_scheduler_address(args.scheduler)
 
     rc = sweeps.cli_main(args)
     if not getattr(args, "no_figure", False):
@@ -193,7 +275,12 @@ def cmd_sweep(args) -> int:
 
 
 def cmd_study(args) -> int:
-    from hsbearing import study
+    from hsbearing import study, sweeps
+    from hsbearing.results import check_output_path
+
+    check_output_path(args.output, directory=True)
+    if args.scheduler:
+        sweeps.check_scheduler_address(args.scheduler)
 
     rc = study.cli_main(args)
     if not getattr(args, "no_figure", False):
@@ -203,8 +290,17 @@ def cmd_study(args) -> int:
     return rc
 
 
+def _check_output_option(args) -> None:
+    from hsbearing.results import check_output_path
+
+    if getattr(args, "output", None):
+        check_output_path(args.output)
+
+
 def cmd_friction(args) -> int:
     from hsbearing.models import friction
+
+    _check_output_option(args)
 
     return friction.cli_main(args)
 
@@ -212,6 +308,7 @@ def cmd_friction(args) -> int:
 def cmd_preload(args) -> int:
     from hsbearing.models.friction import wire_race
 
+    _check_output_option(args)
     return wire_race.cli_main(args)
 
 
@@ -222,6 +319,7 @@ def cmd_plot(args) -> int:
     path = Path(args.archive)
     if not path.exists():
         raise CaseError(str(path), None, "no such archive")
+    _check_output_option(args)
     try:
         ds = open_run(path)
     except Exception as exc:
@@ -266,6 +364,9 @@ def build_parser() -> argparse.ArgumentParser:
     sp.add_argument("--no-figure", "--no-plot", dest="no_plot", action="store_true",
                     help="do not draw the PNG figure (--no-plot is the older spelling)")
     sp.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
+    sp.add_argument("--continue", dest="continue_from", metavar="ARCHIVE.nc",
+                    help="extend the run in ARCHIVE.nc from its last state by --duration (default: to the duration "
+                         "it was started with, e.g. after Ctrl-C); written back to ARCHIVE.nc unless -o")
     sp.set_defaults(func=cmd_run)
 
     sp = sub.add_parser("quasistatic", help="high-speed quasi-static equilibrium")
@@ -342,7 +443,9 @@ def main(argv: list[str] | None = None) -> int:
         parser.print_help()
         return 2
     try:
-        return int(args.func(args) or 0)
+        rc = int(args.func(args) or 0)
+        sys.stdout.flush()  # a closed pipe shows here (BrokenPipeError below), not in the interpreter's exit
+        return rc
     except CaseError as exc:
         print(f"hsbearing: error: {exc}", file=sys.stderr)
         return 2
@@ -352,6 +455,22 @@ def main(argv: list[str] | None = None) -> int:
     except KeyboardInterrupt:
         print("hsbearing: interrupted", file=sys.stderr)
         return 130
+    except BrokenPipeError:
+        # the reader of stdout went away (``hsbearing check ... | head -1``): not an error of ours.
+        # Point stdout at /dev/null so that the interpreter's final flush does not complain.
+        _silence_stdout()
+        return 0
+
+
+def _silence_stdout() -> None:
+    import os
+
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        os.close(devnull)
+    except (OSError, ValueError, AttributeError):  # no real stdout (in-process use): nothing to silence
+        pass
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from hsbearing import results
-from hsbearing.errors import SolverError
+from hsbearing.errors import Interrupted, SolverError
 from hsbearing.models import hertz
 from hsbearing.models import kernel as K
 from hsbearing.models.ball import strip_load_weights
@@ -362,7 +362,7 @@ def _time_grid(duration, dt):
 
 def simulate(case, duration=None, progress: bool = False, *, model: DynamicModel | None = None,
              rtol=None, atol=None, jacobian: str = "arrowhead", wall_limit=None, annotate: bool = True,
-             **model_kwargs):
+             y0=None, t0: float = 0.0, **model_kwargs):
     """Integrate the dynamic model of ``case`` and return the run Dataset over ``time`` and ``ball``.
 
     Parameters
@@ -374,10 +374,14 @@ def simulate(case, duration=None, progress: bool = False, *, model: DynamicModel
     rtol, atol : override the case tolerances
     jacobian : "arrowhead" (compiled structured Jacobian) or "cvode" (CVODE's own finite differences)
     wall_limit : stop with a SolverError after this many wall seconds
+    y0, t0 : start state and time [s] (default: the model's initial state at 0); used by
+        :func:`continue_run` to extend an archived run from its ``final_state``
 
     Raises
     ------
     SolverError with ``partial`` = the Dataset up to the failure (status "failed at t = ...").
+    hsbearing.errors.Interrupted (a KeyboardInterrupt) on Ctrl-C, with ``partial`` = the Dataset up to
+    the last output (status "interrupted at t = ...").
     """
     from hsbearing.solvers.cvode import integrate
 
@@ -399,18 +403,132 @@ def simulate(case, duration=None, progress: bool = False, *, model: DynamicModel
     jit.warm_up(m.rhs, m.y0, m.jac if jacobian == "arrowhead" else None, extra=lambda: m.outputs(m.y0))
     rtol = float(sim.rtol if rtol is None else rtol)
     atol_v = m.layout.atol(float(sim.atol if atol is None else atol))
-    t_eval = _time_grid(duration, min(sim.output_interval, duration))
+    t_eval = float(t0) + _time_grid(duration, min(sim.output_interval, duration))
     wall0 = _time.perf_counter()
-    res = integrate(m.rhs, m.y0, t_eval, rtol=rtol, atol=atol_v,
-                    jacfn=m.jac if jacobian == "arrowhead" else None, progress=progress,
-                    progress_desc=f"{case.name}", wall_limit=wall_limit)
+    try:
+        res = integrate(m.rhs, m.y0 if y0 is None else np.asarray(y0, dtype=float), t_eval, rtol=rtol, atol=atol_v,
+                        jacfn=m.jac if jacobian == "arrowhead" else None, progress=progress,
+                        progress_desc=f"{case.name}", wall_limit=wall_limit)
+    except KeyboardInterrupt:  # an integrator that lets Ctrl-C through: nothing to keep
+        raise Interrupted("interrupted before the first output") from None
     stats = dict(res.stats)
     stats["jacobian"] = "compiled arrowhead finite differences (31 evaluations)" if jacobian == "arrowhead" else stats["jacobian"]
     stats["total_wall_time"] = _time.perf_counter() - wall0
-    ds = to_dataset(m, res.t, res.y, stats, res.status, annotate=annotate)
+    interrupted = _is_interrupt(res.status)
+    status = f"interrupted at t = {float(res.t[-1]):.6g} s" if interrupted else res.status
+    ds = to_dataset(m, res.t, res.y, stats, status, annotate=annotate)
+    ds = with_final_state(ds, m, res.y[-1], requested_end=float(t_eval[-1]))
+    if interrupted:
+        raise Interrupted(status, partial=ds)
     if not res.success:
         raise SolverError(res.status, partial=ds)
     return ds
+
+
+# ----------------------------------------------------------------------------- interrupt and continue
+# (issue 13, item 10: Ctrl-C keeps the partial run; ``hsbearing run --continue ARCHIVE.nc`` extends it)
+
+results.register("final_state", ("state",), "SI",
+                 "state vector at the last output time, SI unit of each component (restart point of run --continue)")
+results.register("state", ("state",), "1", "state-vector component (hsbearing.solvers.state layout)")
+
+
+def _is_interrupt(status: str) -> bool:
+    """The integrator's status for a Ctrl-C (``solvers.cvode``: "failed at t = ...: interrupted")."""
+    return status.rstrip().endswith("interrupted")
+
+
+def with_final_state(ds, model: DynamicModel, y_last, *, requested_end: float | None = None):
+    """Add ``final_state`` (dim ``state``, named components) and ``requested_duration`` to a run Dataset."""
+    import xarray as xr
+
+    ds = ds.copy()
+    v = results.VARIABLES["final_state"]
+    ds["final_state"] = xr.Variable(("state",), np.asarray(y_last, dtype=np.float64),
+                                    attrs={"units": v.units, "long_name": v.long_name})
+    c = results.VARIABLES["state"]
+    ds = ds.assign_coords(state=xr.Variable(("state",), np.array(model.state_names, dtype=object),
+                                            attrs={"long_name": c.long_name}))
+    if requested_end is not None:
+        ds.attrs["requested_duration"] = float(requested_end)
+    return ds
+
+
+def continue_run(previous, duration=None, progress: bool = False, *, source: str = "--continue", **kwargs):
+    """Extend an archived dynamic run from its ``final_state``; return the whole run (old + new samples).
+
+    Parameters
+    ----------
+    previous : xarray.Dataset of a run written by :func:`simulate` (``final_state``, ``case_toml``)
+    duration : simulated time to add [s] (float or unit string); None = up to the run's
+        ``requested_duration`` (finishes an interrupted run)
+    source : name used in error messages (the archive path)
+
+    The integrator restarts at the stored state (BDF history is not stored), so the continued
+    trajectory equals an uninterrupted one only to the integration tolerance at the joint.
+    """
+    import xarray as xr
+
+    from hsbearing.case import CaseError, check_output_samples, loads_case, parse_quantity
+
+    if "final_state" not in previous or "case_toml" not in previous.attrs or "time" not in previous.dims:
+        raise CaseError(source, "final_state", "not a dynamic run that can be continued (no final_state stored)")
+    if previous.attrs.get("model") != "zhang2016_dynamics":
+        raise CaseError(source, "model", f"runs of model {previous.attrs.get('model')!r} cannot be continued")
+    case = loads_case(previous.attrs["case_toml"], source)
+    t_last = float(previous["time"].values[-1])
+    if isinstance(duration, str):
+        duration = parse_quantity(duration, "time", source="--duration", key="duration")
+    if duration is None:
+        end = float(previous.attrs.get("requested_duration", t_last))
+        duration = end - t_last
+        if not duration > 1e-12 * max(end, 1.0):
+            raise CaseError(source, None, f"the run is complete (t = {t_last:.6g} s); give --duration to extend it")
+    if not duration > 0:
+        raise CaseError("--duration", "duration", f"must be positive, got {duration!r}")
+    check_output_samples(case, duration, source="--duration", key="duration")
+    m = build_model(case, initial="nominal")  # the start state comes from the archive
+    names = list(previous["state"].values) if "state" in previous.coords else None
+    if names is not None and [str(n) for n in names] != list(m.state_names):
+        raise CaseError(source, "final_state", "the stored state layout differs from this hsbearing's model")
+    y0 = np.asarray(previous["final_state"].values, dtype=float)
+    try:
+        new = simulate(case, duration=duration, progress=progress, model=m, y0=y0, t0=t_last, annotate=False, **kwargs)
+        err = None
+    except (SolverError, Interrupted) as exc:
+        new, err = exc.partial, exc
+        if new is None:
+            raise
+    timed = [k for k, v in previous.data_vars.items() if "time" in v.dims]
+    old = previous[timed]
+    add = new[[k for k in timed if k in new]].isel(time=slice(1, None))  # the first sample is the old last one
+    both = xr.concat([old, add], dim="time", data_vars="all", coords="minimal", compat="override", join="override")
+    both["final_state"] = new["final_state"]
+    for k, v in new.data_vars.items():  # per-run constants of the model (no time dim), if any
+        if k not in both and "time" not in v.dims:
+            both[k] = v
+    attrs = dict(previous.attrs)
+    for k in ("classification", "classification_confidence", "classification_reason", "classification_details"):
+        attrs.pop(k, None)
+    for k, v in new.attrs.items():
+        if k.startswith("solver_") and k in attrs and isinstance(v, (int, float)) and k not in ("solver_rtol", "solver_atol") \
+                and isinstance(attrs[k], (int, float, np.number)):
+            attrs[k] = attrs[k] + v  # steps, evaluations and wall time add up over the pieces
+        elif k in ("status", "requested_duration", "created", "hsbearing_version") or k not in attrs:
+            attrs[k] = v
+    attrs["continued"] = (str(previous.attrs.get("continued", "")) + f" t = {t_last:.6g} s;").strip()
+    both.attrs = attrs
+    if both.sizes["time"] >= 8:
+        try:
+            from hsbearing.analysis import annotate as _annotate
+
+            both = _annotate(both, case)
+        except (ImportError, AttributeError):
+            pass
+    if err is not None:
+        err.partial = both
+        raise err
+    return both
 
 
 def to_dataset(model: DynamicModel, t, Y, stats, status="ok", annotate: bool = True):

@@ -23,7 +23,7 @@ import numpy as np
 import xarray as xr
 
 __all__ = ["Variable", "VARIABLES", "register", "make_dataset", "write_netcdf", "open_run", "solver_attrs", "atomic_write",
-           "ATTR_UNITS", "register_attr_units", "with_attr_units"]
+           "ATTR_UNITS", "register_attr_units", "with_attr_units", "check_output_path"]
 
 
 @dataclass(frozen=True)
@@ -222,16 +222,60 @@ class atomic_write:
 
     def __exit__(self, exc_type, exc, tb) -> bool:
         if exc_type is None:
-            umask = os.umask(0)
-            os.umask(umask)
-            os.chmod(self.tmp, 0o666 & ~umask)  # mkstemp creates 0600
-            os.replace(self.tmp, self.path)
-        else:
             try:
-                os.unlink(self.tmp)
-            except FileNotFoundError:
-                pass
+                umask = os.umask(0)
+                os.umask(umask)
+                os.chmod(self.tmp, 0o666 & ~umask)  # mkstemp creates 0600
+                os.replace(self.tmp, self.path)
+            except BaseException:  # e.g. the target is a directory: no temporary file left behind
+                self._discard()
+                raise
+        else:
+            self._discard()
         return False
+
+    def _discard(self) -> None:
+        try:
+            os.unlink(self.tmp)
+        except FileNotFoundError:
+            pass
+
+
+def check_output_path(path: str | os.PathLike, *, source: str = "-o", directory: bool = False) -> Path:
+    """Check, before any computation, that ``path`` can be written; raise CaseError if not.
+
+    The message reads ``<source> <path>: <reason>``.  ``directory=False``: ``path`` is a file (it may
+    exist, but not as a directory); ``directory=True``: an output directory (it may exist, but not as a
+    file).  The nearest existing ancestor must be a directory in which a file can be created: probed by
+    creating and deleting a temporary file, so read-only file systems and permissions are caught even
+    for root.  Nothing is left behind.
+    """
+    from hsbearing.case import CaseError
+
+    path = Path(path)
+    where = f"{source} {path}"
+    if not directory and (str(path) in ("", ".", "..") or path.name in ("", ".", "..")):
+        raise CaseError(where, None, "not a file name")
+    if path.exists():
+        if directory and not path.is_dir():
+            raise CaseError(where, None, "exists and is not a directory")
+        if not directory and path.is_dir():
+            raise CaseError(where, None, "is a directory (give a file name)")
+    anc = path if directory and path.is_dir() else path.parent
+    while not anc.exists():
+        if anc.is_symlink():
+            raise CaseError(where, None, f"cannot be created: {anc} is a broken symbolic link")
+        anc = anc.parent
+    if not anc.is_dir():
+        raise CaseError(where, None, f"cannot be created: {anc} is a file, not a directory")
+    try:
+        fd, probe = tempfile.mkstemp(prefix=".hsbearing-write-check.", dir=anc)
+    except OSError as exc:
+        raise CaseError(where, None, f"cannot be written: no write access to {anc} "
+                                     f"({exc.strerror or type(exc).__name__})") from None
+    os.close(fd)
+    os.unlink(probe)
+    return path
 
 
 def write_netcdf(ds: xr.Dataset, path: str | os.PathLike) -> Path:
@@ -245,8 +289,10 @@ def write_netcdf(ds: xr.Dataset, path: str | os.PathLike) -> Path:
         ds.attrs.setdefault(k, v)                     # so that what is written is what is in memory
     ds = ds.copy()
     ds.attrs = _clean_attrs(ds.attrs)
+    # fletcher32: an HDF5 checksum per chunk, so a corrupted archive fails on read instead of
+    # returning wrong numbers (a sweep resume reads every point's data through it)
     encoding = {
-        name: {"zlib": True, "complevel": 4, "shuffle": True}
+        name: {"zlib": True, "complevel": 4, "shuffle": True, "fletcher32": True}
         for name, var in ds.variables.items()
         if var.dtype.kind in "fiub" and var.ndim > 0
     }

@@ -66,9 +66,10 @@ from typing import Any, Callable, Iterable, Mapping, Sequence
 import numpy as np
 import xarray as xr
 
-from hsbearing.case import DIMENSIONS, SCHEMA, Case, CaseError, load_case, loads_case, parse_quantity, resolve_key
+from hsbearing.case import (DIMENSIONS, SCHEMA, Case, CaseError, check_output_samples, load_case, loads_case,
+                            parse_quantity, resolve_key)
 from hsbearing.errors import SolverError
-from hsbearing.results import VARIABLES, register, standard_attrs, write_netcdf
+from hsbearing.results import VARIABLES, check_output_path, register, standard_attrs, write_netcdf
 
 __all__ = [
     "run_sweep",
@@ -81,6 +82,8 @@ __all__ = [
     "quasistatic_summary",
     "dynamic_summary",
     "cli_main",
+    "check_scheduler_address",
+    "unguarded_main_call",
     "SweepPlan",
     "Point",
     "STATUS_OK",
@@ -324,6 +327,8 @@ def plan_sweep(
         lit = {a.key: _override_literal(a.kind, a.values[i]) for a, i in zip_(axes, combo)}
         try:
             pc = loads_case(base_text, base.source, **lit)
+            if kind == "run" and duration is not None and point_fn is None:
+                check_output_samples(pc, duration, source="--duration", key="duration")
         except CaseError as exc:
             points.append(Point(idx, overrides, None, error=str(exc)))
             continue
@@ -447,25 +452,35 @@ def _worker_init() -> None:  # pragma: no cover - runs in the worker processes
 
 
 def archive_is_complete(path: str | os.PathLike) -> bool:
-    """True if ``path`` opens as netCDF and carries the ``status`` attribute."""
+    """True if ``path`` opens as netCDF, carries the ``status`` attribute and every variable's data reads
+    back (HDF5 checksums and zlib streams verified: a corrupted archive is not complete)."""
     try:
         with xr.open_dataset(path, engine="netcdf4") as ds:
-            return "status" in ds.attrs
+            if "status" not in ds.attrs:
+                return False
+            ds.load()
+            return True
     except Exception:
         return False
 
 
 def _read_record(path: Path) -> dict | None:
+    """The sweep record of a point archive, or None if it is not a complete, readable archive.
+
+    The whole archive is read (``load``), not only its header: bytes corrupted inside a data chunk fail
+    the chunk's checksum (``fletcher32``, :func:`hsbearing.results.write_netcdf`) or its zlib stream here,
+    so a resumed sweep recomputes the point instead of trusting it (issue 13, item 9).
+    """
     try:
         with xr.open_dataset(path, engine="netcdf4") as ds:
             if "status" not in ds.attrs:
                 return None
+            ds = ds.load()
             rec = json.loads(ds.attrs["sweep_record"]) if "sweep_record" in ds.attrs else None
             if rec is None:  # an archive written by something else
                 rec = {"status": str(ds.attrs["status"]), "error": str(ds.attrs.get("error", "")),
                        "wall_time": float("nan"), "summary_error": "no summary stored"}
             if rec.get("summary_error"):  # summarise again (the analysis may have been fixed since)
-                ds = ds.load()
                 kind = ds.attrs.get("sweep_kind", "run")
                 try:
                     summ = quasistatic_summary(ds) if kind == "quasistatic" else dynamic_summary(ds)
@@ -661,12 +676,65 @@ def _mp_context():
     (``forkserver`` starts workers ~0.3 s faster here, but its workers are children of the fork
     server: when the sweep process is SIGKILLed, the server and its idle workers were observed to
     stay alive as orphans.  ``HSBEARING_MP_START=forkserver`` still selects it.)
+
+    ``spawn`` (and ``forkserver``) workers re-import the caller's ``__main__`` script.  When the sweep
+    is started from a script's top level outside ``if __name__ == "__main__":`` (the README example
+    saved as a file), that re-import would start the sweep again in every worker, and every point
+    would die (issue 13, item 2).  Then the workers are forked instead (Linux: ``fork`` does not
+    re-run the script); where fork is not safe (macOS, Windows) a CaseError names the missing guard.
     """
+    unguarded = unguarded_main_call()
+    if unguarded is not None:
+        if sys.platform.startswith("linux") and "fork" in multiprocessing.get_all_start_methods():
+            return multiprocessing.get_context("fork")
+        raise CaseError(unguarded, None, "hsbearing.sweep with jobs > 1 called outside an "
+                        "'if __name__ == \"__main__\":' block: the worker processes re-import the script; "
+                        "put the call under that guard (or pass jobs=1)")
     method = os.environ.get("HSBEARING_MP_START") or "spawn"
     ctx = multiprocessing.get_context(method)
     if method == "forkserver":
         ctx.set_forkserver_preload(["hsbearing.sweeps"])
     return ctx
+
+
+def unguarded_main_call() -> str | None:
+    """``"script.py:LINE"`` if the current call comes from the top-level code of a ``__main__`` script
+    outside an ``if __name__ == "__main__":`` block (the statement that spawn workers would re-run), else None.
+
+    Interactive sessions and ``python -c`` have no script file and are never re-run.  A script whose
+    source cannot be read or parsed is assumed guarded.
+    """
+    import ast
+
+    main = sys.modules.get("__main__")
+    path = getattr(main, "__file__", None)
+    if not path or main is None:
+        return None
+    frame = sys._getframe(1)
+    while frame is not None and not (frame.f_globals is main.__dict__ and frame.f_code.co_name == "<module>"):
+        frame = frame.f_back
+    if frame is None:
+        return None
+    line = frame.f_lineno
+    try:
+        tree = ast.parse(Path(path).read_text(encoding="utf-8"), filename=str(path))
+    except (OSError, SyntaxError, UnicodeDecodeError, ValueError):
+        return None
+    for node in tree.body:
+        if node.lineno <= line <= (node.end_lineno or node.lineno):
+            return None if isinstance(node, ast.If) and _is_main_guard(node.test) else f"{path}:{line}"
+    return None
+
+
+def _is_main_guard(test) -> bool:
+    import ast
+
+    if not (isinstance(test, ast.Compare) and len(test.ops) == 1 and isinstance(test.ops[0], ast.Eq)):
+        return False
+    sides = [test.left, test.comparators[0]]
+    names = [x for x in sides if isinstance(x, ast.Name) and x.id == "__name__"]
+    consts = [x for x in sides if isinstance(x, ast.Constant) and x.value == "__main__"]
+    return len(names) == 1 and len(consts) == 1
 
 
 def _terminate(ex: ProcessPoolExecutor) -> None:
@@ -680,6 +748,24 @@ def _terminate(ex: ProcessPoolExecutor) -> None:
             p.terminate()
 
 
+_SCHEDULER_ADDRESS = re.compile(
+    r"^(?:(?:tcp|tls|ws|wss|ucx)://)?(?:[A-Za-z0-9](?:[A-Za-z0-9.-]*[A-Za-z0-9])?|\[[0-9A-Fa-f:.]+\]):(\d{1,5})/?$")
+
+
+def check_scheduler_address(address: str) -> str:
+    """A dask.distributed scheduler address ``[tcp://]host:port`` (also tls/ws/wss/ucx, ``inproc://``);
+    CaseError naming ``--scheduler`` otherwise, at once (the client would retry an unparseable
+    address until its connect timeout)."""
+    a = str(address).strip()
+    if a.startswith("inproc://") and len(a) > len("inproc://"):
+        return a
+    m = _SCHEDULER_ADDRESS.match(a)
+    if not m or not 0 < int(m.group(1)) < 65536:
+        raise CaseError("--scheduler", None, f"{address!r} is not a scheduler address (expected [tcp://]host:port, "
+                                             "e.g. tcp://127.0.0.1:8786)")
+    return a
+
+
 class _Dask:
     """Submit the points to an existing dask.distributed scheduler."""
 
@@ -689,6 +775,7 @@ class _Dask:
     CONNECT_TIMEOUT = 15.0
 
     def __init__(self, address: str, timeout: float | None = None):
+        check_scheduler_address(address)
         self.address = address
         self.timeout = self.CONNECT_TIMEOUT if timeout is None else timeout
         self.client = None
@@ -985,17 +1072,27 @@ def run_sweep(
     retry_failed : recompute points whose archive records a status other than ok.
     """
     out_dir = Path(out_dir)
-    if out_dir.exists() and not out_dir.is_dir():
-        raise CaseError(str(out_dir), None, "output must be a directory")
+    check_output_path(out_dir, source="output directory", directory=True)
     plan = plan_sweep(case, vary, zip=zip, kind=kind, duration=duration, point_fn=point_fn)
     t0 = time.perf_counter()
     # bad -j / unreachable scheduler are reported before anything is written
     with _backend(jobs, scheduler) as backend, _dir_lock(out_dir):
+        _clean_temporaries(out_dir, ["sweep.nc"])  # an interrupted write of the summary (we hold the lock)
         (records,) = execute([plan], out_dir, progress=progress, retry_failed=retry_failed, backend=backend)
         ds = assemble(plan, records, attrs={"sweep_wall_time": time.perf_counter() - t0,
                                             "sweep_backend": f"dask {scheduler}" if scheduler else f"jobs={jobs or os.cpu_count()}"})
         write_netcdf(ds, out_dir / "sweep.nc")
+    _raise_if_nothing_computed(ds, records, out_dir / "sweep.nc")
     return ds
+
+
+def _raise_if_nothing_computed(ds: xr.Dataset, records: Sequence[dict], path: Path) -> None:
+    """A sweep whose every computed point crashed or errored never returns quietly: SolverError (partial = ds)."""
+    computed = [r for r in records if r.get("status") != "invalid"]
+    if computed and all(r.get("status") in ("crashed", "error") for r in computed):
+        first = computed[0].get("error", "")
+        raise SolverError(f"all {len(computed)} computed sweep points ended crashed/error (first: {first}); "
+                          f"records in {path}", partial=ds)
 
 
 # ----------------------------------------------------------------------------- CLI
@@ -1054,8 +1151,9 @@ def cli_main(args) -> int:
     case = load_case(args.case or DEFAULT_CASE, **sets)
     vary = _parse_vary(args.vary)
     out = Path(args.output)
-    if out.exists() and not out.is_dir():
-        raise CaseError(str(out), None, "output must be a directory")
+    check_output_path(out, directory=True)
+    if args.scheduler:
+        check_scheduler_address(args.scheduler)
     if not getattr(args, "keep_going", False):
         # On the command line a value that makes an invalid case is bad input: exit 2 before anything is
         # computed or written (the library, and --keep-going, record such points as "invalid" and go on).
@@ -1066,8 +1164,13 @@ def cli_main(args) -> int:
             more = f" (and {len(bad) - 1} more point(s); --keep-going records them and runs the rest)" if len(bad) > 1 else \
                 " (--keep-going records it and runs the rest)"
             raise CaseError("--vary", None, f"point {where} is not a valid case: {bad[0].error}{more}")
-    ds = run_sweep(case, vary, zip=args.zip, jobs=args.jobs, scheduler=args.scheduler, out_dir=out,
-                   kind=args.kind, duration=args.duration, progress=True)
+    try:
+        ds = run_sweep(case, vary, zip=args.zip, jobs=args.jobs, scheduler=args.scheduler, out_dir=out,
+                       kind=args.kind, duration=args.duration, progress=True)
+    except SolverError as exc:
+        if exc.partial is None:
+            raise
+        ds = exc.partial  # every point crashed: the table says why, exit 1 below
     print_table(ds)
     n, n_ok = ds.attrs["sweep_points"], ds.attrs["sweep_points_ok"]
     print(f"{n_ok} of {n} points ok ({ds.attrs['sweep_points_resumed']} resumed); wall time "

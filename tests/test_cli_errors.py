@@ -91,3 +91,25 @@ def test_bad_override_value_names_the_override(tmp_path):
     assert res.returncode == 2 and "(override): operating.axial_load: cannot parse quantity" in res.stderr
     res = _run(["check", "zhang2016", "--set", "inner_conformity=0.5"], tmp_path)
     assert res.returncode == 2 and "(override): bearing.inner_conformity" in res.stderr
+
+
+# Issue 13, items 5-7, through a real process (the in-process versions of every item are in
+# tests/test_cli_robustness.py): one stderr line, exit 2, no traceback, nothing left in the directory.
+SUBPROCESS_BAD = {
+    "case_is_a_directory": (["check", "adir"], r"adir: is a directory"),
+    "power_tower_does_not_hang": (["check", "--set", "ball_diameter=10**10**10 mm"], r"bearing.ball_diameter: cannot parse"),
+    "scheduler_not_a_url": (["sweep", "--vary", "axial_load=1,2N", "--scheduler", "not a url", "-o", "sw"], r"--scheduler"),
+    "output_is_a_directory": (["run", "-q", "-o", "adir"], r"-o adir: is a directory"),
+    "impossible_contact_angle": (["check", "--set", "contact_angle=400 deg"], r"bearing.contact_angle: must be below 90 deg"),
+}
+
+
+@pytest.mark.parametrize("name", sorted(SUBPROCESS_BAD))
+def test_issue13_inputs_in_a_real_process(name, tmp_path):
+    argv, msg = SUBPROCESS_BAD[name]
+    (tmp_path / "adir").mkdir()
+    res = _run(argv, tmp_path)
+    lines = [ln for ln in res.stderr.splitlines() if ln.strip()]
+    assert res.returncode == 2 and len(lines) == 1 and "Traceback" not in res.stderr, res.stderr
+    assert re.search(msg, lines[0]), lines[0]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["adir"] and not any((tmp_path / "adir").iterdir())
