@@ -336,12 +336,20 @@ def race_control_criterion(Qi, a_i, E_i, Qo, a_o, E_o, alpha_i, alpha_o):
 def race_control_ratio(Qi, a_i, E_i, Qo, a_o, E_o, alpha_i, alpha_o):
     """Margin of Jones' raceway-control criterion [-]: Q_o a_o E(e_o) cos(a_i - a_o) / (Q_i a_i E(e_i)).
 
-    > 1: the outer raceway controls the ball, < 1: the inner one ([2]; [3]
-    Ch. 8).  Q [N], a = semi-major axis [m], E = complete elliptic integral
-    of the second kind [-], alpha [rad].  The ratio shows how close a
+    Parameters
+    ----------
+    Qi, Qo : normal contact loads [N].
+    a_i, a_o : contact-ellipse semi-major axes [m].
+    E_i, E_o : complete elliptic integrals of the second kind of the contacts [-].
+    alpha_i, alpha_o : contact angles [rad].
+
+    Returns
+    -------
+    ratio [-]: > 1 the outer raceway controls the ball, < 1 the inner one
+    ([2]; [3] Ch. 8); inf where only the outer contact is loaded, 0 where
+    the outer one (or both) is unloaded.  The ratio shows how close a
     solution is to the switch of the controlling raceway, where race-control
     theory jumps (docs/quasistatic.md, "Comparison with independent codes").
-    Returns inf where the inner contact is unloaded.
     """
     num = Qo * a_o * E_o * np.cos(alpha_i - alpha_o)
     den = Qi * a_i * E_i
