@@ -601,3 +601,107 @@ def test_contract_names_and_common_solver_attrs():
     for k in ("solver_steps", "solver_rhs_evals", "solver_jac_evals", "solver_wall_time"):
         assert k in ds.attrs
     assert math.isnan(float(hsbearing.quasi_static("zhang2016", inner_speed=0.0).cage_slip_ratio))
+
+
+# ----------------------------------------------------------------------------- issue 16 item 5: independent codes
+
+
+def test_race_control_closed_forms_both_races():
+    """Cage speed and pitch angle of both race controls against closed forms derived independently.
+
+    Rolling at both contact centres with omega_rel = W (cos b, -sin b) gives
+    omega_m / omega_i = (1 - g c_i) cos(a_o - b) / [(1 + g c_o) cos(a_i - b) + (1 - g c_i) cos(a_o - b)]
+    (g = D/d_m, ball centre on the pitch circle); with Harris & Kotzalas Vol. 1 Ch. 8
+    tan b = sin a_o / (cos a_o + g) (outer control) this is (1 - g cos a_i) / (1 + cos(a_i - a_o)),
+    with tan b = sin a_i / (cos a_i - g) (inner control) (cos(a_i - a_o) - g cos a_o) / (1 + cos(a_i - a_o))
+    (derivation: docs/quasistatic.md, "Comparison with independent codes").  The solver solves a
+    3x3 linear system instead; both races, angles 5-50 deg, the whole range of D/d_m in use.
+    """
+    rng = np.random.default_rng(16)
+    n = 200
+    ai, ao = rng.uniform(5, 50, n) * DEG, rng.uniform(5, 50, n) * DEG
+    D, dm, wi = 0.01, rng.uniform(0.025, 0.2, n), 1500.0
+    g = D / dm
+    si, ci, so, co = np.sin(ai), np.cos(ai), np.sin(ao), np.cos(ao)
+    cd = np.cos(ai - ao)
+    for control, wm_ref, tb_ref in [
+        ("outer_race_control", wi * (1 - g * ci) / (1 + cd), so / (co + g)),
+        ("inner_race_control", wi * (cd - g * co) / (1 + cd), si / (ci - g)),
+    ]:
+        wm, wx, wy = qp.race_control_kinematics(wi, 0.0, 0.5 * dm, D, si, ci, so, co, control)
+        np.testing.assert_allclose(wm, wm_ref, rtol=1e-12)
+        np.testing.assert_allclose(-wy / wx, tb_ref, rtol=1e-11)
+
+
+def _variant(case, control, split=None, gyro=True, speed=14000 * RPM):
+    from dataclasses import replace
+
+    P = replace(qs.build_problem(case, inner_speed=speed, control=control, gyroscopic=gyro), gyro_split=split)
+    sol = qs.solve(P)
+    st = sol.state
+    return (math.degrees(math.atan2(st["si"][0], st["ci"][0])), math.degrees(math.atan2(st["so"][0], st["co"][0])),
+            float(st["wm"][0]), sol)
+
+
+def test_independent_codes_difference_is_the_controlling_race(case7206):
+    """Issue 16 item 5: which assumption moves the 14000 r/min solution as the two independent codes do.
+
+    The codes' values are quoted in issue 16 only as differences to ours: inner contact angle "about 1 deg
+    lower", outer "about 0.6 deg higher", cage speed "about 1.3 % lower" (static solutions equal to 0.01 deg).
+    Varying one assumption at a time (tools/qs_code_comparison.py, table in docs/quasistatic.md):
+    the lambda split under outer control, dropping the gyroscopic moment or reversing its sign move the
+    angles but never the cage speed by more than 0.6 %; only inner-race-control kinematics lowers the cage
+    speed by 1.0-1.4 %, and inner control with Harris' lambda_i = lambda_o = 1 reproduces all three
+    differences.  Loose tolerances: the issue's numbers are rounded ("about").
+    """
+    ai0, ao0, wm0, _ = _variant(case7206, "outer_race_control")
+    outer_variants = [_variant(case7206, "outer_race_control", split=(1.0, 1.0)),
+                      _variant(case7206, "outer_race_control", gyro=False),
+                      _variant(case7206, "outer_race_control", split=(0.0, -2.0))]  # sign of M_g reversed
+    for ai, ao, wm, _ in outer_variants:
+        assert abs(wm / wm0 - 1) < 0.006  # outer kinematics cannot give the codes' -1.3 %
+    ai, ao, wm, sol = _variant(case7206, "inner_race_control")
+    assert abs((ai - ai0) - (-1.0)) < 0.2  # issue 16: about 1 deg lower
+    assert abs((ao - ao0) - 0.6) < 0.15  # about 0.6 deg higher
+    assert abs(100 * (wm / wm0 - 1) - (-1.3)) < 0.15  # about 1.3 % lower
+    # REGRESSION (our own numbers, docs/quasistatic.md table rows A, B, C, D, G)
+    # (degrees, degrees, rad/s; tolerance 5e-4 deg / 5e-3 rad/s as test_7206_regression_numbers)
+    tol = [5e-4, 5e-4, 5e-3]
+    np.testing.assert_array_less(np.abs(np.subtract([ai0, ao0, wm0], [29.9703, 24.5385, 602.9279])), tol)
+    np.testing.assert_array_less(np.abs(np.subtract([ai, ao, wm], [29.1069, 25.1860, 594.6810])), tol)
+    for v, ref in zip(outer_variants, [[29.1404, 25.1924, 601.1953], [29.1169, 25.2600, 601.1319],
+                                       [28.2525, 25.9566, 599.5843]]):
+        np.testing.assert_array_less(np.abs(np.subtract(v[:3], ref)), tol)
+
+
+def _jones_ratio(sol, method):
+    P, st = sol.problem, sol.state
+    Rxi, Ryi, Rxo, Ryo = qs._contact_radii(P, st)
+    hi = hertz.point_contact(Rxi, Ryi, st["Qi"], P.E1, P.nu1, P.E2, P.nu2, method=method)
+    ho = hertz.point_contact(Rxo, Ryo, st["Qo"], P.E1, P.nu1, P.E2, P.nu2, method=method)
+    return float(qp.race_control_ratio(st["Qi"], hi.a, hi.second_kind, st["Qo"], ho.a, ho.second_kind,
+                                       np.arctan2(st["si"], st["ci"]), np.arctan2(st["so"], st["co"]))[0])
+
+
+def test_jones_criterion_switches_near_14000_rpm(case7206):
+    """14000 r/min lies just above the speed where Jones' criterion hands control to the outer race.
+
+    With the exact Hertz semi-axis and E(e) the criterion ratio
+    Q_o a_o E_o cos(a_i - a_o) / (Q_i a_i E_i) crosses 1 between 13500 and 14000 r/min, on the
+    outer- and on the inner-control solution alike (so at 14000 r/min only outer control is
+    self-consistent); with the Hamrock-Brewe (1983) approximations of a and E it crosses between
+    14000 and 14500 r/min, so a code using them chooses inner control at 14000 r/min.
+    """
+    r = {}
+    for n in (13500, 14000, 14500):
+        for control in ("outer_race_control", "inner_race_control"):
+            sol = _variant(case7206, control, speed=n * RPM)[3]
+            r[n, control] = (_jones_ratio(sol, "exact"), _jones_ratio(sol, "hamrock_brewe"))
+    for control in ("outer_race_control", "inner_race_control"):
+        assert r[13500, control][0] < 1.0 < r[14000, control][0]
+        assert r[14000, control][1] < 1.0 < r[14500, control][1]
+        assert abs(r[14000, control][0] - 1.0) < 0.01  # a marginal case: 0.4-0.5 % from the switch
+    # the Dataset reports the same margin and the criterion flag follows it
+    ds = qs.solve_case(case7206, inner_speed=14000 * RPM)
+    np.testing.assert_allclose(ds.ball_race_control_ratio.values, r[14000, "outer_race_control"][0], rtol=1e-9)
+    assert np.all(ds.ball_jones_outer_control.values == 1)

@@ -67,6 +67,7 @@ __all__ = [
     "gyroscopic_friction",
     "race_control_kinematics",
     "race_control_criterion",
+    "race_control_ratio",
     "gyroscopic_split",
     "contact_spin_roll",
     "ball_equilibrium_residual",
@@ -329,7 +330,31 @@ def race_control_criterion(Qi, a_i, E_i, Qo, a_o, E_o, alpha_i, alpha_o):
     imposes pure rolling, the ball spins on the other.  a = semi-major axis
     [m], E = complete elliptic integral of the second kind [-].
     """
-    return Qo * a_o * E_o * np.cos(alpha_i - alpha_o) > Qi * a_i * E_i
+    return race_control_ratio(Qi, a_i, E_i, Qo, a_o, E_o, alpha_i, alpha_o) > 1.0
+
+
+def race_control_ratio(Qi, a_i, E_i, Qo, a_o, E_o, alpha_i, alpha_o):
+    """Margin of Jones' raceway-control criterion [-]: Q_o a_o E(e_o) cos(a_i - a_o) / (Q_i a_i E(e_i)).
+
+    Parameters
+    ----------
+    Qi, Qo : normal contact loads [N].
+    a_i, a_o : contact-ellipse semi-major axes [m].
+    E_i, E_o : complete elliptic integrals of the second kind of the contacts [-].
+    alpha_i, alpha_o : contact angles [rad].
+
+    Returns
+    -------
+    ratio [-]: > 1 the outer raceway controls the ball, < 1 the inner one
+    ([2]; [3] Ch. 8); inf where only the outer contact is loaded, 0 where
+    the outer one (or both) is unloaded.  The ratio shows how close a
+    solution is to the switch of the controlling raceway, where race-control
+    theory jumps (docs/quasistatic.md, "Comparison with independent codes").
+    """
+    num = Qo * a_o * E_o * np.cos(alpha_i - alpha_o)
+    den = Qi * a_i * E_i
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where(den > 0, num / np.where(den > 0, den, 1.0), np.where(num > 0, np.inf, 0.0))
 
 
 def contact_spin_roll(omega_x, omega_y, omega_m, omega_i, omega_o, sin_ai, cos_ai, sin_ao, cos_ao):

@@ -89,6 +89,8 @@ for _n, _d, _u, _l in [
      "controlling raceway used for the ball kinematics and the gyroscopic split: 1 outer, 0 inner"),
     ("ball_jones_outer_control", ("time", "ball"), "1",
      "Jones' raceway-control criterion Q_o a_o E_o cos(a_i - a_o) > Q_i a_i E_i at the solution: 1 outer, 0 inner"),
+    ("ball_race_control_ratio", ("time", "ball"), "1",
+     "margin of Jones' raceway-control criterion Q_o a_o E_o cos(a_i - a_o) / (Q_i a_i E_i): > 1 outer, < 1 inner"),
     ("ball_gyroscopic_moment", ("time", "ball"), "N*m",
      "gyroscopic moment M_g = dH/dt . e_t the contact friction supplies to the ball (magnitude J omega_R omega_m sin beta)"),
     ("inner_ring_radial_displacement_y", ("time",), "m", "inner-ring displacement along Y"),
@@ -134,6 +136,9 @@ class Problem:
     aligned: bool = False  #: deep-groove layout (grooves in the mid-plane, clearance P_d)
     outer_mask: tuple | None = None  #: per-ball outer control (kinematics "friction"); None = all outer
     fixed_tilt: bool = False  #: hold theta_y = theta_z = 0 (moments become reactions)
+    #: (lambda_i, lambda_o) for every ball instead of Harris' rule from the controlling race
+    #: (comparison with other codes' readings, docs/quasistatic.md); None = Harris
+    gyro_split: tuple | None = None
 
     @property
     def A(self) -> float:
@@ -225,7 +230,7 @@ def _ball_state(P: Problem, X1, X2, q, free=None):
         wm = wx = wy = np.zeros_like(X1)
     Fc = qp.centrifugal_force(P.ball_mass, R_b, wm) if P.centrifugal else np.zeros_like(X1)
     Mg = qp.gyroscopic_moment(P.ball_inertia, wm, wy) if P.gyroscopic else np.zeros_like(X1)
-    lam_i, lam_o = qp.gyroscopic_split(P.outer_control)
+    lam_i, lam_o = _split(P)
     Fi, Fo = qp.gyroscopic_friction(Mg, P.D, lam_i, lam_o)
     if free is not None and np.any(free):
         Fi = np.where(free, 0.0, Fi)
@@ -234,6 +239,13 @@ def _ball_state(P: Problem, X1, X2, q, free=None):
     return dict(A1=A1, A2=A2, di=di, do=do, si=si, ci=ci, so=so, co=co, Qi=Qi, Qo=Qo, Ki=Ki, Ko=Ko,
                 R_b=R_b, x_b=x_o0 + X1, wm=wm, wx=wx, wy=wy, Fc=Fc, Mg=Mg, Fi=Fi, Fo=Fo,
                 res=np.stack([r_ax, r_rad]))
+
+
+def _split(P: Problem):
+    """(lambda_i, lambda_o) per ball: Harris' rule from the controlling race, or the override ``P.gyro_split``."""
+    if P.gyro_split is None:
+        return qp.gyroscopic_split(P.outer_control)
+    return np.full(P.Z, float(P.gyro_split[0])), np.full(P.Z, float(P.gyro_split[1]))
 
 
 def _ring_contributions(P: Problem, st, q):
@@ -764,6 +776,8 @@ def to_dataset(sol: QuasiStaticSolution, case=None, status: str = "ok") -> xr.Da
         beta_src = (st["wx"], st["wy"]) if P.moving else (wx, wy)
         beta = np.arctan2(-beta_src[1], beta_src[0])
     beta = np.where(beta > 0.5 * np.pi, beta - np.pi, np.where(beta < -0.5 * np.pi, beta + np.pi, beta))
+    ratio = qp.race_control_ratio(st["Qi"], hi.a, hi.second_kind, st["Qo"], ho.a, ho.second_kind,
+                                  np.arctan2(st["si"], st["ci"]), np.arctan2(st["so"], st["co"]))
     q = sol.q
     data = {
         "inner_contact_load": st["Qi"],
@@ -790,9 +804,8 @@ def to_dataset(sol: QuasiStaticSolution, case=None, status: str = "ok") -> xr.Da
         "ball_center_radial": st["R_b"],
         "ball_centrifugal_force": st["Fc"],
         "ball_outer_race_control": P.outer_control.astype(np.int8),
-        "ball_jones_outer_control": qp.race_control_criterion(
-            st["Qi"], hi.a, hi.second_kind, st["Qo"], ho.a, ho.second_kind,
-            np.arctan2(st["si"], st["ci"]), np.arctan2(st["so"], st["co"])).astype(np.int8),
+        "ball_jones_outer_control": (ratio > 1.0).astype(np.int8),
+        "ball_race_control_ratio": ratio,
         "ball_gyroscopic_moment": st["Mg"],
         "cage_speed": float(np.mean(st["wm"])),
         "cage_slip_ratio": _cage_slip(case, float(np.mean(st["wm"])), P.omega_i, P.omega_o),
@@ -812,8 +825,8 @@ def to_dataset(sol: QuasiStaticSolution, case=None, status: str = "ok") -> xr.Da
     attrs = dict(
         model="quasi-static Jones-Harris (hsbearing.solvers.quasistatic)",
         kinematics=P.control,
-        lambda_inner=float(qp.gyroscopic_split(P.outer_control)[0].mean()),
-        lambda_outer=float(qp.gyroscopic_split(P.outer_control)[1].mean()),
+        lambda_inner=float(_split(P)[0].mean()),
+        lambda_outer=float(_split(P)[1].mean()),
         centrifugal=P.centrifugal, gyroscopic=P.gyroscopic,
         inner_speed=P.omega_i, outer_speed=P.omega_o,
         applied_loads=[float(x) for x in P.loads],
