@@ -99,14 +99,27 @@ def test_map_through_dask_localcluster_matches_local(local_map, tmp_path):
         xr.testing.assert_identical(local[v].reset_coords(drop=True), ds[v].reset_coords(drop=True))
 
 
-def test_map_bad_input_exit_2_nothing_written(tmp_path):
+def test_map_bad_input_exit_2_nothing_written(tmp_path, capsys):
+    from hsbearing.cli import main
+
     out = tmp_path / "bad"
-    r = _cli("map", "zhang2016", "--x", X, "--y", "bearing.outer_land_diameter=52.4mm", "-o", str(out))
-    assert r.returncode == 2 and "bearing.outer_land_diameter" in r.stderr and "Traceback" not in r.stderr
-    r = _cli("map", "zhang2016", "--x", X, "--y", "cage.pocket_diameter=9.0,9.7mm", "-o", str(out))
-    assert r.returncode == 2 and "pocket" in r.stderr and len(r.stderr.strip().splitlines()) == 1
-    r = _cli("map", "zhang2016", "--x", "no_such_key=1,2", "--y", Y, "-o", str(out))
-    assert r.returncode == 2 and "no_such_key" in r.stderr
+
+    def err(*argv):
+        rc = main(["map", "zhang2016", *argv, "-o", str(out)])
+        e = capsys.readouterr().err
+        assert len(e.strip().splitlines()) == 1 and "Traceback" not in e, e
+        return rc, e
+
+    rc, e = err("--x", X, "--y", "bearing.outer_land_diameter=52.4mm")  # the same key twice
+    assert rc == 2 and "bearing.outer_land_diameter" in e
+    rc, e = err("--x", X, "--y", "cage.pocket_diameter=9.0,9.7mm")  # a pocket smaller than the ball
+    assert rc == 2 and "pocket" in e
+    rc, e = err("--x", "no_such_key=1,2", "--y", Y)
+    assert rc == 2 and "no_such_key" in e
+    rc, e = err("--x", X, "--y", "cage.pocket_diameter=9.6,9.7")  # no unit
+    assert rc == 2 and "pocket_diameter" in e
+    rc, e = err("--x", X, "--y", Y, "--duration=-5ms")
+    assert rc == 2 and "duration" in e
     assert not out.exists()
 
 
