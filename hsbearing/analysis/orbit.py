@@ -55,6 +55,9 @@ for _n, _d, _u, _l in [
     ("whirl_radius_max", (), "m", "peak radius of the cage mass-centre orbit about the bearing axis after the transient"),
     ("whirl_frequency", (), "Hz", "dominant whirl frequency of the cage mass centre (> 0 forward, < 0 backward)"),
     ("whirl_frequency_ratio", (), "1", "2 pi whirl_frequency / mean cage speed (1 = synchronous whirl)"),
+    ("classification_detail", (), "1",
+     "sub-label of the class (sweep/map summaries; attrs of a run): still cage, synchronous whirl, harmonic whirl, "
+     "synchronous orbit for '1 period', '' otherwise"),
     ("cage_instability_index", (), "1",
      "normalised whirl-radius dispersion sd(r)/mean(r) of the cage mass centre after the transient "
      "(Ghaisas, Wassgren & Sadeghi 2004; mean floored at 5 % of the guide clearance)"),
