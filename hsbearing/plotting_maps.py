@@ -56,7 +56,7 @@ def plot_map(ds: xr.Dataset, path) -> Path:
         np.full((ny, nx), np.nan)
     ok = status == "ok"
 
-    fig = Figure(figsize=(max(9.0, 2.6 * nx * 2 + 2.5), max(3.6, 1.1 * ny + 2.2)))
+    fig = Figure(figsize=(max(9.0, min(18.0, 3.2 * nx + 4.0)), max(3.8, min(12.0, 1.2 * ny + 2.2))))
     ax1, ax2 = fig.subplots(1, 2)
     vmax = float(np.nanmax(ind[ok])) if np.isfinite(ind[ok]).any() else 1.0
     norm = Normalize(vmin=0.0, vmax=max(vmax, 1e-3))
