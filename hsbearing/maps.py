@@ -30,6 +30,7 @@ from typing import Any, Callable
 import numpy as np
 import xarray as xr
 
+import hsbearing.analysis.orbit  # noqa: F401 - registers the summary variables (units, long_name) before assemble
 from hsbearing.case import CaseError, load_case, resolve_key
 from hsbearing.results import write_netcdf
 from hsbearing.sweeps import plan_sweep, run_sweep

@@ -61,6 +61,7 @@ def test_map_cli_local_writes_map_nc_png_and_wall_times(local_map):
     a = open_run(out / ds["archive"].values[0, 0])
     assert a.attrs["guide_clearance"] == pytest.approx(0.15e-3, rel=1e-6)
     assert INDICATOR in a  # the archive of each run carries the indicator too
+    assert ds[INDICATOR].attrs["units"] == "1" and "Ghaisas" in ds[INDICATOR].attrs["long_name"]  # CLI process too
     png = (out / "map.png").read_bytes()
     assert png[:8] == b"\x89PNG\r\n\x1a\n"
     # printed: one line per point with its wall time, and the totals; progress bar on stderr
