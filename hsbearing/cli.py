@@ -274,6 +274,12 @@ def cmd_sweep(args) -> int:
     return rc
 
 
+def cmd_map(args) -> int:
+    from hsbearing import maps
+
+    return maps.cli_main(args)
+
+
 def cmd_study(args) -> int:
     from hsbearing import study, sweeps
     from hsbearing.results import check_output_path
@@ -392,6 +398,21 @@ def build_parser() -> argparse.ArgumentParser:
     sp.add_argument("--no-figure", "--no-plot", dest="no_figure", action="store_true",
                     help="do not draw DIR/sweep.png (--no-plot is accepted as in 'hsbearing run')")
     sp.set_defaults(func=cmd_sweep)
+
+    sp = sub.add_parser("map", help="cage-stability map over two keys: class map + instability indicator "
+                                    "(DIR/map.nc, DIR/map.png)")
+    with_case(sp)
+    sp.add_argument("--x", required=True, metavar="KEY=V1,V2,...", help="key and values of the map columns, "
+                    "e.g. --x bearing.outer_land_diameter=52.3,52.4,52.5mm")
+    sp.add_argument("--y", required=True, metavar="KEY=V1,V2,...", help="key and values of the map rows, "
+                    "e.g. --y cage.pocket_diameter=9.6,9.7mm")
+    sp.add_argument("-j", "--jobs", type=int, default=None, help="worker processes (default: cores)")
+    sp.add_argument("--scheduler", default=None, help="dask.distributed scheduler address tcp://host:port")
+    sp.add_argument("--duration", help="simulated time of each run, e.g. 0.6s (default: [simulation] duration)")
+    sp.add_argument("-o", "--output", required=True, help="output directory (resumable: rerun to finish)")
+    sp.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
+    sp.add_argument("--no-figure", "--no-plot", dest="no_figure", action="store_true", help="do not draw DIR/map.png")
+    sp.set_defaults(func=cmd_map)
 
     from hsbearing.study import study_help
 

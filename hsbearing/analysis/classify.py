@@ -67,6 +67,9 @@ __all__ = [
     "local_thickness",
     "scattered_groups",
     "rotation_number",
+    "DETAILS",
+    "classification_detail",
+    "cage_instability_index",
 ]
 
 #: Closed vocabulary of the labels (``"k periods"`` stands for any k >= 2).
@@ -432,3 +435,165 @@ def classify(points, signal=None, *, scale=None, tol=DEFAULTS["tol"], kmax=DEFAU
             conf *= 0.6
             det["reason"] += f"; 0-1 test disagrees (K = {K:.2f})"
     return label, float(round(min(max(conf, 0.0), 1.0), 3)), det
+
+
+# ----------------------------------------------------------------------------- sub-labels and instability indicator
+
+#: Closed vocabulary of ``classification_detail`` (the sub-label of a class; '' when there is none).
+#: "1 period" of seed 004 (Figs. 5a, 6a, 8b, 9b, 11a: "single circle whirl" + one Poincare point) is
+#: split into what the section alone cannot tell apart:
+#:   "still cage"            the cage centre does not move (fixed point, concentric or offset): one
+#:                           section point because nothing moves, not because a whirl closes;
+#:   "synchronous whirl"     a single-circle whirl closing once per cage revolution (whirl / cage speed = +-1):
+#:                           the paper's "1 period" (Fig. 5a);
+#:   "harmonic whirl"        a whirl at an integer multiple n >= 2 of the cage speed (also one section point);
+#:   "synchronous orbit"     any other closed orbit repeating once per cage revolution (not a circle).
+DETAILS = ("", "still cage", "synchronous whirl", "harmonic whirl", "synchronous orbit")
+
+#: Thresholds of :func:`classification_detail` (decisions in docs/analysis.md, "Sub-labels of 1 period").
+DETAIL_DEFAULTS = dict(
+    still_fraction=0.01,  # orbit RMS radius about its own centre < 1 % of the guide clearance: still
+    circle_spread=0.15,  # sd / mean of the radius about the orbit centre <= 0.15: a circle
+    ratio_tol=0.1,  # |whirl frequency / cage rotation frequency| within 0.1 of an integer
+)
+
+
+def _orbit_about_centre(y, z):
+    y = np.asarray(y, float)
+    z = np.asarray(z, float)
+    ok = np.isfinite(y) & np.isfinite(z)
+    y, z = y[ok], z[ok]
+    yc, zc = float(np.mean(y)), float(np.mean(z))
+    return y - yc, z - zc
+
+
+def classification_detail(label: str, t, y, z, cage_speed, clearance: float, *,
+                          still_fraction: float = DETAIL_DEFAULTS["still_fraction"],
+                          circle_spread: float = DETAIL_DEFAULTS["circle_spread"],
+                          ratio_tol: float = DETAIL_DEFAULTS["ratio_tol"]) -> tuple[str, dict]:
+    """Sub-label of a classification from the continuous cage-centre orbit (after the transient).
+
+    Only ``"1 period"`` has sub-labels (:data:`DETAILS`); other labels return ``""``.  Seed 004
+    pairs "1 period" with "the single circle whirl" of the cage centre and one Poincare point
+    (Zhang et al. 2016, Sec. 4, Fig. 5a); the cage-revolution section gives one point as well for a
+    cage centre that does not move at all, so the orbit itself decides:
+
+    1. RMS distance of the orbit from its own centre ``rho`` < ``still_fraction`` x guide clearance
+       -> ``"still cage"`` (the mean offset of the centre is reported, not judged);
+    2. else the whirl frequency f_w (dominant frequency of (y - mean) + i (z - mean)) over the cage
+       rotation frequency f_c = mean(cage_speed) / 2 pi; ``n = round(|f_w / f_c|)``;
+       the radius about the orbit centre has sd/mean <= ``circle_spread`` (a circle) and
+       ``| |f_w / f_c| - n | <= ratio_tol``: n = 1 -> ``"synchronous whirl"``, n >= 2 ->
+       ``"harmonic whirl"``;
+    3. otherwise ``"synchronous orbit"`` (a closed non-circular orbit, or a circle whose frequency
+       ratio is not an integer -- the section still repeats, e.g. a whirl locked to the section
+       through the ball-pass excitation).
+
+    Parameters
+    ----------
+    label : str
+        The class from :func:`classify`.
+    t : (n,) array_like
+        Time [s] of the orbit samples.
+    y, z : (n,) array_like
+        Cage mass-centre displacements D_Y, D_Z [m].
+    cage_speed : (n,) array_like or float
+        Cage rotation speed about X [rad/s].
+    clearance : float
+        Guide clearance (radial) [m]; the scale of "still".
+
+    Returns
+    -------
+    detail : str
+        One of :data:`DETAILS`.
+    info : dict
+        ``orbit_rms_radius`` [m] (about the orbit centre), ``orbit_offset`` [m] (of the orbit
+        centre from the bearing axis), ``radius_spread`` [1], ``whirl_cage_ratio`` [1] (signed),
+        ``harmonic`` (n) and ``reason``.
+    """
+    info: dict = {"orbit_rms_radius": None, "orbit_offset": None, "radius_spread": None,
+                  "whirl_cage_ratio": None, "harmonic": None, "reason": ""}
+    if label != "1 period":
+        return "", info
+    from hsbearing.analysis.orbit import whirl_frequency
+
+    t = np.asarray(t, float)
+    y = np.asarray(y, float)
+    z = np.asarray(z, float)
+    ok = np.isfinite(t) & np.isfinite(y) & np.isfinite(z)
+    t, y, z = t[ok], y[ok], z[ok]
+    if len(t) < 16:
+        info["reason"] = "fewer than 16 orbit samples"
+        return "", info
+    info["orbit_offset"] = float(math.hypot(np.mean(y), np.mean(z)))
+    dy, dz = _orbit_about_centre(y, z)
+    r = np.hypot(dy, dz)
+    rho = float(np.sqrt(np.mean(r * r)))
+    info["orbit_rms_radius"] = rho
+    c = float(clearance) if clearance and math.isfinite(clearance) and clearance > 0 else float("nan")
+    if math.isfinite(c) and rho < still_fraction * c:
+        info["reason"] = (f"cage centre at rest: orbit RMS radius {rho:.3g} m < {still_fraction:g} x guide "
+                          f"clearance {c:.3g} m (offset {info['orbit_offset']:.3g} m)")
+        return "still cage", info
+    rbar = float(np.mean(r))
+    spread = float(np.std(r) / rbar) if rbar > 0 else float("inf")
+    info["radius_spread"] = spread
+    w = np.asarray(cage_speed, float)
+    w = float(np.nanmean(w[ok] if w.ndim and w.size == ok.size else w))
+    fw = whirl_frequency(t, y, z)
+    ratio = 2 * math.pi * fw / w if (w != 0 and math.isfinite(fw)) else float("nan")
+    info["whirl_cage_ratio"] = ratio
+    if math.isfinite(ratio):
+        n = int(round(abs(ratio)))
+        info["harmonic"] = n
+        if spread <= circle_spread and n >= 1 and abs(abs(ratio) - n) <= ratio_tol:
+            kind = "synchronous whirl" if n == 1 else "harmonic whirl"
+            info["reason"] = (f"circular whirl (radius sd/mean {spread:.2f} <= {circle_spread}) at {ratio:+.3f} x "
+                              f"the cage speed, radius {rbar:.3g} m")
+            return kind, info
+    info["reason"] = (f"closed orbit repeating once per cage revolution, not a single circle at an integer multiple "
+                      f"of the cage speed (radius sd/mean {spread:.2f}, whirl/cage {ratio:+.3f})")
+    return "synchronous orbit", info
+
+
+def cage_instability_index(y, z, clearance: float | None = None, floor_fraction: float = 0.05) -> float:
+    """Normalised whirl-radius dispersion sigma_r / r_mean of the cage mass centre [1].
+
+    r = sqrt(D_Y^2 + D_Z^2) is the whirl radius about the bearing axis, sigma_r its standard
+    deviation and r_mean its mean over the samples given (after the transient).  Ghaisas, Wassgren &
+    Sadeghi (2004, "Cage instabilities in cylindrical roller bearings", ASME J. Tribol. 126,
+    681-689) judge cage stability by the dispersion of the cage whirl about its mean orbit: a
+    steady circular whirl about the bearing axis has a constant radius (index 0), an irregular
+    whirl one that varies (index of order 0.3-1).
+
+    Departure (documented in docs/sweeps.md, "Cage-stability maps"): with ``clearance`` given,
+    r_mean is floored at ``floor_fraction`` x clearance, so a cage almost at rest on the bearing axis
+    (r_mean -> 0, ratio 0/0 of noise) reads as stable instead of a random number; the floor does not
+    change the index of any whirl using more than 5 % of the clearance.
+
+    Parameters
+    ----------
+    y, z : array_like
+        Cage mass-centre displacements D_Y, D_Z [m].
+    clearance : float, optional
+        Guide clearance [m] (for the floor).
+    floor_fraction : float
+        Floor of r_mean as a fraction of the clearance [1].
+
+    Returns
+    -------
+    float
+        sigma_r / max(r_mean, floor) [1]; NaN with fewer than 2 finite samples.
+    """
+    y = np.asarray(y, float)
+    z = np.asarray(z, float)
+    ok = np.isfinite(y) & np.isfinite(z)
+    if ok.sum() < 2:
+        return float("nan")
+    r = np.hypot(y[ok], z[ok])
+    den = float(np.mean(r))
+    if clearance is not None and math.isfinite(clearance) and clearance > 0:
+        den = max(den, floor_fraction * float(clearance))
+    if den <= 0:
+        return 0.0
+    return float(np.std(r) / den)  # [1] dispersion of the whirl radius about its mean

@@ -29,6 +29,8 @@ import numpy as np
 import xarray as xr
 
 from hsbearing.analysis import poincare as _pc
+from hsbearing.analysis.classify import cage_instability_index as _instability
+from hsbearing.analysis.classify import classification_detail as _detail
 from hsbearing.analysis.classify import classify as _classify
 from hsbearing.analysis.slip import cage_slip_ratio, raceway_control_cage_speed, theoretical_cage_speed
 from hsbearing.results import VARIABLES, register
@@ -60,6 +62,12 @@ for _n, _d, _u, _l in [
     ("whirl_radius_max", (), "m", "peak radius of the cage mass-centre orbit about the bearing axis after the transient"),
     ("whirl_frequency", (), "Hz", "dominant whirl frequency of the cage mass centre (> 0 forward, < 0 backward)"),
     ("whirl_frequency_ratio", (), "1", "2 pi whirl_frequency / mean cage speed (1 = synchronous whirl)"),
+    ("classification_detail", (), "1",
+     "sub-label of the class (sweep/map summaries; attrs of a run): still cage, synchronous whirl, harmonic whirl, "
+     "synchronous orbit for '1 period', '' otherwise"),
+    ("cage_instability_index", (), "1",
+     "normalised whirl-radius dispersion sd(r)/mean(r) of the cage mass centre after the transient "
+     "(Ghaisas, Wassgren & Sadeghi 2004; mean floored at 5 % of the guide clearance)"),
     ("poincare_time", ("section",), "s", "time of the Poincare section crossings"),
     ("poincare_y", ("section",), "m", "cage mass-centre displacement D_Y at the Poincare section"),
     ("poincare_vy", ("section",), "m/s", "cage mass-centre velocity V_Y at the Poincare section"),
@@ -282,10 +290,17 @@ def annotate(ds: xr.Dataset, case=None, *, alpha=None, section: str = "cage_revo
         floor = np.array([0.5 * gc, 0.5 * gc * max(w_c, 1e-12)])
         classify_kw = dict(classify_kw, scale=np.maximum(np.ptp(orbit, axis=0), floor))
     label, conf, det = _classify(pts, signal=orbit, **classify_kw)
+    # --- sub-label of the class from the continuous orbit, and the instability indicator
+    y_m = np.asarray(ds["cage_center_y"].values, float)[mask]
+    z_m = np.asarray(ds["cage_center_z"].values, float)[mask]
+    detail, dinfo = _detail(label, t[mask], y_m, z_m, np.asarray(ds["cage_speed"].values, float)[mask], gc)
+    ds["cage_instability_index"] = _var("cage_instability_index", _instability(y_m, z_m, gc))
     ds.attrs.update(
         classification=label,
         classification_confidence=conf,
         classification_reason=det.get("reason", ""),
+        classification_detail=detail,
+        classification_detail_reason=dinfo.get("reason", ""),
         classification_details=json.dumps({k: (None if isinstance(v, float) and not math.isfinite(v) else v)
                                            for k, v in det.items()}),
         poincare_section=_pc.section_description(section),
@@ -327,7 +342,8 @@ def summary(ds: xr.Dataset, case=None) -> dict[str, Any]:
         sel = {}
     out["classification"] = ds.attrs.get("classification", "static" if not dynamic else "undetermined")
     out["classification_confidence"] = float(ds.attrs.get("classification_confidence", float("nan")))
-    for name in ("mean_cage_slip_ratio", "mean_cage_slip_ratio_raceway_control", "mean_cage_speed",
+    out["classification_detail"] = str(ds.attrs.get("classification_detail", ""))
+    for name in ("cage_instability_index", "mean_cage_slip_ratio", "mean_cage_slip_ratio_raceway_control", "mean_cage_speed",
                  "whirl_amplitude", "whirl_radius_max", "whirl_frequency", "whirl_frequency_ratio"):
         out[name] = _scalar(ds, name)
     if not dynamic and "cage_speed" in ds:
