@@ -971,6 +971,9 @@ def assemble(plan: SweepPlan, records: Sequence[dict], *, archive_prefix: str = 
     shape, dims = plan.shape, plan.dims
     if plan.base.system == "gyro_ribbon_cage":  # its summary variables are declared there (units, long_name)
         import hsbearing.models.friction.gyro  # noqa: F401
+    # the run summaries are computed in the workers: declare their variables here too (units, long_name),
+    # or a sweep with -j >= 2 or a scheduler writes them bare
+    import hsbearing.analysis.orbit  # noqa: F401
     names: list[str] = []
     for r in records:
         for k in r.get("summary", {}):
