@@ -175,9 +175,9 @@ def cmd_study(args) -> int:
 
 
 def cmd_friction(args) -> int:
-    from hsbearing.models import friction
+    from hsbearing import rating  # dispatch by [case] system: every ball-bearing case answers
 
-    return friction.cli_main(args)
+    return rating.friction_cli(args)
 
 
 def cmd_preload(args) -> int:
@@ -263,9 +263,11 @@ def build_parser() -> argparse.ArgumentParser:
     sp.add_argument("--no-figure", action="store_true", help="do not draw DIR/<table>.png (summary figure of each table)")
     sp.set_defaults(func=cmd_study)
 
-    sp = sub.add_parser("friction", help="DGBB friction torque: seed 003 sliding method and SKF 2004 model")
+    sp = sub.add_parser("friction", help="friction torque / power loss of any ball-bearing case, with the SKF 2004 model "
+                                         "as a cross-check")
     with_case(sp, optional=False)
-    sp.add_argument("--speeds", default="500,5000,15000rpm", help="comma list with a unit, e.g. 500,5000,15000rpm")
+    sp.add_argument("--speeds", default=None, help="comma list with a unit, e.g. 500,5000,15000rpm "
+                                                   "(default: 500,5000,15000rpm deep groove; the case speed angular contact)")
     sp.add_argument("-o", "--output", help="netCDF archive")
     sp.set_defaults(func=cmd_friction)
 
