@@ -59,6 +59,9 @@ def _print_summary(ds, out: Path | None = None) -> None:
         from hsbearing.balances import power_summary_lines
 
         print("\n".join(power_summary_lines(ds)))
+    if ds.attrs.get("warnings", "none") != "none":  # contact/film/cage limits (hsbearing.contact_state)
+        for w in str(ds.attrs["warnings"]).split(" | "):
+            print(f"warning: {w}")
     for key in ("classification", "classification_confidence"):
         if key in ds.attrs:
             print(f"{key}: {ds.attrs[key]}")
