@@ -183,6 +183,12 @@ def cmd_friction(args) -> int:
     return rating.friction_cli(args)
 
 
+def cmd_life(args) -> int:
+    from hsbearing import rating
+
+    return rating.life_cli(args)
+
+
 def cmd_preload(args) -> int:
     from hsbearing.models.friction import wire_race
 
@@ -273,6 +279,11 @@ def build_parser() -> argparse.ArgumentParser:
                                                    "(default: 500,5000,15000rpm deep groove; the case speed angular contact)")
     sp.add_argument("-o", "--output", help="netCDF archive")
     sp.set_defaults(func=cmd_friction)
+
+    sp = sub.add_parser("life", help="ISO 281 rating life and ISO/TS 16281 reference life of a radial ball-bearing case")
+    with_case(sp, optional=False)
+    sp.add_argument("-o", "--output", help="netCDF archive")
+    sp.set_defaults(func=cmd_life)
 
     sp = sub.add_parser("preload", help="wire-race bearing: preload vs starting torque (seed 001)")
     with_case(sp, optional=False)

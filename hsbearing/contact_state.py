@@ -21,7 +21,7 @@ import numpy as np
 
 from hsbearing.results import register
 
-__all__ = ["contact_state_variables", "spin_to_roll_relative", "warnings_for", "format_warnings", "NAMES"]
+__all__ = ["contact_state_variables", "quasi_static_contact_state", "spin_to_roll_relative", "warnings_for", "format_warnings", "NAMES"]
 
 for _n, _l in [
     ("inner_film_thickness_minimum", "Hamrock-Dowson minimum film thickness at the inner contact h_min,i"),
@@ -104,6 +104,19 @@ def contact_state_variables(case, Qi, Qo, ai, ao, Ui, Uo) -> dict:
             out[f"{side}_film_thickness_minimum"] = hm
             out[f"{side}_film_parameter"] = film_parameter(hm, sigma)
     return out
+
+
+def quasi_static_contact_state(case, qs) -> dict:
+    """:func:`contact_state_variables` of a quasi-static Dataset (its loads, angles, orbit speeds; entrainment
+    speed |omega_race - omega_m| (r_b -/+ (D/2) cos alpha) as the quasi-static solver's film)."""
+    from hsbearing.models.geometry import derive
+
+    D = derive(case).D
+    wm, rb = qs["ball_orbit_speed"].values, qs["ball_center_radial"].values
+    ai, ao = qs["inner_contact_angle"].values, qs["outer_contact_angle"].values
+    ui = np.abs(case.operating.inner_speed - wm) * (rb - 0.5 * D * np.cos(ai))
+    uo = np.abs(case.operating.outer_speed - wm) * (rb + 0.5 * D * np.cos(ao))
+    return contact_state_variables(case, qs["inner_contact_load"].values, qs["outer_contact_load"].values, ai, ao, ui, uo)
 
 
 def spin_to_roll_relative(ratio_entrainment, alpha, D, r_b, side: str, roll_sign=1.0):

@@ -18,7 +18,7 @@ import numpy as np
 
 from hsbearing.results import make_dataset, register, standard_attrs
 
-__all__ = ["life", "life_lines", "quasi_static_power_loss", "friction_angular_contact", "friction_cli"]
+__all__ = ["life", "life_lines", "quasi_static_power_loss", "friction_angular_contact", "friction_cli", "life_cli"]
 
 for _n, _d, _u, _l in [
     ("dynamic_load_rating", (), "N", "basic dynamic radial load rating C_r (ISO 281 5.1.1, or the case's catalogue value)"),
@@ -97,7 +97,9 @@ def life(case, *, quasistatic: bool = True):
         "modified_rating_life": L.modified_rating_life(L10, a_iso),
     }
     coords = {}
+    warns = []
     if quasistatic:
+        from hsbearing import contact_state
         from hsbearing.solvers import quasistatic as qs
 
         inner_rot = abs(op.inner_speed) >= abs(op.outer_speed)  # the load is fixed in space (shaft/housing loads)
@@ -110,6 +112,8 @@ def life(case, *, quasistatic: bool = True):
                                                Qci, Qce, inner_rotating=inner_rot)
             if inertia:
                 data["inner_raceway_rating"], data["outer_raceway_rating"] = Qci, Qce
+                warns = contact_state.warnings_for(ds.assign(**{k: ("ball", v) for k, v in
+                                                                contact_state.quasi_static_contact_state(case, ds).items()}), case)
         data.update(out)
         L10r = out["reference_rating_life"]
         P_ref = C * L10r ** (-1.0 / 3.0)  # the equivalent load that gives L_10r with the bearing's C_r
@@ -124,6 +128,7 @@ def life(case, *, quasistatic: bool = True):
         dynamic_load_rating_source="bearing.dynamic_load_rating" if b.dynamic_load_rating else "ISO 281 5.1.1 from the geometry",
         static_load_rating_source="friction.static_load_rating" if case.friction.static_load_rating else "ISO 76 from the geometry",
         notes="; ".join(notes) or "none",
+        warnings=" | ".join(warns) if warns else "none",
     )
     return make_dataset(data, coords=coords, attrs=attrs)
 
@@ -158,10 +163,32 @@ def life_lines(ds) -> list[str]:
         ]
     if a.get("notes", "none") != "none":
         lines.append(f"  note: {a['notes']}")
+    if a.get("warnings", "none") != "none":
+        lines += [f"warning: {w}" for w in str(a["warnings"]).split(" | ")]
     return lines
 
 
-def quasi_static_power_loss(case, speed=None):
+def life_cli(args) -> int:
+    """``hsbearing life CASE [--set k=v] [-o OUT.nc]``: ISO 281 and ISO/TS 16281 lives (radial ball bearings)."""
+    from hsbearing.case import CaseError, load_case
+    from hsbearing.cli import _parse_sets
+    from hsbearing.results import write_netcdf
+
+    case = load_case(args.case, **_parse_sets(getattr(args, "set", None)))
+    out = getattr(args, "output", None)
+    if out and not str(out).endswith((".nc", ".nc4")):
+        raise CaseError("-o", None, f"{out!r}: the archive must be a .nc file")
+    ds = life(case)
+    print(f"case {case.name}: Fa = {abs(case.operating.axial_load):g} N, Fr = "
+          f"{math.hypot(case.operating.radial_load, case.operating.radial_load_z):g} N")
+    print("\n".join(life_lines(ds)))
+    if out:
+        write_netcdf(ds, out)
+        print(f"archive: {out}")
+    return 0
+
+
+def quasi_static_power_loss(case, speed=None, with_state: bool = False):
     """Power loss by source [W] at the quasi-static state, with the dynamic model's contact functions.
 
     The dynamic model is built from the case (:func:`hsbearing.dynamics.build_model`); its
@@ -195,6 +222,8 @@ def quasi_static_power_loss(case, speed=None):
     out["drive_torque"] = float(pv["drive_torque"][0])
     w = abs(case.operating.inner_speed - case.operating.outer_speed)
     out["friction_torque"] = out["power_loss"] / w if w > 0 else float("nan")
+    if with_state:  # the quasi-static Dataset the state comes from, and the case at that speed
+        out["state"], out["case"] = m.info["quasistatic"], case
     return out
 
 
@@ -227,13 +256,22 @@ def friction_angular_contact(case, speeds):
 
     _register_qs_power()
     w = np.asarray(speeds, dtype=float)
-    rows = [quasi_static_power_loss(case, wi) for wi in w]
+    rows = [quasi_static_power_loss(case, wi, with_state=True) for wi in w]
+    from hsbearing import contact_state
+
+    warns = []
+    for r in rows:
+        q = r.pop("state")
+        for x in contact_state.warnings_for(q.assign(**{k: ("ball", v) for k, v in
+                                                        contact_state.quasi_static_contact_state(r.pop("case"), q).items()}), case):
+            if x not in warns:
+                warns.append(x)
     data = {f"qs_power_loss_{s}": np.array([r[s] for r in rows]) for s in SOURCES}
     data["qs_power_loss"] = np.array([r["power_loss"] for r in rows])
     data["qs_friction_torque"] = np.array([r["friction_torque"] for r in rows])
     data.update(skf2004.skf_moments(case, w))
     attrs = standard_attrs(case, "ok", title="hsbearing friction: quasi-static power loss by source, SKF 2004 model",
-                           note_quasi_static=_NOTE_QS, note_skf=_NOTE_SKF)
+                           note_quasi_static=_NOTE_QS, note_skf=_NOTE_SKF, warnings=" | ".join(warns) if warns else "none")
     return make_dataset(data, coords={"speed": w}, attrs=attrs)
 
 
@@ -314,6 +352,9 @@ def friction_cli(args) -> int:
         print("note: friction.law = coulomb selects the seed 003 deep-groove sliding method with a dry constant mu; it is not "
               "used for angular-contact bearings (the traction law of the oil is)")
     print("the dynamic run (hsbearing run) adds the pocket and whirling-cage losses: power_loss_<source> in its archive")
+    if ds.attrs.get("warnings", "none") != "none":
+        for x in str(ds.attrs["warnings"]).split(" | "):
+            print(f"warning: {x}")
     if out:
         write_netcdf(ds, out)
         print(f"archive: {out}")
