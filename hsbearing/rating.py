@@ -245,6 +245,9 @@ def _register_qs_power():
         register(f"qs_power_loss_{s}", ("speed",), "W", f"power loss at the quasi-static state by source {s} (hsbearing.balances.SOURCES)")
 
 
+_register_qs_power()
+
+
 def friction_angular_contact(case, speeds):
     """Quasi-static power loss by source and the SKF 2004 angular-contact moments over inner-ring speeds [rad/s].
 
@@ -254,7 +257,6 @@ def friction_angular_contact(case, speeds):
     from hsbearing.balances import SOURCES
     from hsbearing.models.friction import skf2004
 
-    _register_qs_power()
     w = np.asarray(speeds, dtype=float)
     rows = [quasi_static_power_loss(case, wi, with_state=True) for wi in w]
     from hsbearing import contact_state
