@@ -325,6 +325,14 @@ def friction_cli(args) -> int:
         for line in wire_race._format_table(ds):
             print(line)
         print(f"note: preload sweep and target window: hsbearing preload {case.name}")
+        from hsbearing.models.limits import ISO76_BALL_PRESSURE
+
+        top = max(float(np.nanmax(ds[f"p_max{j}"].values)) for j in range(1, 5) if f"p_max{j}" in ds)
+        if top > ISO76_BALL_PRESSURE:
+            w = (f"maximum contact pressure {top * 1e-9:.3g} GPa exceeds the {ISO76_BALL_PRESSURE * 1e-9:g} GPa of ISO 76:2006 "
+                 "(static load rating of ball bearings): the raceways deform permanently")
+            ds.attrs["warnings"] = w
+            print(f"warning: {w}")
         if out:
             write_netcdf(ds, out)
             print(f"archive: {out}")

@@ -73,3 +73,9 @@ def test_designation_outside_the_known_series_is_a_case_error():
 
     with pytest.raises(CaseError, match="bearing.designation"):
         skf2004.angular_contact_series_of("7406", "x.toml")
+
+
+def test_wire_race_pressure_warning(capsys):
+    """Seed 001 wire race at its case preload reaches ~10 GPa (seed Table 2 pressures): the ISO 76 warning is printed."""
+    assert cli.main(["friction", "shan2010_wire_race"]) == 0
+    assert "warning: maximum contact pressure" in capsys.readouterr().out

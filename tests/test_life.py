@@ -138,3 +138,18 @@ def test_case_life_default_case():
     # speed effects change the TS 16281 life (centrifugal force moves load to the outer race); both finite, positive
     assert 0 < float(ds.reference_rating_life) < np.inf and 0 < float(ds.reference_rating_life_static) < np.inf
     assert float(ds.reference_rating_life) != pytest.approx(float(ds.reference_rating_life_static), rel=1e-3)
+
+
+def test_life_cli_and_bad_input(capsys, tmp_path):
+    """hsbearing life: prints L_10, L_10m, L_10r; a non-radial system or a non-.nc archive is exit 2, nothing written."""
+    from hsbearing import cli
+
+    out = tmp_path / "life.nc"
+    assert cli.main(["life", "dgbb_6206", "-o", str(out)]) == 0
+    text = capsys.readouterr().out
+    assert "L_10  =" in text and "L_10m =" in text and "ISO/TS 16281" in text and out.exists()
+    bad = tmp_path / "life.txt"
+    assert cli.main(["life", "dgbb_6206", "-o", str(bad)]) == 2 and not bad.exists()
+    assert cli.main(["life", "jiang2014_gyro"]) == 2
+    err = capsys.readouterr().err
+    assert "case.system" in err
