@@ -118,6 +118,8 @@ _MATERIAL = {
     "elastic_modulus": _f("pressure", "Young's modulus E", required=ALL, positive=True),
     "poisson_ratio": _f("number", "Poisson's ratio nu", required=ALL, minimum=0.0, maximum=0.5),
     "density": _f("density", "mass density rho", required=ALL, positive=True),
+    "surface_roughness": _f("length", "rms surface roughness R_q of the rolling surfaces (film parameter lambda; "
+                            "composite sqrt(R_q,ball^2 + R_q,race^2))", default="0.05 um", nonneg=True),
 }
 
 #: The schema: table -> key -> Field.  ``materials`` has three sub-tables.
@@ -144,6 +146,7 @@ SCHEMA: dict[str, dict[str, Field]] = {
         "width": _f("length", "bearing width B", positive=True),
         "inner_land_diameter": _f("length", "inner-ring land (shoulder) diameter", positive=True),
         "outer_land_diameter": _f("length", "outer-ring land diameter (cage guide surface)", positive=True),
+        "dynamic_load_rating": _f("force", "basic dynamic load rating C_r (catalogue; default: ISO 281 from the geometry)", positive=True),
         "inner_ring_mass": _f("mass", "inner ring (+ shaft) mass m_i", positive=True),
         "inner_ring_axial_inertia": _f("inertia", "inner ring polar moment of inertia", positive=True),
         "inner_ring_diametral_inertia": _f("inertia", "inner ring diametral moment of inertia", positive=True),
@@ -182,6 +185,8 @@ SCHEMA: dict[str, dict[str, Field]] = {
         "pressure_viscosity_coefficient": _f("pressure_coefficient", "alpha (overrides the oil's)", positive=True),
         "density": _f("density", "oil density", default="850 kg/m^3", positive=True),
         "lubrication": _f("choice", "lubrication method", default="oil_jet", choices=("oil_jet", "oil_bath", "oil_air", "grease", "dry")),
+        "contamination_factor": _f("number", "ISO 281 contamination factor e_C (Table 13; 0.5-0.6 normal cleanliness)",
+                                   default=0.5, minimum=0.0, maximum=1.0),
         "oil_volume_fraction": _f("number", "oil fraction of the air-oil mixture in the cavity (drag)", default=0.05, minimum=0.0, maximum=1.0),
     },
     "operating": {

@@ -77,6 +77,9 @@ def _print_summary(ds, out: Path | None = None) -> None:
         from hsbearing.balances import power_summary_lines
 
         print("\n".join(power_summary_lines(ds)))
+    if ds.attrs.get("warnings", "none") != "none":  # contact/film/cage limits (hsbearing.contact_state)
+        for w in str(ds.attrs["warnings"]).split(" | "):
+            print(f"warning: {w}")
     if "classification" in ds.attrs:
         cls = ds.attrs["classification"]
         reason = ds.attrs.get("classification_reason", "")
@@ -304,11 +307,18 @@ def _check_output_option(args) -> None:
 
 
 def cmd_friction(args) -> int:
-    from hsbearing.models import friction
+    from hsbearing import rating  # dispatch by [case] system: every ball-bearing case answers
 
     _check_output_option(args)
 
-    return friction.cli_main(args)
+    return rating.friction_cli(args)
+
+
+def cmd_life(args) -> int:
+    from hsbearing import rating
+
+    _check_output_option(args)
+    return rating.life_cli(args)
 
 
 def cmd_preload(args) -> int:
@@ -433,13 +443,20 @@ def build_parser() -> argparse.ArgumentParser:
                     help="do not draw DIR/<table>.png (summary figure of each table)")
     sp.set_defaults(func=cmd_study)
 
-    sp = sub.add_parser("friction", help="friction torque of a ball-bearing case: sliding friction by spinning and "
-                                         "differential sliding with pure-rolling lines (deep-groove bearing paper, "
-                                         "cases dgbb_6206/6207/6208) and the SKF 2004 frictional-moment model")
-    with_case(sp, optional=False, examples=", e.g. dgbb_6206")
-    sp.add_argument("--speeds", default="500,5000,15000rpm", help="comma list with a unit, e.g. 500,5000,15000rpm")
+    sp = sub.add_parser("friction", help="friction torque / power loss of any ball-bearing case (angular contact: "
+                                         "quasi-static power loss by source; deep groove: sliding friction with "
+                                         "pure-rolling lines; gyro, wire race: their own models), with the SKF 2004 "
+                                         "frictional-moment model as a cross-check")
+    with_case(sp, optional=False, examples=", e.g. zhang2016 or dgbb_6206")
+    sp.add_argument("--speeds", default=None, help="comma list with a unit, e.g. 500,5000,15000rpm "
+                                                   "(default: 500,5000,15000rpm deep groove; the case speed angular contact)")
     sp.add_argument("-o", "--output", help="netCDF archive")
     sp.set_defaults(func=cmd_friction)
+
+    sp = sub.add_parser("life", help="ISO 281 rating life and ISO/TS 16281 reference life of a radial ball-bearing case")
+    with_case(sp, optional=False, examples=", e.g. zhang2016")
+    sp.add_argument("-o", "--output", help="netCDF archive")
+    sp.set_defaults(func=cmd_life)
 
     sp = sub.add_parser("preload", help="wire-race bearing: preload vs starting torque (Shan et al. 2010, "
                                         "case shan2010_wire_race)")

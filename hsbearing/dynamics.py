@@ -578,6 +578,17 @@ def to_dataset(model: DynamicModel, t, Y, stats, status="ok", annotate: bool = T
     from hsbearing import balances  # power loss by source, drive torque (registered there)
 
     data.update(balances.power_variables(aux, gaux))
+    # contact state per contact over time (issue 17 item 3): spin-to-roll from the kernel, Hertz/EHL/lambda derived
+    from hsbearing import contact_state
+
+    rb = L.ball_radius(Y, geom.dm)
+    for side, col, w_race in (("inner", "spin_roll_i", case.operating.inner_speed),
+                              ("outer", "spin_roll_o", case.operating.outer_speed)):
+        data[f"{side}_spin_to_roll"] = contact_state.spin_to_roll_relative(
+            aux[..., A[col]], data[f"{side}_contact_angle"], geom.D, rb, side, np.sign(w_race - u["thetadot_b"]))
+    data.update(contact_state.contact_state_variables(case, data["inner_contact_load"], data["outer_contact_load"],
+                                                      data["inner_contact_angle"], data["outer_contact_angle"],
+                                                      data["inner_rolling_speed"], data["outer_rolling_speed"]))
     # per-ball derived quantities (forces, speeds, angles, ratios) are stored in single precision
     # (7 significant digits) to halve the archive; states that are positions stay double
     keep64 = {"ball_orbit_angle", "ball_center_axial", "ball_center_radial"}
@@ -595,6 +606,7 @@ def to_dataset(model: DynamicModel, t, Y, stats, status="ok", annotate: bool = T
     )
     attrs.update(results.solver_attrs(stats))
     ds = results.make_dataset(data, coords={"time": np.asarray(t), "ball": np.arange(L.Z)}, attrs=attrs)
+    ds.attrs["warnings"] = contact_state.format_warnings(contact_state.warnings_for(ds, case))
     if annotate and n >= 8:
         try:
             from hsbearing.analysis import annotate as _annotate

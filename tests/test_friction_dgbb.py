@@ -375,10 +375,12 @@ def test_angular_contact_case_coulomb_runs_and_skf_is_nan():
     assert np.isnan(float(ds["skf_sliding_torque"][0]))
 
 
-def test_angular_contact_case_stribeck_is_a_case_error(tmp_path):
+def test_angular_contact_case_answers(tmp_path):
+    """Issue 17 item 2: the angular-contact case answers (quasi-static power loss by source and the SKF 2004
+    angular-contact model, hsbearing.rating; tests/test_friction_cli.py) instead of refusing."""
     out = tmp_path / "f.nc"
-    assert cli(["friction", "zhang2016", "-o", str(out)]) == 2
-    assert not out.exists()
+    assert cli(["friction", "zhang2016", "-o", str(out)]) == 0
+    assert out.exists()
 
 
 @pytest.mark.parametrize("Fa,Fr", [(500, 0), (1000, 1000)])

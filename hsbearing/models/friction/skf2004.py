@@ -23,6 +23,19 @@ References
     basic static load ratings C_0 (6206: 11.2 kN, 6207: 15.3 kN, 6208: 19 kN).
 [3] Seed 003 (DGBB sliding friction torque with pure rolling lines), Sec. 3
     and Tables 2-4: the "SKF" column lists the sliding moment M_sl only.
+[4] SKF *General Catalogue* 6000 EN, "Friction", Table 2a, angular contact
+    ball bearings: G_rr = R1 d_m^1.97 (F_r + F_g + R2 F_a)^0.54 with
+    F_g = R3 d_m^4 n^2; G_sl = S1 d_m^0.26 ((F_r + F_g)^(4/3) + S2 F_a^(4/3))
+    with F_g = S3 d_m^4 n^2 (formulas read from the catalogue text, public
+    copy: yumpu "SKF - Rolling Bearings", p. 106).  Table 2b geometry
+    constants of single-row angular contact ball bearings, series 72 B(E):
+    R1 = 5.03e-7, R2 = 1.97, R3 = 1.90e-12, S1 = 1.30e-2, S2 = 0.68,
+    S3 = 1.91e-12; series 73 B(E): R1 = 4.97e-7, R2 = 1.68, R3 = 1.41e-12,
+    S1 = 1.12e-2, S2 = 0.68, S3 = 1.18e-12.  K_Z = 4.4 for single-row
+    angular contact ball bearings.  NB the Table 2b numbers are transcribed
+    from the printed catalogue but could not be re-checked against a copy
+    reachable from this project (docs/life.md); treat the SKF angular-contact
+    column as a cross-check of order of magnitude.
 """
 
 from __future__ import annotations
@@ -50,6 +63,11 @@ __all__ = [
     "sliding_moment",
     "drag_moment",
     "skf_moments",
+    "ACBB_SERIES",
+    "angular_contact_series_of",
+    "rolling_variable_G_rr_angular_contact",
+    "sliding_variable_G_sl_angular_contact",
+    "skf_moments_angular_contact",
 ]
 
 
@@ -76,6 +94,58 @@ DGBB_SERIES: dict[str, SeriesConstants] = {
 K_Z_DGBB = 3.1
 #: [1] K_rs = 3e-8 for low-level oil bath and oil jet, 6e-8 for grease and oil-air.
 K_RS = {"oil_jet": 3e-8, "oil_bath": 3e-8, "oil_air": 6e-8, "grease": 6e-8, "dry": 6e-8}
+
+
+@dataclass(frozen=True)
+class AngularContactConstants:
+    """Geometry constants of [4] Table 2b for one single-row angular contact ball bearing series."""
+
+    R1: float
+    R2: float
+    R3: float
+    S1: float
+    S2: float
+    S3: float
+
+
+#: [4] Table 2b, single-row angular contact ball bearings (see the module note on verification).
+ACBB_SERIES: dict[str, AngularContactConstants] = {
+    "72": AngularContactConstants(R1=5.03e-7, R2=1.97, R3=1.90e-12, S1=1.30e-2, S2=0.68, S3=1.91e-12),
+    "73": AngularContactConstants(R1=4.97e-7, R2=1.68, R3=1.41e-12, S1=1.12e-2, S2=0.68, S3=1.18e-12),
+}
+#: [4] K_Z = 4.4 for single-row angular contact ball bearings.
+K_Z_ACBB = 4.4
+
+
+def angular_contact_series_of(designation: str, source: str = "<case>") -> AngularContactConstants:
+    """Series constants from an angular-contact designation such as ``"7206"`` ([4] Table 2b)."""
+    m = re.match(r"^\s*(7\d)\d{2}", designation or "")
+    if not m or m.group(1) not in ACBB_SERIES:
+        raise CaseError(
+            source, "bearing.designation",
+            f"SKF model needs an angular-contact series designation like 7206 (known series: {', '.join(ACBB_SERIES)}), got {designation!r}",
+        )
+    return ACBB_SERIES[m.group(1)]
+
+
+def rolling_variable_G_rr_angular_contact(Fr, Fa, dm_mm, n_rpm, consts: AngularContactConstants):
+    """Rolling frictional variable G_rr [-] of an angular contact ball bearing ([4] Table 2a).
+
+    G_rr = R1 d_m^1.97 (F_r + F_g + R2 F_a)^0.54,  F_g = R3 d_m^4 n^2  (N, mm, r/min).
+    """
+    n = np.abs(np.asarray(n_rpm, dtype=float))
+    Fg = consts.R3 * dm_mm**4 * n**2  # [4] Table 2a
+    return consts.R1 * dm_mm**1.97 * (abs(Fr) + Fg + consts.R2 * abs(Fa)) ** 0.54  # [4] Table 2a
+
+
+def sliding_variable_G_sl_angular_contact(Fr, Fa, dm_mm, n_rpm, consts: AngularContactConstants):
+    """Sliding frictional variable G_sl [-] of an angular contact ball bearing ([4] Table 2a).
+
+    G_sl = S1 d_m^0.26 ((F_r + F_g)^(4/3) + S2 F_a^(4/3)),  F_g = S3 d_m^4 n^2  (N, mm, r/min).
+    """
+    n = np.abs(np.asarray(n_rpm, dtype=float))
+    Fg = consts.S3 * dm_mm**4 * n**2  # [4] Table 2a
+    return consts.S1 * dm_mm**0.26 * ((abs(Fr) + Fg) ** (4.0 / 3.0) + consts.S2 * abs(Fa) ** (4.0 / 3.0))  # [4] Table 2a
 
 
 def series_of(designation: str, source: str = "<case>") -> SeriesConstants:
@@ -243,6 +313,8 @@ def skf_moments(case, speeds, reading: str | None = None) -> dict[str, np.ndarra
     """
     src = case.source
     b, lub, fr, op = case.bearing, case.lubricant, case.friction, case.operating
+    if case.system == "angular_contact":
+        return skf_moments_angular_contact(case, speeds)
     consts = series_of(b.designation, src)
     for key, val in (("friction.static_load_rating", fr.static_load_rating),
                      ("lubricant.kinematic_viscosity", lub.kinematic_viscosity),
@@ -275,6 +347,53 @@ def skf_moments(case, speeds, reading: str | None = None) -> dict[str, np.ndarra
     return {
         "skf_rolling_torque": M_rr * to_Nm,
         "skf_sliding_torque": np.broadcast_to(M_sl, n.shape) * to_Nm,
+        "skf_drag_torque": M_drag * to_Nm,
+        "skf_total_torque": (M_rr + M_sl + M_drag) * to_Nm,
+        "skf_sliding_coefficient": mu_sl,
+    }
+
+
+def skf_moments_angular_contact(case, speeds) -> dict[str, np.ndarray]:
+    """SKF-model moments of a single-row angular contact ball bearing at inner-ring speeds ([4]).
+
+    M = phi_ish phi_rs G_rr (nu n)^0.6 + G_sl mu_sl (+ drag in an oil bath), with the
+    angular-contact G_rr, G_sl of [4] Table 2a (speed-dependent through F_g) and
+    K_Z = 4.4.  The operating viscosity nu is ``lubricant.kinematic_viscosity`` or
+    eta(T)/density of the oil.  Same return dict as :func:`skf_moments`.
+    """
+    from hsbearing.models import ehl
+
+    src = case.source
+    b, lub, fr, op = case.bearing, case.lubricant, case.friction, case.operating
+    consts = angular_contact_series_of(b.designation, src)
+    for key, val in (("bearing.bore_diameter", b.bore_diameter), ("bearing.outside_diameter", b.outside_diameter)):
+        if val is None:
+            raise CaseError(src, key, "required by the SKF frictional-moment model")
+    dm = b.pitch_diameter * 1e3
+    d, D = b.bore_diameter * 1e3, b.outside_diameter * 1e3
+    nu_si = lub.kinematic_viscosity if lub.kinematic_viscosity is not None else ehl.lubricant_parameters(case)["eta"] / lub.density
+    nu = nu_si * 1e6
+    Fa, Fr = abs(op.axial_load), math.hypot(op.radial_load, op.radial_load_z)
+    w = np.asarray(speeds, dtype=float)
+    n = np.abs(w) * 60.0 / (2.0 * math.pi)
+    G_rr = rolling_variable_G_rr_angular_contact(Fr, Fa, dm, n, consts)
+    G_sl = sliding_variable_G_sl_angular_contact(Fr, Fa, dm, n, consts)
+    mu_sl = sliding_coefficient_mu_sl(n, nu, dm, fr.boundary_coefficient, fr.ehl_coefficient)
+    phi_ish = inlet_shear_factor_phi_ish(n, nu, dm)
+    phi_rs = replenishment_factor_phi_rs(n, nu, d, D, K_rs=K_RS[lub.lubrication], K_Z=K_Z_ACBB)
+    M_rr = rolling_moment(n, nu, G_rr, phi_ish, phi_rs)
+    M_sl = sliding_moment(G_sl, mu_sl)
+    if lub.lubrication == "oil_bath":
+        if fr.skf_drag_variable is None:
+            raise CaseError(src, "friction.skf_drag_variable",
+                            "oil-bath drag needs V_M from the SKF catalogue diagram (function of oil level H/d_m)")
+        M_drag = drag_moment(n, dm, d, D, fr.skf_drag_variable, K_Z=K_Z_ACBB)
+    else:
+        M_drag = np.zeros_like(n)
+    to_Nm = 1e-3
+    return {
+        "skf_rolling_torque": M_rr * to_Nm,
+        "skf_sliding_torque": M_sl * to_Nm,
         "skf_drag_torque": M_drag * to_Nm,
         "skf_total_torque": (M_rr + M_sl + M_drag) * to_Nm,
         "skf_sliding_coefficient": mu_sl,
