@@ -399,7 +399,7 @@ def test_cli_wrong_system_exit_2(tmp_path):
 
 # ----------------------------------------------------------------------------- property tests
 
-hypothesis = pytest.importorskip("hypothesis")
+# hypothesis is a test dependency (pyproject [test], requirements.lock): missing is an ImportError, not a skip
 from hypothesis import given, settings, strategies as st  # noqa: E402
 
 
