@@ -347,7 +347,9 @@ def test_reversal_decay_2s_windows_ensemble():
     """Seed 000 Figs. 8-9 / Sec. 4: after a reversal M_C "rapidly reduces after about 1 s" (2 s windows).  Ensemble of
     3 starts (cage turned over its play) x 2 reversal windows of T = 2 s: the median time t90 by which 90 % of the
     window's driving M_C has accumulated is below 0.7 T for the default (impacts that die out), while the weighted
-    cage, carried by friction, gives a steady M_C (t90 -> 0.9 T).  Measured values: docs/testing.md."""
+    cage, carried by friction, gives a steady M_C (t90 -> 0.9 T).  Measured on both dependency sets of
+    docs/testing.md (identical): default t90 1.16, 1.22, 1.46, 1.15, 1.23, 0.78 s (median 1.19 s = 0.59 T), share
+    0.67-0.86; weighted cage t90 1.64, 1.82 s (>= 0.82 T), share 0.06, 0.11."""
     T = 2.0
     c = _case(**{"operating.mode": "oscillation"})
     assert c.operating.oscillation_period == T
@@ -357,7 +359,7 @@ def test_reversal_decay_2s_windows_ensemble():
     assert t90.size == 6
     assert np.median(t90) < 0.7 * T, t90
     share, t90g = gyro.cage_moment_windows(gyro.simulate(c, duration=6.1, gravity=gyro.GRAVITY))
-    assert share[1:].max() < 0.15 and t90g[1:].min() > 0.8 * T, (share, t90g)
+    assert share[1:].max() < 0.2 and t90g[1:].min() > 0.75 * T, (share, t90g)
 
 
 def test_turned_cage_start_touches_with_zero_approach():
