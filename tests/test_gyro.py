@@ -98,10 +98,11 @@ def test_hysteresis_and_viscous_formulas():
 
 @pytest.mark.parametrize("load", [1.0, 2.0, 3.0])
 def test_rfmc_table2(load):
-    """RFMC = M_E + M_D + M_S + M_L vs seed 000 Table 2 / Table 3 (calculated): 2.81 / 6.21 / 10.11 uN m, within 10 %."""
+    """RFMC = M_E + M_D + M_S + M_L vs seed 000 Table 2 / Table 3 (calculated): 2.81 / 6.21 / 10.11 uN m, within 4 %
+    (measured -3.15 %, -0.86 %, -1.53 %; the README row states this tolerance)."""
     ref = {r["load_N"]: r["RFMC_uNm"] for r in _table2()}[load]
     st = gyro.static_friction(_case(**{"operating.axial_load": f"{load} N"}))
-    assert st.rfmc * 1e6 == pytest.approx(ref, rel=0.10)
+    assert st.rfmc * 1e6 == pytest.approx(ref, rel=0.04)
     # every source present and positive; M_E, M_D, M_S grow with the load
     assert st.M_E > 0 and st.M_D > 0 and st.M_S > 0
 
