@@ -603,7 +603,14 @@ def test_real_dynamic_run_is_annotated(case, tmp_path):
     ds = hsbearing.simulate(case, duration=0.15)
     for name in ("cage_slip_ratio", "mean_cage_slip_ratio", "whirl_amplitude", "whirl_frequency", "poincare_y"):
         assert name in ds
-    assert ds.attrs["classification"] in ("undetermined", "quasi-periodic", "chaos") or "period" in ds.attrs["classification"]
+    # a label of the closed vocabulary (classify.LABELS, "k periods" with an integer k >= 2), a confidence in
+    # [0, 1], and a stated reason whenever the classifier declines
+    import re
+
+    label = ds.attrs["classification"]
+    assert re.fullmatch(r"1 period|([2-9]|[1-9][0-9]+) periods|quasi-periodic|chaos|undetermined", label), label
+    assert 0.0 <= float(ds.attrs["classification_confidence"]) <= 1.0
+    assert label != "undetermined" or ds.attrs["classification_reason"]
     assert np.isfinite(float(ds["mean_cage_slip_ratio"])) and abs(float(ds["mean_cage_slip_ratio"])) < 0.5
     assert ds["poincare_y"].size >= 5  # ~14 cage revolutions, at most 60 % discarded
     assert np.all(np.hypot(ds.cage_center_y, ds.cage_center_z) <= 1.05 * ds.attrs["guide_clearance"])

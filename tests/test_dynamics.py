@@ -400,7 +400,11 @@ def test_default_case_cage_motion_matches_seed_table_3(case):
     """Seed 004, Tables 3 and 4 (tests/data/seed004_periods.csv): oil 4109, 130 degC, 14000 r/min,
     F_x = 1000 N -> "Quasi-periodicity".  One table entry; the mechanism in this model is a
     half-frequency whirl of the cage on its guide-land film, incommensurate with the cage rotation
-    (docs/dynamics.md)."""
+    (docs/dynamics.md).
+
+    Bound to ONE trajectory of a chaotic cage (the label of a single 0.7 s run), hence slow tier only and
+    documented in docs/testing.md: it pins the one Table 3 cell the README quotes, and must be re-measured
+    (not re-tuned) when the cage physics changes."""
     import csv
     from pathlib import Path
 

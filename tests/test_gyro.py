@@ -98,10 +98,11 @@ def test_hysteresis_and_viscous_formulas():
 
 @pytest.mark.parametrize("load", [1.0, 2.0, 3.0])
 def test_rfmc_table2(load):
-    """RFMC = M_E + M_D + M_S + M_L vs seed 000 Table 2 / Table 3 (calculated): 2.81 / 6.21 / 10.11 uN m, within 10 %."""
+    """RFMC = M_E + M_D + M_S + M_L vs seed 000 Table 2 / Table 3 (calculated): 2.81 / 6.21 / 10.11 uN m, within 4 %
+    (measured -3.15 %, -0.86 %, -1.53 %; the README row states this tolerance)."""
     ref = {r["load_N"]: r["RFMC_uNm"] for r in _table2()}[load]
     st = gyro.static_friction(_case(**{"operating.axial_load": f"{load} N"}))
-    assert st.rfmc * 1e6 == pytest.approx(ref, rel=0.10)
+    assert st.rfmc * 1e6 == pytest.approx(ref, rel=0.04)
     # every source present and positive; M_E, M_D, M_S grow with the load
     assert st.M_E > 0 and st.M_D > 0 and st.M_S > 0
 
@@ -191,15 +192,19 @@ def test_starting_moments_windows():
 
 
 @pytest.fixture(scope="module")
-def start_runs():
-    out = {}
-    for n in ("2 rpm", "5 rpm"):
-        out[n] = gyro.simulate(_case(**{"operating.outer_speed": n}), duration=0.12)
-    return out
+def start_run():
+    return gyro.simulate(_case(**{"operating.outer_speed": "5 rpm"}), duration=0.12)
 
 
-def test_start_run_integrates_and_archives(start_runs, tmp_path):
-    ds = start_runs["5 rpm"]
+def _mc_ensemble(case, duration):
+    """M_C = SFMC - RFMC [uN m] of the 5 starts of gyro.start_ensemble (cage turned over its circumferential play:
+    -1/2, -1/4, 0, 1/4, 1/2).  One start from rest is chaotic (gyro.md: 30-140 % between offsets), so the trend
+    tests below compare ENSEMBLES, paired by offset (the same start position in both members of a pair)."""
+    return (gyro.start_ensemble(case, 5, duration=duration) - gyro.static_friction(case).rfmc) * 1e6
+
+
+def test_start_run_integrates_and_archives(start_run, tmp_path):
+    ds = start_run
     assert ds.attrs["status"] == "ok" and ds.attrs["model"] == "gyro_ribbon_cage"
     assert ds.attrs["solver_steps"] > 0 and ds.attrs["solver_rhs_evals"] > 0
     for v in ("friction_moment_total", "friction_moment_cage", "friction_moment_hysteresis", "cage_speed",
@@ -219,11 +224,18 @@ def test_start_run_integrates_and_archives(start_runs, tmp_path):
     assert png.exists() and png.stat().st_size > 10000
 
 
-def test_cage_is_struck_and_mc_grows_with_speed(start_runs):
-    """Seed Sec. 4 / Table 2: M_C (SFMC - RFMC) grows with the input speed and SFMC > RFMC."""
-    mc = {n: float(ds["sfmc"] - ds["rfmc"]) for n, ds in start_runs.items()}
-    assert mc["2 rpm"] > 0
-    assert mc["5 rpm"] > 2.0 * mc["2 rpm"]  # Table 2: 7.5 vs 2.4 uN m (ratio 3.1); Hertz impact ~ v^1.2
+def test_cage_is_struck_and_mc_grows_with_speed():
+    """Seed 000 Sec. 4 / Table 2: the cage is struck at the start (SFMC > RFMC) and M_C = SFMC - RFMC grows with the
+    input speed (Table 2, 1 N: 7.5 vs 2.4 uN m at 5 vs 2 r/min, ratio 3.1).  At 2 r/min the first impact comes at
+    ~0.2 s, so the starts run 0.3 s (a 0.6 s run gives the same ensemble within 5 %: 2.92 vs 2.79 mean).
+    Measured (5 starts; numpy 2.4.6 / scipy 1.17.1 / numba 0.68.1 and the older set of docs/testing.md):
+    2 r/min 1.26, 1.49, 1.55, 4.73, 4.93 (mean 2.79); 5 r/min 5.20, 4.61, 4.24, 14.90, 13.99 (mean 8.59):
+    ratio of means 3.08, every pair increases."""
+    mc2 = _mc_ensemble(_case(**{"operating.outer_speed": "2 rpm"}), 0.3)
+    mc5 = _mc_ensemble(_case(**{"operating.outer_speed": "5 rpm"}), 0.3)
+    assert mc2.min() > 0.7 and mc5.min() > 0.7, (mc2, mc5)  # every start is struck (0.3 x Table 2's 2.4)
+    assert mc5.mean() > 2.0 * mc2.mean(), (mc2, mc5)  # measured 3.08; Hertz impact ~ v^1.2 alone gives 3.0
+    assert (mc5 > mc2).sum() >= 4, (mc2, mc5)  # measured 5 of 5
 
 
 def test_momentum_exchange_conserves_axial_momentum():
@@ -259,16 +271,26 @@ def test_momentum_exchange_conserves_axial_momentum():
 
 
 def test_thickness_raises_starting_moment():
-    """Seed Sec. 4, Fig. 10: M increases with the cage thickness s (heavier cage)."""
-    vals = [float(gyro.simulate(_case(**{"cage.thickness": s}), duration=0.1)["sfmc"]) for s in ("0.15 mm", "0.30 mm")]
-    assert vals[1] > vals[0]
+    """Seed 000 Sec. 4, Fig. 10: M increases with the cage thickness s (heavier cage).  Ensembles of 5 starts
+    (0.12 s at 5 r/min: the start impacts are over by then), paired by start offset.  Measured M_C: s = 0.15 mm
+    5.20, 4.61, 4.24, 14.90, 13.99 (mean 8.59); s = 0.30 mm 8.17, 7.14, 7.13, 20.68, 22.39 (mean 13.10): ratio
+    of means 1.53, every pair increases."""
+    base = _case()
+    thin, thick = (_mc_ensemble(gyro.override(base, **{"cage.thickness": v}), 0.12) for v in ("0.15 mm", "0.30 mm"))
+    assert thick.mean() > 1.2 * thin.mean(), (thin, thick)
+    assert (thick > thin).sum() >= 4, (thin, thick)
 
 
 def test_clearance_raises_starting_moment_small_A():
-    """Seed Sec. 4, Fig. 11: M increases with the pocket clearance A (checked for A = 0.01 -> 0.03 mm;
-    above 0.03 mm our model does not follow the paper, see docs/validation/gyro.md)."""
-    r = gyro.study(_case(), "pocket_clearance", [0.01e-3, 0.03e-3], duration=0.12)
-    assert float(r[0.03e-3]["sfmc"]) > float(r[0.01e-3]["sfmc"])
+    """Seed 000 Sec. 4, Fig. 11: M increases with the pocket clearance A (checked for A = 0.01 -> 0.03 mm, k =
+    D_w/2 + A; above 0.03 mm our model does not follow the paper, see docs/validation/gyro.md).  Ensembles of 5
+    starts paired by offset (each start turned by the same fraction of its own play).  Measured M_C: A = 0.01 mm
+    2.33, 2.25, 2.27, 10.69, 11.16 (mean 5.74); A = 0.03 mm 7.60, 3.74, 4.04, 16.50, 14.60 (mean 9.30): ratio of
+    means 1.62, every pair increases."""
+    base = _case()
+    small, large = (_mc_ensemble(gyro.override(base, **{"cage.pocket_depth": k}), 0.12) for k in ("0.66 mm", "0.68 mm"))
+    assert large.mean() > 1.2 * small.mean(), (small, large)
+    assert (large > small).sum() >= 4, (small, large)
 
 
 def test_cage_moment_windows_mechanism_metrics():
@@ -326,7 +348,9 @@ def test_reversal_decay_2s_windows_ensemble():
     """Seed 000 Figs. 8-9 / Sec. 4: after a reversal M_C "rapidly reduces after about 1 s" (2 s windows).  Ensemble of
     3 starts (cage turned over its play) x 2 reversal windows of T = 2 s: the median time t90 by which 90 % of the
     window's driving M_C has accumulated is below 0.7 T for the default (impacts that die out), while the weighted
-    cage, carried by friction, gives a steady M_C (t90 -> 0.9 T).  Measured values: docs/testing.md."""
+    cage, carried by friction, gives a steady M_C (t90 -> 0.9 T).  Measured on both dependency sets of
+    docs/testing.md (identical): default t90 1.16, 1.22, 1.46, 1.15, 1.23, 0.78 s (median 1.19 s = 0.59 T), share
+    0.67-0.86; weighted cage t90 1.64, 1.82 s (>= 0.82 T), share 0.06, 0.11."""
     T = 2.0
     c = _case(**{"operating.mode": "oscillation"})
     assert c.operating.oscillation_period == T
@@ -336,7 +360,7 @@ def test_reversal_decay_2s_windows_ensemble():
     assert t90.size == 6
     assert np.median(t90) < 0.7 * T, t90
     share, t90g = gyro.cage_moment_windows(gyro.simulate(c, duration=6.1, gravity=gyro.GRAVITY))
-    assert share[1:].max() < 0.15 and t90g[1:].min() > 0.8 * T, (share, t90g)
+    assert share[1:].max() < 0.2 and t90g[1:].min() > 0.75 * T, (share, t90g)
 
 
 def test_turned_cage_start_touches_with_zero_approach():

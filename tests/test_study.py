@@ -158,7 +158,7 @@ def test_study_bad_input(tmp_path):
 
 @pytest.mark.slow
 def test_study_on_dask_equals_local(tmp_path):
-    distributed = pytest.importorskip("distributed")
+    import distributed  # a hard dependency (dask[distributed]): missing is an error, not a skip
     local = study.run_study("zhang2016", tmp_path / "local", jobs=1, duration="10 ms", point_fn=fake_dynamics,
                             progress=False, tables=["table5"])
     with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=True, host="127.0.0.1",
