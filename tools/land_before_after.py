@@ -51,6 +51,10 @@ def main(argv=None):
     ap.add_argument("--before", nargs="+", required=True)
     ap.add_argument("--after", nargs="+", required=True)
     ap.add_argument("--figure")
+    ap.add_argument("--after-label", default="after (2 x 1.83 mm Reynolds/Guembel lands)",
+                    help="title of the 'after' panels (e.g. the combined issue-14 model: lands + pocket film)")
+    ap.add_argument("--title", default="zhang2016, 14000 r/min, 1 kN, 130 degC: cage whirl orbit before/after the "
+                    "guide-land correction")
     a = ap.parse_args(argv)
     rows = []
     for tag, files in (("before", a.before), ("after", a.after)):
@@ -85,12 +89,12 @@ def main(argv=None):
             ax.set_ylim(-1.15 * cg, 1.15 * cg)
             ax.set_xlabel("cage centre D_Y [um]")
             ax.set_ylabel("cage centre D_Z [um]")
-            label = "before (one 11 mm pi-film)" if tag == "before" else "after (2 x 1.83 mm Reynolds/Guembel lands)"
+            label = "before (one 11 mm pi-film)" if tag == "before" else a.after_label
             ax.set_title(f"oil {s['oil']}, {label}\nr/c_g {s['r_mean/c_g']:.2f}, whirl/cage {s['whirl/cage']:.2f}, "
                          f"{s['classification']}", fontsize=9)
             if i % n == 0:
                 ax.legend(fontsize=7, loc="lower left")
-        fig.suptitle("zhang2016, 14000 r/min, 1 kN, 130 degC: cage whirl orbit before/after the guide-land correction")
+        fig.suptitle(a.title)
         fig.tight_layout()
         fig.savefig(a.figure, dpi=110)
         print(f"figure: {a.figure}")
