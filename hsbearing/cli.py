@@ -88,7 +88,8 @@ def _print_summary(ds, out: Path | None = None) -> None:
         else:
             conf = ds.attrs.get("classification_confidence")
             print(f"classification: {cls}" + (f" (confidence {float(conf):.2f})" if conf is not None else ""))
-    stats = {k[len("solver_"):]: v for k, v in ds.attrs.items() if k.startswith("solver_")}
+    stats = {k[len("solver_"):]: v for k, v in ds.attrs.items()
+             if k.startswith("solver_") and not k.endswith("_units")}  # the NAME_units companions are not stats
     if stats:
         print("solver: " + format_solver_stats(stats))
     if out is not None:
