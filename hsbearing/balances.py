@@ -58,7 +58,7 @@ for _n, _d, _u, _l in [
     results.register(_n, _d, _u, _l)
 
 
-def power_variables(aux: np.ndarray, gaux: np.ndarray) -> dict:
+def power_variables(aux: np.ndarray, gaux: np.ndarray, outer_guided: bool = True) -> dict:
     """Dataset variables of the power accounting from the kernel outputs aux (time, ball, N_AUX), gaux (time, N_GAUX)."""
     A, G = K.AUX_INDEX, K.GAUX_INDEX
     out = {}
@@ -75,7 +75,9 @@ def power_variables(aux: np.ndarray, gaux: np.ndarray) -> dict:
     out["power_loss"] = total
     out["drive_torque"] = gaux[:, G["drive_torque"]]
     out["drive_power"] = gaux[:, G["P_drive"]]
-    out["outer_ring_torque"] = -(aux[..., A["tau_o"]].sum(-1) + gaux[:, G["land_torque_x"]])
+    # the land reacts on the outer ring only for outer-ring guidance (inner-ring guidance: on the inner ring)
+    outer_land = gaux[:, G["land_torque_x"]] if outer_guided else 0.0
+    out["outer_ring_torque"] = -(aux[..., A["tau_o"]].sum(-1) + outer_land)
     return out
 
 
@@ -154,7 +156,8 @@ def external_torque_x(model, y) -> dict:
     return {
         "drive": float(gaux[G["drive_torque"]] * R[0]),
         "outer_ring": float(aux[:, A["tau_o"]].sum()),
-        "guide_land": float(gaux[G["land_torque_x"]]),
+        # external only when the land is on the (ground) outer ring; inner-ring guidance: internal cage <-> ring
+        "guide_land": float(gaux[G["land_torque_x"]]) if P[K.P_GUIDE] == 1.0 else 0.0,
         "drag": float((rb * aux[:, A["F_D"]]).sum()),
         "gravity": float(g * (P[K.P_MB] * (rb * np.sin(th)).sum() + P[K.P_MC] * u["z_c"] + P[K.P_MI] * u["z_i"])),
         "loads": float(u["y_i"] * P[K.P_FZ] - u["z_i"] * P[K.P_FY]),
@@ -184,7 +187,7 @@ def balance_terms(model, y) -> dict:
     residual P_drive - sum D - dE/dt; dL/dt, the external torques and the torque residual.
     """
     aux, gaux = model.outputs(np.ascontiguousarray(y, dtype=float))
-    pv = power_variables(aux[None], gaux[None])
+    pv = power_variables(aux[None], gaux[None], model.P[K.P_GUIDE] == 1.0)
     out = {k: float(v[0]) if np.ndim(v) == 1 else v[0] for k, v in pv.items()}
     out["dE_dt"] = energy_rate(model, y)
     # a turning outer ring is held at its speed by a drive too: it supplies -(torque on the outer ring) omega_o

@@ -577,7 +577,7 @@ def to_dataset(model: DynamicModel, t, Y, stats, status="ok", annotate: bool = T
     }
     from hsbearing import balances  # power loss by source, drive torque (registered there)
 
-    data.update(balances.power_variables(aux, gaux))
+    data.update(balances.power_variables(aux, gaux, model.P[K.P_GUIDE] == 1.0))
     # contact state per contact over time (issue 17 item 3): spin-to-roll from the kernel, Hertz/EHL/lambda derived
     from hsbearing import contact_state
 

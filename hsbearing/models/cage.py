@@ -188,7 +188,9 @@ def guide_land_forces(eps, eps_dot, omega_sum, whirl, eta, R, L, c):
     -------
     F_r : film force on the cage along the line of centres, positive away from the land
         centre (toward the land) [N];
-    F_t : perpendicular to it, positive in the direction of rotation [N].
+    F_t : perpendicular to it, positive in the direction of rotation [N] -- the positive sense of the
+        angle theta, i.e. +X (counter-clockwise seen from +X): for a cage turning the other way
+        (omega_sum < 0) a forward whirl gives F_t < 0 (independent review, session 3).
 
     Notes
     -----
@@ -250,7 +252,10 @@ def guide_land_power(F_r, F_t, e, e_dot, whirl, M_cx, omega_cage, omega_land):
     The film is massless: it puts -F (through the cage centre) and M_land = -M_cx - e F_t
     on the land, so D = -(F . v_cage + M_cx omega_cage + M_land omega_land), which is the
     expression above (independent of the frame's rotation).  Source name ``guide_land``
-    of the power balance.
+    of the power balance.  D >= 0 is guaranteed for short lands only: the pressure part is
+    c K int G^2/h^3 >= 0, but the Petroff split (cage M, land -M - e F_t) adds a cross term
+    -e F_t (omega_c - omega_l)/2 bounded by the Couette shear when (L/R)^2 / (32 pi (1 - eps^2)) < 1
+    (independent review: <= 1e-3 for the 1.8 mm lands of zhang2016 at eps 0.97).
     """
     return -(F_r * e_dot + F_t * e * (whirl - omega_land)) - M_cx * (omega_cage - omega_land)
 

@@ -513,13 +513,16 @@ def guide_land_loads(y, P, Rc, wcx, wcy, wcz):
             if P[P_FRIC] > 0.0:
                 # sliding speed of the cage surface on the land: tangential speed of the axis point relative to
                 # the land material there (omega_land e), plus the cage's spin relative to the land times R
-                vt = -vy * uz + vz * uy - wl * e + (ew - wl * ex) * R
+                # The contact is on the +u side of the cage (outer-ring guidance: its outside diameter on the ring
+                # land) or on its -u side (inner-ring guidance: the cage bore on the ring land), sgn = +1 / -1
+                sgn = -1.0 if P[P_GUIDE] == 2.0 else 1.0
+                vt = -vy * uz + vz * uy - wl * e + sgn * (ew - wl * ex) * R
                 ff = -Fe * pocket_friction_factor(vt, P[P_MUC], P[P_V0C]) * vt
                 fy += -ff * uz
                 fz += ff * uy
-                mx += ff * R
+                mx += sgn * ff * R
                 Pland -= ff * vt
-                Mring -= ff * R
+                Mring -= sgn * ff * R + e * ff  # reaction -ff t at the contact, (e - sgn R) u from the land centre
         Fly += fy
         Flz += fz
         Mlx += mx
