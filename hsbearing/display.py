@@ -110,11 +110,9 @@ def format_solver_stats(stats: dict) -> str:
     return ", ".join(parts)
 
 
-#: Contact pressure [Pa] bearing steel carries at rest in a ball bearing: ISO 76:2006 (Rolling bearings --
-#: Static load ratings), the basic static load rating C_0 of radial and thrust ball bearings corresponds to
-#: 4200 MPa at the centre of the most heavily loaded ball/raceway contact (4600 MPa for self-aligning ball
-#: bearings), where the permanent deformation of ball + raceway reaches about 1e-4 of the ball diameter.
-ISO76_BALL_PRESSURE = 4.2e9
+# Contact pressure [Pa] bearing steel carries at rest in a ball bearing (ISO 76:2006, 6.2): one constant,
+# defined with the other limits in hsbearing.models.limits
+from hsbearing.models.limits import ISO76_BALL_PRESSURE  # noqa: E402
 
 
 def contact_pressure_warning(p_max, where: str = "") -> str | None:

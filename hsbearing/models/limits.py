@@ -28,7 +28,8 @@ import numpy as np
 __all__ = ["ISO76_BALL_PRESSURE", "composite_roughness", "film_parameter", "shoulder_angle_inner",
            "shoulder_angle_outer", "ellipse_edge_angle"]
 
-#: [1] 6.2: contact pressure [Pa] at C_0 of ball bearings (same value as hsbearing.display on branch cli-output).
+#: [1] 6.2: contact pressure [Pa] at the centre of the most heavily loaded contact at C_0 of radial and thrust
+#: ball bearings (4600 MPa for self-aligning ball bearings); the one constant hsbearing.display also uses.
 ISO76_BALL_PRESSURE = 4.2e9
 
 
