@@ -283,7 +283,13 @@ def test_summary_failure_is_reported_and_recomputed_on_resume(tmp_path, monkeypa
 
 @pytest.mark.slow
 def test_unpicklable_point_function_is_an_error_not_a_crash(tmp_path):
-    ds = _qs_sweep(tmp_path, {"axial_load": "100,500N"}, fn=lambda case, duration: fake_qs(case, duration), jobs=2)
+    """Every point errors (the function cannot be sent to a worker): the sweep raises SolverError (issue 13:
+    a sweep whose every point failed never returns quietly) and sweep.nc records why, point by point."""
+    from hsbearing.errors import SolverError
+
+    with pytest.raises(SolverError, match="pickle"):
+        _qs_sweep(tmp_path, {"axial_load": "100,500N"}, fn=lambda case, duration: fake_qs(case, duration), jobs=2)
+    ds = hsbearing.open_run(tmp_path / "sweep.nc")
     assert list(ds["status"].values) == ["error", "error"]
     assert all("pickle" in e.lower() for e in ds["error"].values)
 
