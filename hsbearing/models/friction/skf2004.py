@@ -26,16 +26,30 @@ References
 [4] SKF *General Catalogue* 6000 EN, "Friction", Table 2a, angular contact
     ball bearings: G_rr = R1 d_m^1.97 (F_r + F_g + R2 F_a)^0.54 with
     F_g = R3 d_m^4 n^2; G_sl = S1 d_m^0.26 ((F_r + F_g)^(4/3) + S2 F_a^(4/3))
-    with F_g = S3 d_m^4 n^2 (formulas read from the catalogue text, public
-    copy: yumpu "SKF - Rolling Bearings", p. 106).  Table 2b geometry
-    constants of single-row angular contact ball bearings, series 72 B(E):
-    R1 = 5.03e-7, R2 = 1.97, R3 = 1.90e-12, S1 = 1.30e-2, S2 = 0.68,
-    S3 = 1.91e-12; series 73 B(E): R1 = 4.97e-7, R2 = 1.68, R3 = 1.41e-12,
-    S1 = 1.12e-2, S2 = 0.68, S3 = 1.18e-12.  K_Z = 4.4 for single-row
-    angular contact ball bearings.  NB the Table 2b numbers are transcribed
-    from the printed catalogue but could not be re-checked against a copy
-    reachable from this project (docs/life.md); treat the SKF angular-contact
-    column as a cross-check of order of magnitude.
+    with F_g = S3 d_m^4 n^2 (formulas checked against a public copy of the
+    catalogue text: yumpu "SKF - Rolling Bearings", p. 106, Table 2a
+    "Geometric and load dependent variables for rolling and sliding frictional
+    moments - radial bearings"; p. 105 gives mu_bl ~ 0.15, mu_EHL = 0.05 /
+    0.04 / 0.1 and phi_bl = 1/e^(2.6e-8 (n nu)^1.4 d_m)).
+
+    The series geometry constants R1, R2, R3, S1, S2, S3 of single-row
+    angular contact ball bearings come from the catalogue's geometry-constants
+    table (the table number is NOT confirmed: the earlier "Table 2b" label was
+    never checked; p. 106 is Table 2a).  Their status (skf-check, docs/life.md):
+
+    * series 72 B(E): R1 = 5.03e-7, R2 = 1.97, R3 = 1.90e-12, S1 = 1.30e-2,
+      S2 = 0.68, S3 = 1.91e-12, K_Z = 4.4 -- NOT checked against a catalogue
+      copy; the six numbers and K_Z agree digit for digit with one independent
+      public transcription (an open-source Python bearing-friction model,
+      class ``AngularContactCalculation``, series not named there), which is a
+      secondary source only (that same code has two exponent typos elsewhere:
+      2.6*10e-8 and 6*10e-8).
+    * series 73 B(E): R1 = 4.97e-7, R2 = 1.68, R3 = 1.41e-12, S1 = 1.12e-2,
+      S2 = 0.68, S3 = 1.18e-12 -- UNVERIFIED: typed from memory by the
+      ``life`` helper, no copy and no independent transcription found.
+
+    Treat the SKF angular-contact column as a cross-check of order of
+    magnitude, not as validation data (:data:`ACBB_CONSTANTS_STATUS`).
 """
 
 from __future__ import annotations
@@ -64,6 +78,7 @@ __all__ = [
     "drag_moment",
     "skf_moments",
     "ACBB_SERIES",
+    "ACBB_CONSTANTS_STATUS",
     "angular_contact_series_of",
     "rolling_variable_G_rr_angular_contact",
     "sliding_variable_G_sl_angular_contact",
@@ -98,7 +113,7 @@ K_RS = {"oil_jet": 3e-8, "oil_bath": 3e-8, "oil_air": 6e-8, "grease": 6e-8, "dry
 
 @dataclass(frozen=True)
 class AngularContactConstants:
-    """Geometry constants of [4] Table 2b for one single-row angular contact ball bearing series."""
+    """Geometry constants of [4] (geometry-constants table) for one single-row angular contact ball bearing series."""
 
     R1: float
     R2: float
@@ -108,17 +123,23 @@ class AngularContactConstants:
     S3: float
 
 
-#: [4] Table 2b, single-row angular contact ball bearings (see the module note on verification).
+#: [4] geometry-constants table, single-row angular contact ball bearings (table number unconfirmed;
+#: see the module note and :data:`ACBB_CONSTANTS_STATUS` for what is and is not verified).
 ACBB_SERIES: dict[str, AngularContactConstants] = {
     "72": AngularContactConstants(R1=5.03e-7, R2=1.97, R3=1.90e-12, S1=1.30e-2, S2=0.68, S3=1.91e-12),
     "73": AngularContactConstants(R1=4.97e-7, R2=1.68, R3=1.41e-12, S1=1.12e-2, S2=0.68, S3=1.18e-12),
 }
-#: [4] K_Z = 4.4 for single-row angular contact ball bearings.
+#: Verification status of each :data:`ACBB_SERIES` row (module note [4], docs/life.md "SKF constants").
+ACBB_CONSTANTS_STATUS: dict[str, str] = {
+    "72": "not checked against the SKF catalogue; agrees with one independent public transcription (secondary)",
+    "73": "unverified: typed from memory, no catalogue copy or independent transcription found",
+}
+#: [4] K_Z = 4.4 for single-row angular contact ball bearings (secondary transcription only, see module note).
 K_Z_ACBB = 4.4
 
 
 def angular_contact_series_of(designation: str, source: str = "<case>") -> AngularContactConstants:
-    """Series constants from an angular-contact designation such as ``"7206"`` ([4] Table 2b)."""
+    """Series constants from an angular-contact designation such as ``"7206"`` ([4]; see ``ACBB_CONSTANTS_STATUS``)."""
     m = re.match(r"^\s*(7\d)\d{2}", designation or "")
     if not m or m.group(1) not in ACBB_SERIES:
         raise CaseError(
