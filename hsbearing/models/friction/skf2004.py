@@ -57,9 +57,10 @@ References
     remain secondary (not read from an SKF copy): :data:`ACBB_CONSTANTS_STATUS`.
 [5] Public transcription of the SKF friction-model constants tables (an
     open-source Python bearing tool, module of "SKF friction-model constants
-    transcribed from the published SKF tables"; its deep-groove rows 2..64,
-    160/161, 617.., 619/639 agree with [1] as used here and with two other
-    public transcriptions, and its K_rs and mu_EHL values with [1]).
+    transcribed from the published SKF tables"; its deep-groove 62 row equals
+    DGBB_SERIES (S1, S2 also reproduce seed 003), its other deep-groove rows
+    agree with two other public transcriptions, and its K_rs and mu_EHL
+    values with [1]).  Not an SKF document: secondary.
 """
 
 from __future__ import annotations
