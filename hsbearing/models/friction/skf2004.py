@@ -26,16 +26,41 @@ References
 [4] SKF *General Catalogue* 6000 EN, "Friction", Table 2a, angular contact
     ball bearings: G_rr = R1 d_m^1.97 (F_r + F_g + R2 F_a)^0.54 with
     F_g = R3 d_m^4 n^2; G_sl = S1 d_m^0.26 ((F_r + F_g)^(4/3) + S2 F_a^(4/3))
-    with F_g = S3 d_m^4 n^2 (formulas read from the catalogue text, public
-    copy: yumpu "SKF - Rolling Bearings", p. 106).  Table 2b geometry
-    constants of single-row angular contact ball bearings, series 72 B(E):
-    R1 = 5.03e-7, R2 = 1.97, R3 = 1.90e-12, S1 = 1.30e-2, S2 = 0.68,
-    S3 = 1.91e-12; series 73 B(E): R1 = 4.97e-7, R2 = 1.68, R3 = 1.41e-12,
-    S1 = 1.12e-2, S2 = 0.68, S3 = 1.18e-12.  K_Z = 4.4 for single-row
-    angular contact ball bearings.  NB the Table 2b numbers are transcribed
-    from the printed catalogue but could not be re-checked against a copy
-    reachable from this project (docs/life.md); treat the SKF angular-contact
-    column as a cross-check of order of magnitude.
+    with F_g = S3 d_m^4 n^2 (formulas checked against a public copy of the
+    catalogue text: yumpu "SKF - Rolling Bearings", p. 106, Table 2a
+    "Geometric and load dependent variables for rolling and sliding frictional
+    moments - radial bearings"; p. 105 gives mu_bl ~ 0.15, mu_EHL = 0.05 /
+    0.04 / 0.1 and phi_bl = 1/e^(2.6e-8 (n nu)^1.4 d_m)).
+
+    The series geometry constants R1, R2, R3, S1, S2, S3 of single-row
+    angular contact ball bearings come from SKF's geometry-constants table
+    for rolling and sliding frictional moments (table number not confirmed
+    from a copy; p. 106 is Table 2a).  No copy of that table was reachable
+    (skf-check, docs/life.md).  The rows used here are those of a public
+    per-series transcription of the published SKF tables [5]:
+
+    ==============  ========  ====  ========  ========  ====  ========
+    row             R1        R2    R3        S1        S2    S3
+    ==============  ========  ====  ========  ========  ====  ========
+    72 B(E) 40 deg  4.33e-7   2.02  2.44e-12  1.82e-2   0.71  2.44e-12
+    73 B(E) 40 deg  4.54e-7   2.02  1.84e-12  1.64e-2   0.71  1.84e-12
+    72 AC 25 deg    3.58e-7   3.64  3.55e-12  1.14e-2   1.55  3.55e-12
+    73 AC 25 deg    3.48e-7   3.64  1.66e-12  9.85e-3   1.55  1.66e-12
+    other           5.03e-7   1.97  1.90e-12  1.30e-2   0.68  1.91e-12
+    ==============  ========  ====  ========  ========  ====  ========
+
+    K_Z = 4.4.  The "other single-row" row is also used, with K_Z = 4.4, by a
+    second independent open-source implementation.  Before skf-check the
+    ``life`` helper had typed the "other" row from memory as "72 B(E)" and an
+    unsupported "73 B(E)" row (R1 4.97e-7, R2 1.68, R3 1.41e-12, S1 1.12e-2,
+    S2 0.68, S3 1.18e-12) that matches no source: both replaced.  All rows
+    remain secondary (not read from an SKF copy): :data:`ACBB_CONSTANTS_STATUS`.
+[5] Public transcription of the SKF friction-model constants tables (an
+    open-source Python bearing tool, module of "SKF friction-model constants
+    transcribed from the published SKF tables"; its deep-groove 62 row equals
+    DGBB_SERIES (S1, S2 also reproduce seed 003), its other deep-groove rows
+    agree with two other public transcriptions, and its K_rs and mu_EHL
+    values with [1]).  Not an SKF document: secondary.
 """
 
 from __future__ import annotations
@@ -64,7 +89,9 @@ __all__ = [
     "drag_moment",
     "skf_moments",
     "ACBB_SERIES",
+    "ACBB_CONSTANTS_STATUS",
     "angular_contact_series_of",
+    "angular_contact_row_of",
     "rolling_variable_G_rr_angular_contact",
     "sliding_variable_G_sl_angular_contact",
     "skf_moments_angular_contact",
@@ -98,7 +125,7 @@ K_RS = {"oil_jet": 3e-8, "oil_bath": 3e-8, "oil_air": 6e-8, "grease": 6e-8, "dry
 
 @dataclass(frozen=True)
 class AngularContactConstants:
-    """Geometry constants of [4] Table 2b for one single-row angular contact ball bearing series."""
+    """Geometry constants of [4] (geometry-constants table) for one single-row angular contact ball bearing series."""
 
     R1: float
     R2: float
@@ -108,24 +135,56 @@ class AngularContactConstants:
     S3: float
 
 
-#: [4] Table 2b, single-row angular contact ball bearings (see the module note on verification).
+#: [4], [5]: single-row angular contact ball bearings, keyed by series and variant (B = 40 deg, AC = 25 deg);
+#: "other" = any other single-row angular contact ball bearing (e.g. 72/73 with 15 or 30 deg).
 ACBB_SERIES: dict[str, AngularContactConstants] = {
-    "72": AngularContactConstants(R1=5.03e-7, R2=1.97, R3=1.90e-12, S1=1.30e-2, S2=0.68, S3=1.91e-12),
-    "73": AngularContactConstants(R1=4.97e-7, R2=1.68, R3=1.41e-12, S1=1.12e-2, S2=0.68, S3=1.18e-12),
+    "72 B": AngularContactConstants(R1=4.33e-7, R2=2.02, R3=2.44e-12, S1=1.82e-2, S2=0.71, S3=2.44e-12),
+    "73 B": AngularContactConstants(R1=4.54e-7, R2=2.02, R3=1.84e-12, S1=1.64e-2, S2=0.71, S3=1.84e-12),
+    "72 AC": AngularContactConstants(R1=3.58e-7, R2=3.64, R3=3.55e-12, S1=1.14e-2, S2=1.55, S3=3.55e-12),
+    "73 AC": AngularContactConstants(R1=3.48e-7, R2=3.64, R3=1.66e-12, S1=9.85e-3, S2=1.55, S3=1.66e-12),
+    "other": AngularContactConstants(R1=5.03e-7, R2=1.97, R3=1.90e-12, S1=1.30e-2, S2=0.68, S3=1.91e-12),
 }
-#: [4] K_Z = 4.4 for single-row angular contact ball bearings.
+_SECONDARY = "not checked against an SKF copy; from one public transcription of the SKF tables [5]"
+#: Verification status of each :data:`ACBB_SERIES` row (module note [4], docs/life.md "SKF constants").
+ACBB_CONSTANTS_STATUS: dict[str, str] = {
+    "72 B": _SECONDARY, "73 B": _SECONDARY, "72 AC": _SECONDARY, "73 AC": _SECONDARY,
+    "other": _SECONDARY + " and a second independent implementation",
+}
+#: [4], [5] K_Z = 4.4 for single-row angular contact ball bearings (secondary transcriptions).
 K_Z_ACBB = 4.4
 
 
-def angular_contact_series_of(designation: str, source: str = "<case>") -> AngularContactConstants:
-    """Series constants from an angular-contact designation such as ``"7206"`` ([4] Table 2b)."""
-    m = re.match(r"^\s*(7\d)\d{2}", designation or "")
-    if not m or m.group(1) not in ACBB_SERIES:
+def angular_contact_row_of(designation: str, contact_angle=None, source: str = "<case>") -> str:
+    """Row key of :data:`ACBB_SERIES` for a single-row angular-contact designation ([4], [5]).
+
+    The series is read from the designation (``72xx``, ``73xx``); the variant from its suffix
+    (``B``/``BE``... -> 40 deg, ``AC``... -> 25 deg), else from the nominal contact angle [rad]
+    (40 +- 2.5 deg -> B, 25 +- 2.5 deg -> AC); any other variant (15, 30 deg, unknown) -> ``"other"``.
+    """
+    m = re.match(r"^\s*(7[23])\d{2}\s*-?\s*([A-Z]*)", (designation or "").upper())
+    if not m:
         raise CaseError(
             source, "bearing.designation",
-            f"SKF model needs an angular-contact series designation like 7206 (known series: {', '.join(ACBB_SERIES)}), got {designation!r}",
+            f"SKF model needs a single-row angular-contact designation of series 72 or 73 like 7206 BE or 7206 AC, got {designation!r}",
         )
-    return ACBB_SERIES[m.group(1)]
+    series, suffix = m.group(1), m.group(2)
+    if suffix.startswith("AC"):
+        variant = "AC"
+    elif suffix.startswith("B"):
+        variant = "B"
+    elif contact_angle is not None and abs(math.degrees(contact_angle) - 40.0) <= 2.5:
+        variant = "B"
+    elif contact_angle is not None and abs(math.degrees(contact_angle) - 25.0) <= 2.5:
+        variant = "AC"
+    else:
+        return "other"
+    return f"{series} {variant}"
+
+
+def angular_contact_series_of(designation: str, source: str = "<case>", contact_angle=None) -> AngularContactConstants:
+    """Constants of a single-row angular-contact designation such as ``"7206 BE"`` ([4], [5]; see
+    :func:`angular_contact_row_of` and ``ACBB_CONSTANTS_STATUS``)."""
+    return ACBB_SERIES[angular_contact_row_of(designation, contact_angle, source)]
 
 
 def rolling_variable_G_rr_angular_contact(Fr, Fa, dm_mm, n_rpm, consts: AngularContactConstants):
@@ -357,15 +416,16 @@ def skf_moments_angular_contact(case, speeds) -> dict[str, np.ndarray]:
     """SKF-model moments of a single-row angular contact ball bearing at inner-ring speeds ([4]).
 
     M = phi_ish phi_rs G_rr (nu n)^0.6 + G_sl mu_sl (+ drag in an oil bath), with the
-    angular-contact G_rr, G_sl of [4] Table 2a (speed-dependent through F_g) and
-    K_Z = 4.4.  The operating viscosity nu is ``lubricant.kinematic_viscosity`` or
+    angular-contact G_rr, G_sl of [4] Table 2a (speed-dependent through F_g), the row of
+    :data:`ACBB_SERIES` chosen by :func:`angular_contact_row_of` from ``bearing.designation`` and
+    ``bearing.contact_angle`` ([5], secondary), and K_Z = 4.4.  The operating viscosity nu is ``lubricant.kinematic_viscosity`` or
     eta(T)/density of the oil.  Same return dict as :func:`skf_moments`.
     """
     from hsbearing.models import ehl
 
     src = case.source
     b, lub, fr, op = case.bearing, case.lubricant, case.friction, case.operating
-    consts = angular_contact_series_of(b.designation, src)
+    consts = angular_contact_series_of(b.designation, src, contact_angle=b.contact_angle)
     for key, val in (("bearing.bore_diameter", b.bore_diameter), ("bearing.outside_diameter", b.outside_diameter)):
         if val is None:
             raise CaseError(src, key, "required by the SKF frictional-moment model")
