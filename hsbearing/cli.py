@@ -163,15 +163,23 @@ def cmd_run(args) -> int:
     except Interrupted as exc:
         return _keep_interrupted(exc.partial, out)
     except SolverError as exc:
-        if _is_interrupt_failure(exc):
-            return _keep_interrupted(exc.partial, out)
-        if exc.partial is not None:
-            write_netcdf(exc.partial, out)
-            print(f"hsbearing: numerical failure: {exc}; partial result in {out}", file=sys.stderr)
-        else:
-            print(f"hsbearing: numerical failure: {exc}", file=sys.stderr)
-        return 1
+        return _run_failed(exc, out)
     return _finish_run(ds, out, args)
+
+
+def _run_failed(exc, out: Path) -> int:
+    """A run (or its continuation) that stopped: an interrupt reported as a solver failure exits 130 with the
+    partial run kept; a numerical failure writes the partial result (if any) and exits 1."""
+    from hsbearing.results import write_netcdf
+
+    if _is_interrupt_failure(exc):
+        return _keep_interrupted(exc.partial, out)
+    if exc.partial is not None:
+        write_netcdf(exc.partial, out)
+        print(f"hsbearing: numerical failure: {exc}; partial result in {out}", file=sys.stderr)
+    else:
+        print(f"hsbearing: numerical failure: {exc}", file=sys.stderr)
+    return 1
 
 
 def _finish_run(ds, out: Path, args) -> int:
@@ -210,12 +218,7 @@ def _cmd_continue(args) -> int:
     except Interrupted as exc:
         return _keep_interrupted(exc.partial, out)
     except SolverError as exc:
-        if exc.partial is not None:
-            write_netcdf(exc.partial, out)
-            print(f"hsbearing: numerical failure: {exc}; partial result in {out}", file=sys.stderr)
-        else:
-            print(f"hsbearing: numerical failure: {exc}", file=sys.stderr)
-        return 1
+        return _run_failed(exc, out)
     return _finish_run(ds, out, args)
 
 

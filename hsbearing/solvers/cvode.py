@@ -364,15 +364,21 @@ def _normal_loop(solver, counters, t_eval, ys, pr, wall0, wall_limit, callback, 
         if pr.t_cur != t_out:  # CVODE returns exactly tout (interpolated) or tstop = t_end
             raise _Failure(pr.t_cur, f"CVODE returned at t = {pr.t_cur!r} instead of the output time {t_out!r}")
         ys[k] = r.y
-        if not math.isfinite(ys[k].sum()):  # one reduction (a third of np.all(np.isfinite()))
-            raise _Failure(t_out, "non-finite state")
-        pr.k_done = k + 1
-        if callback is not None:
-            callback(t_out, ys[k])
-        if bar is not None:
-            bar.update(t_out - float(t_eval[k - 1]))
+        _accept_output(k, t_eval, ys, pr, callback, bar)
         if wall_limit is not None and _time.perf_counter() - wall0 > wall_limit:
             raise _Failure(t_out, f"wall-time limit of {wall_limit:g} s reached")
+
+
+def _accept_output(k, t_eval, ys, pr, callback, bar):
+    """Output k is stored in ys[k]: check it is finite, count it, report it (callback, progress bar)."""
+    t_out = float(t_eval[k])
+    if not math.isfinite(ys[k].sum()):  # one reduction (a third of np.all(np.isfinite()))
+        raise _Failure(t_out, "non-finite state")
+    pr.k_done = k + 1
+    if callback is not None:
+        callback(t_out, ys[k])
+    if bar is not None:
+        bar.update(t_out - float(t_eval[k - 1]))
 
 
 def _onestep_loop(solver, counters, t_eval, ys, pr, wall0, wall_limit, callback, bar):
@@ -398,13 +404,7 @@ def _onestep_loop(solver, counters, t_eval, ys, pr, wall0, wall_limit, callback,
             if ro.status < 0:
                 raise _Failure(pr.t_cur, ro.message)
             ys[k] = ro.y
-        if not math.isfinite(ys[k].sum()):  # one reduction (a third of np.all(np.isfinite()))
-            raise _Failure(t_out, "non-finite state")
-        pr.k_done = k + 1
-        if callback is not None:
-            callback(t_out, ys[k])
-        if bar is not None:
-            bar.update(t_out - float(t_eval[k - 1]))
+        _accept_output(k, t_eval, ys, pr, callback, bar)
 
 
 _CV_TOO_MUCH_WORK = -1  # CVODE return flag (cvode.h)
