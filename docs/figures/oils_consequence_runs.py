@@ -3,6 +3,7 @@
 Usage (from the repository root; serial, long: minutes per run on a loaded 2-core machine)::
 
     .venv/bin/python docs/figures/oils_consequence_runs.py OUT.jsonl [--duration-default 0.3] [--duration 0.05]
+                                                                      [--reading old|chosen]
     .venv/bin/python docs/figures/oils_consequence_runs.py --table OUT.jsonl      # the markdown table of docs/traction.md
 
 "old"    = lubricant.traction_law "bounded" (4109, 4106) / "analogue_4106" (4050), S a fraction,
@@ -107,12 +108,15 @@ def main(argv):
     out = argv[1]
     dur_default = float(argv[argv.index("--duration-default") + 1]) if "--duration-default" in argv else 0.3
     dur = float(argv[argv.index("--duration") + 1]) if "--duration" in argv else 0.05
-    jobs = [("4109", 130.0, r, dur_default) for r in ("old", "chosen")]
+    readings = ("old", "chosen")
+    if "--reading" in argv:  # run one reading only (two processes on two cores)
+        readings = (argv[argv.index("--reading") + 1],)
+    jobs = [("4109", 130.0, r, dur_default) for r in readings]
     for oil in ("4109", "4106", "4050"):
         for T in (27.0, 80.0, 130.0, 180.0):
             if oil == "4109" and T == 130.0:
                 continue
-            for r in ("old", "chosen"):
+            for r in readings:
                 jobs.append((oil, T, r, dur))
     for job in jobs:
         rec = one(*job)
