@@ -193,7 +193,16 @@ def _finish_run(ds, out: Path, args) -> int:
         png = plotting.plot_run(ds, out.with_suffix(".png"))
         if png:
             print(f"figure: {png}")
+        _power_figure(ds, out.with_suffix(".png"))
     return 0
+
+
+def _power_figure(ds, run_png: Path) -> None:
+    """Second figure of a dynamic run: power loss by source and drive torque (hsbearing.plotting_power)."""
+    from hsbearing import plotting_power
+
+    if plotting_power.has_power(ds):
+        print(f"figure: {plotting_power.plot_power(ds, plotting_power.power_figure_path(run_png))}")
 
 
 def _cmd_continue(args) -> int:
@@ -349,6 +358,8 @@ def cmd_plot(args) -> int:
     except CaseError as exc:  # e.g. a summary with too many lines for one figure: name the archive
         raise CaseError(str(path), exc.key, exc.message) from None
     print(f"figure: {png}")
+    if plotting.archive_kind(ds) == "run":
+        _power_figure(ds, Path(png))
     return 0
 
 

@@ -125,3 +125,48 @@ def test_cli_plot_redraws_from_archive(case, tmp_path, capsys):
     assert not (tmp_path / "bad.png").exists()
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 2 and all(line.startswith("hsbearing: error:") for line in err)
+
+
+# ----------------------------------------------------------------------------- the power figure (issue 17)
+
+def _power_run(case):
+    """A synthetic run carrying the power accounting variables (levels chosen, not computed)."""
+    from hsbearing.balances import SOURCES
+
+    ds = cage_run("k", case, n_rev=20)
+    t = ds["time"].values
+    rng = np.random.default_rng(3)
+    total = np.zeros(t.size)
+    for i, s in enumerate(SOURCES):
+        p = (i + 1.0) * (1.0 + 0.2 * np.sin(2e3 * t)) + 0.05 * rng.standard_normal(t.size)
+        ds[f"power_loss_{s}"] = ("time", p)
+        total += p
+    ds["power_loss"] = ("time", total)
+    ds["drive_power"] = ("time", total + 0.1)
+    ds["drive_torque"] = ("time", (total + 0.1) / 1466.0)
+    return ds
+
+
+def test_power_figure(case, tmp_path):
+    from hsbearing import plotting_power
+
+    ds = _power_run(case)
+    assert plotting_power.has_power(ds) and not plotting_power.has_power(cage_run("k", case, n_rev=5))
+    path = plotting_power.power_figure_path(tmp_path / "run.png")
+    assert path.name == "run_power.png"
+    out = plotting_power.plot_power(ds, path)
+    assert out == path
+    _png_ok(out)
+    assert _no_temp_left(tmp_path)
+
+
+def test_power_figure_moving_mean_against_convolution():
+    """The smoothing of panels (a)-(b): a centred moving mean, checked against numpy's convolution inside."""
+    from hsbearing.plotting_power import _moving_mean
+
+    t = np.arange(200) * 1e-5
+    y = np.random.default_rng(0).standard_normal(200)
+    m = _moving_mean(t, y, 10e-5)  # 10 samples
+    ref = np.convolve(y, np.ones(10) / 10, mode="valid")  # window [i-5, i+5)
+    assert np.allclose(m[5:196], ref[:191])
+    assert np.isclose(m[0], y[:5].mean())  # shrinking edge
