@@ -51,7 +51,7 @@ import numpy as np
 import xarray as xr
 
 from hsbearing.case import DIMENSIONS, CaseError, load_case, parse_quantity
-from hsbearing.results import open_run, write_netcdf, atomic_write
+from hsbearing.results import open_run, write_netcdf, atomic_write, register
 from hsbearing import sweeps
 
 __all__ = ["list_studies", "study_help", "load_study", "run_study", "normalise_label", "write_report", "cli_main",
@@ -59,6 +59,17 @@ __all__ = ["list_studies", "study_help", "load_study", "run_study", "normalise_l
 
 RUNS = "runs"
 FIGURES = "figures"
+
+# the study tables' own variables (docs/nomenclature.md); the band key coordinates are band_<leaf of the case key>
+for _n, _d, _u, _l in [
+    ("paper_classification", "", "1", "the paper's classification of the cell (study tables)"),
+    ("sample", ("sample",), "1", "band sample index of a banded study table (0 = the nominal case when included)"),
+    ("sample_label", ("sample",), "1", "band sample label: nominal, lhs1, lhs2, ..."),
+    ("band_outer_land_diameter", ("sample",), "m", "bearing.outer_land_diameter of the band sample (guide clearance)"),
+    ("band_guide_land_width", ("sample",), "m", "cage.guide_land_width of the band sample (default included)"),
+    ("band_pocket_diameter", ("sample",), "m", "cage.pocket_diameter of the band sample"),
+]:
+    register(_n, _d, _u, _l)
 
 
 def _studies_dir() -> Path:
@@ -83,6 +94,8 @@ def study_help() -> str:
             lines.append(f"  {p.stem}: {st.get('title', '')}")
             if st.get("runtime"):
                 lines.append(f"    runtime: {st['runtime']} (--duration shortens it)")
+            if st.get("runtime_bands"):
+                lines.append(f"    with --bands: {st['runtime_bands']}")
     return "\n".join(lines)
 
 
@@ -471,6 +484,12 @@ def _run_banded(study: Study, chosen: list[dict], out: Path, dur, *, jobs, sched
                 dims = [d for d in ds["status"].dims if d != "sample"]
                 ds["paper_classification"] = xr.Variable(tuple(dims), lab, attrs={
                     "long_name": f"classification in the paper ({t.get('title', t['id'])})"})
+            from hsbearing.results import VARIABLES
+
+            for name in ["sample", "sample_label", "paper_classification"] + [f"band_{k.rpartition('.')[2]}"
+                                                                                for k in study.bands["keys"]]:
+                if name in ds.variables and name in VARIABLES:
+                    ds[name].attrs.update({"units": VARIABLES[name].units, "long_name": VARIABLES[name].long_name})
             ds.attrs.update({"band_method": study.bands.get("method", "lhs"), "band_seed": int(study.bands["seed"]),
                              "band_samples": len(samples),
                              "band_include_nominal": int(bool(study.bands.get("include_nominal", True)))})

@@ -381,3 +381,24 @@ def test_study_cli_bands_flag(tmp_path, capsys):
     assert cli.main(["study", str(plain), "-o", str(tmp_path / "o"), "--bands", "-j", "1"]) == 2
     assert "no [bands] table" in capsys.readouterr().err
     assert not list((tmp_path / "o").glob("**/*.nc"))
+
+
+def test_study_cli_bands_runs_the_banded_study(tmp_path, monkeypatch, capsys):
+    """``hsbearing study zhang2016 --bands``: the CLI passes the flag through (synthetic model, Table 5 only)."""
+    from hsbearing import cli
+
+    real = study.run_study
+
+    def table5(name, out_dir, **kw):
+        kw.update(point_fn=banded_fake_dynamics, tables=["table5"], duration="3 ms", progress=False)
+        return real(name, out_dir, **kw)
+
+    monkeypatch.setattr(study, "run_study", table5)
+    assert cli.main(["study", "zhang2016", "-o", str(tmp_path), "-j", "1", "--bands"]) == 0
+    out = capsys.readouterr().out
+    assert "(bands)" in out and f"table: {tmp_path / 'table5_bands.nc'}" in out
+    assert "45 distinct points" in out  # 9 cells x (nominal + 4 LHS samples)
+    ds = open_run(tmp_path / "table5_bands.nc")
+    assert ds.sizes == {"sample": 5, "oil": 3, "radial_load": 3}
+    assert "**Majority agreement:" in (tmp_path / "report_bands.md").read_text()
+    assert not (tmp_path / "report.md").exists()
