@@ -305,7 +305,7 @@ def cmd_study(args) -> int:
         sweeps.check_scheduler_address(args.scheduler)
 
     rc = study.cli_main(args)
-    if not getattr(args, "no_figure", False):
+    if not getattr(args, "no_figure", False) and not getattr(args, "bands", False):  # banded tables: report figures
         out = Path(args.output)
         for t in study.load_study(args.name).tables:
             _summary_figure(out / f"{t['id']}.nc", out / f"{t['id']}.png")
@@ -454,6 +454,13 @@ def build_parser() -> argparse.ArgumentParser:
                     help="address tcp://host:port of a running dask.distributed scheduler; the points run on its "
                          "workers instead of local processes")
     sp.add_argument("--duration", help="simulated time of each run (default: the study's, e.g. 1.2 s)")
+    grp = sp.add_mutually_exclusive_group()
+    grp.add_argument("--bands", dest="bands", action="store_true", default=False,
+                     help="run every cell over the study's [bands] samples of the unknown inputs (guide clearance, "
+                          "land width, pocket clearance): DIR/<table>_bands.nc, DIR/report_bands.md; reuses the "
+                          "nominal points already in DIR/runs")
+    grp.add_argument("--no-bands", dest="bands", action="store_false",
+                     help="the nominal case only, one run per cell (default): DIR/<table>.nc, DIR/report.md")
     sp.add_argument("--no-figure", "--no-plot", dest="no_figure", action="store_true",
                     help="do not draw DIR/<table>.png (summary figure of each table)")
     sp.set_defaults(func=cmd_study)

@@ -18,6 +18,20 @@ tables, e.g. 1000 N at 130 degC, are computed once), then writes::
 
 Agreement is a finding, not a target: the report lists every cell where our
 classification differs and names what can drive a difference.
+
+Bands over the unknown inputs (``run_study(..., bands=True)``, ``hsbearing study
+NAME --bands``): the study's ``[bands]`` table names case keys the paper does not
+give, a range for each, and a Latin-hypercube sample of those ranges with a fixed
+seed (:func:`band_samples`; the nominal case is sample 0 when
+``include_nominal``).  Every cell runs every sample (common random numbers, so the
+cells are comparable).  A sample is only a set of case overrides: its points go to
+the same ``DIR/runs/<case>-<hash>.nc`` archives as the nominal study (the hash is
+taken over the full case), so the nominal points of an earlier ``hsbearing study``
+in the same directory are reused, and an interrupted banded study resumes.  The
+banded outputs do not overwrite the nominal ones::
+
+    DIR/<table>_bands.nc         one Dataset per table (dims sample x oil x <key>)
+    DIR/report_bands.md          per cell: class fractions over the band, majority, agrees, occurs
 """
 
 from __future__ import annotations
@@ -36,14 +50,26 @@ from typing import Any, Callable
 import numpy as np
 import xarray as xr
 
-from hsbearing.case import CaseError, load_case, parse_quantity
-from hsbearing.results import open_run, write_netcdf, atomic_write
+from hsbearing.case import DIMENSIONS, CaseError, load_case, parse_quantity
+from hsbearing.results import open_run, write_netcdf, atomic_write, register
 from hsbearing import sweeps
 
-__all__ = ["list_studies", "study_help", "load_study", "run_study", "normalise_label", "write_report", "cli_main"]
+__all__ = ["list_studies", "study_help", "load_study", "run_study", "normalise_label", "write_report", "cli_main",
+           "BandSample", "band_samples", "latin_hypercube", "band_cell_stats", "write_band_report"]
 
 RUNS = "runs"
 FIGURES = "figures"
+
+# the study tables' own variables (docs/nomenclature.md); the band key coordinates are band_<leaf of the case key>
+for _n, _d, _u, _l in [
+    ("paper_classification", "", "1", "the paper's classification of the cell (study tables)"),
+    ("sample", ("sample",), "1", "band sample index of a banded study table (0 = the nominal case when included)"),
+    ("sample_label", ("sample",), "1", "band sample label: nominal, lhs1, lhs2, ..."),
+    ("band_outer_land_diameter", ("sample",), "m", "bearing.outer_land_diameter of the band sample (guide clearance)"),
+    ("band_guide_land_width", ("sample",), "m", "cage.guide_land_width of the band sample (default included)"),
+    ("band_pocket_diameter", ("sample",), "m", "cage.pocket_diameter of the band sample"),
+]:
+    register(_n, _d, _u, _l)
 
 
 def _studies_dir() -> Path:
@@ -68,6 +94,8 @@ def study_help() -> str:
             lines.append(f"  {p.stem}: {st.get('title', '')}")
             if st.get("runtime"):
                 lines.append(f"    runtime: {st['runtime']} (--duration shortens it)")
+            if st.get("runtime_bands"):
+                lines.append(f"    with --bands: {st['runtime_bands']}")
     return "\n".join(lines)
 
 
@@ -103,6 +131,11 @@ class Study:
     @property
     def oils(self) -> list[str]:
         return list(self.spec["study"]["oils"])
+
+    @property
+    def bands(self) -> dict | None:
+        """The ``[bands]`` table (unknown inputs as ranges), or None."""
+        return self.spec.get("bands")
 
 
 def load_study(name_or_path: str | os.PathLike) -> Study:
@@ -142,7 +175,183 @@ def load_study(name_or_path: str | os.PathLike) -> Study:
             tab = next((t for t in spec.get("table", []) if t["id"] == cell[0]), None)
             if tab is None or cell[1] not in oils or cell[2] not in tab["values"]:
                 raise CaseError(src, f"figure[{i}].cells", f"unknown cell {cell!r}")
+    if "bands" in spec:
+        _check_bands(spec["bands"], src)
     return Study(spec["study"].get("name", p.stem), src, spec)
+
+
+BAND_METHODS = ("lhs",)
+
+
+def _check_bands(b: dict, src: str) -> None:
+    """The ``[bands]`` table: keys with [low, high] ranges, method, seed, samples, include_nominal."""
+    from hsbearing.sweeps import _field
+
+    if not isinstance(b, dict):
+        raise CaseError(src, "bands", "must be a table")
+    known = {"keys", "method", "seed", "samples", "include_nominal"}
+    for k in b:
+        if k not in known:
+            raise CaseError(src, f"bands.{k}", f"unknown key (allowed: {', '.join(sorted(known))})")
+    if b.get("method", "lhs") not in BAND_METHODS:
+        raise CaseError(src, "bands.method", f"unknown method {b.get('method')!r} (allowed: {', '.join(BAND_METHODS)})")
+    seed = b.get("seed")
+    if not isinstance(seed, int) or isinstance(seed, bool) or seed < 0:
+        raise CaseError(src, "bands.seed", f"must be a non-negative integer (a fixed seed), got {seed!r}")
+    n = b.get("samples")
+    if not isinstance(n, int) or isinstance(n, bool) or n < 1:
+        raise CaseError(src, "bands.samples", f"must be a positive integer, got {n!r}")
+    if not isinstance(b.get("include_nominal", True), bool):
+        raise CaseError(src, "bands.include_nominal", "must be true or false")
+    keys = b.get("keys")
+    if not isinstance(keys, dict) or not keys:
+        raise CaseError(src, "bands.keys", "missing: a table of case keys, each [low, high]")
+    for key, rng in keys.items():
+        table, leaf, fld = _field(key, src)
+        full = f"{table}.{leaf}"
+        if full != key:
+            raise CaseError(src, f"bands.keys.{key}", f"give the full case key ({full})")
+        if not (isinstance(rng, list) and len(rng) == 2):
+            raise CaseError(src, f"bands.keys.{key}", "must be [low, high]")
+        lo, hi = (parse_quantity(v, fld.kind, source=src, key=f"bands.keys.{key}") for v in rng)
+        if not lo < hi:
+            raise CaseError(src, f"bands.keys.{key}", f"low {rng[0]} is not below high {rng[1]}")
+
+
+# ----------------------------------------------------------------------------- bands
+
+
+@dataclass(frozen=True)
+class BandSample:
+    """One sample of the band: its index and label, the case overrides (unit strings; none for the nominal
+    case) and the SI values of the band keys (for the nominal sample: the case's effective values)."""
+
+    index: int
+    label: str
+    overrides: dict
+    values: dict
+
+
+def latin_hypercube(n: int, d: int, seed: int) -> np.ndarray:
+    """An ``n x d`` Latin-hypercube sample of the unit cube: each column has exactly one point in each
+    of the n strata [i/n, (i+1)/n), at a uniform random position inside it (McKay, Beckman & Conover,
+    Technometrics 21 (1979) 239-245).  ``numpy.random.default_rng(seed)``: the same seed gives the same
+    sample (PCG64 is stable across numpy versions)."""
+    rng = np.random.default_rng(seed)
+    u = np.empty((n, d))
+    for j in range(d):
+        u[:, j] = (rng.permutation(n) + rng.random(n)) / n
+    return u
+
+
+#: band values are rounded to this [m] so the overrides (and the archive hashes) are short and exact
+BAND_RESOLUTION = 1e-7
+
+_UNIT_OUT = {"length": (1e3, "mm")}
+
+
+def _format_override(kind: str, si: float) -> str:
+    """A band value as a case-file string: lengths in mm with 4 decimals (0.1 um), else SI with its unit."""
+    if kind in _UNIT_OUT:
+        scale, unit = _UNIT_OUT[kind]
+        return f"{si * scale:.4f} {unit}"
+    unit = DIMENSIONS.get(kind, "")
+    return f"{si!r} {unit}".strip()
+
+
+def _effective_value(case, key: str) -> float:
+    """The SI value of a band key in a case, including the derived defaults (land width, pocket diameter)."""
+    table, _, leaf = key.rpartition(".")
+    obj = case
+    for part in table.split("."):
+        obj = getattr(obj, part)
+    v = getattr(obj, leaf, None)
+    if v is not None:
+        return float(v)
+    if key == "cage.guide_land_width":
+        from hsbearing.models.geometry import guide_lands
+
+        return float(guide_lands(case).width)
+    if key == "cage.pocket_diameter" and case.cage.pocket_clearance is not None:
+        return float(case.bearing.ball_diameter + 2 * case.cage.pocket_clearance)
+    return float("nan")
+
+
+def band_samples(study: "Study", case=None) -> list[BandSample]:
+    """The band samples of a study: the nominal case first (if ``include_nominal``), then ``samples``
+    Latin-hypercube points of the ranges in ``[bands.keys]`` (seed ``[bands] seed``), values rounded to
+    0.1 um.  ``case`` (default: the study's base case) gives the nominal values."""
+    b = study.bands
+    if not b:
+        raise CaseError(study.source_path, "bands", "this study defines no [bands] table")
+    from hsbearing.sweeps import _field
+
+    keys = list(b["keys"])
+    kinds = [_field(k, study.source_path)[2].kind for k in keys]
+    ranges = [tuple(parse_quantity(v, kd, source=study.source_path, key=f"bands.keys.{k}") for v in b["keys"][k])
+              for k, kd in zip(keys, kinds)]
+    base = case if case is not None else load_case(study.spec["study"]["case"])
+    out: list[BandSample] = []
+    if b.get("include_nominal", True):
+        out.append(BandSample(0, "nominal", {}, {k: _effective_value(base, k) for k in keys}))
+    u = latin_hypercube(int(b["samples"]), len(keys), int(b["seed"]))
+    for i, row in enumerate(u):
+        vals, ov = {}, {}
+        for k, kd, (lo, hi), x in zip(keys, kinds, ranges, row):
+            v = round((lo + x * (hi - lo)) / BAND_RESOLUTION) * BAND_RESOLUTION
+            ov[k] = _format_override(kd, v)
+            vals[k] = parse_quantity(ov[k], kd)
+        out.append(BandSample(len(out), f"lhs{i + 1}", ov, vals))
+    return out
+
+
+def band_cell_stats(labels, statuses, confidences=None, details=None, paper: str = "") -> dict[str, Any]:
+    """Aggregate one cell over the band samples.
+
+    ``labels``/``statuses``/``confidences``/``details``: one entry per sample (the classification, the
+    point status, the classifier confidence, the sub-label).  Samples whose status is not ok are left
+    out of the fractions (``n_failed``); "undetermined" is an outcome like any class.  Returns
+    ``fractions`` {class: fraction of the completed samples}, ``subfractions`` {class: {sub-label:
+    fraction}}, ``majority`` (the most frequent class; ties joined with " / "), ``tie``, ``agrees``
+    (the paper's class is the majority, alone), ``agrees_tied`` (the paper's class is one of tied
+    majorities), ``occurs`` (the paper's class appears in at least one sample), ``confidence`` (mean
+    confidence of the samples in the majority class), ``n_ok``, ``n_failed``, ``n``.
+    """
+    n = len(labels)
+    confidences = list(confidences) if confidences is not None else [float("nan")] * n
+    details = list(details) if details is not None else [""] * n
+    ok = [i for i in range(n) if statuses[i] == sweeps.STATUS_OK]
+    counts: dict[str, int] = {}
+    sub: dict[str, dict[str, int]] = {}
+    for i in ok:
+        c = normalise_label(labels[i]) or "-"
+        counts[c] = counts.get(c, 0) + 1
+        if details[i]:
+            sub.setdefault(c, {})
+            sub[c][str(details[i])] = sub[c].get(str(details[i]), 0) + 1
+    n_ok = len(ok)
+    paper = normalise_label(paper) if paper else ""
+    if n_ok:
+        top = max(counts.values())
+        winners = sorted(c for c, k in counts.items() if k == top)
+    else:
+        winners = []
+    maj = " / ".join(winners) if winners else "-"
+    conf = [float(confidences[i]) for i in ok if (normalise_label(labels[i]) or "-") in winners
+            and confidences[i] is not None and np.isfinite(float(confidences[i]))]
+    return {
+        "fractions": {c: k / n_ok for c, k in sorted(counts.items(), key=lambda kv: (-kv[1], kv[0]))},
+        "subfractions": {c: {d: k / n_ok for d, k in sorted(v.items())} for c, v in sub.items()},
+        "majority": maj,
+        "tie": len(winners) > 1,
+        "agrees": bool(paper) and winners == [paper],
+        "agrees_tied": bool(paper) and len(winners) > 1 and paper in winners,
+        "occurs": bool(paper) and counts.get(paper, 0) > 0,
+        "confidence": float(np.mean(conf)) if conf else float("nan"),
+        "n_ok": n_ok,
+        "n_failed": n - n_ok,
+        "n": n,
+    }
 
 
 # ----------------------------------------------------------------------------- run
@@ -158,12 +367,15 @@ def run_study(
     progress: bool = True,
     point_fn: Callable | None = None,
     tables: list[str] | None = None,
+    bands: bool = False,
 ) -> dict[str, Any]:
     """Run a study; returns ``{"tables": {id: Dataset}, "report": Path, "wall_time": s, ...}``.
 
     ``duration`` (s or unit string) overrides ``[study] duration``;
     ``point_fn`` replaces the dynamic model (tests, dry runs) and is named in
-    the report; ``tables`` restricts to some table ids.
+    the report; ``tables`` restricts to some table ids; ``bands`` runs every
+    cell over the samples of ``[bands]`` (:func:`band_samples`) and writes
+    ``DIR/<table>_bands.nc`` and ``DIR/report_bands.md`` instead.
     """
     study = load_study(name)
     out = Path(out_dir)
@@ -174,6 +386,9 @@ def run_study(
     chosen = [t for t in study.tables if tables is None or t["id"] in tables]
     if not chosen:
         raise CaseError(study.source_path, "table", f"no table selected (have: {', '.join(t['id'] for t in study.tables)})")
+    if bands:
+        return _run_banded(study, chosen, out, dur, jobs=jobs, scheduler=scheduler, progress=progress,
+                           point_fn=point_fn)
     plans = []
     for t in chosen:
         base = load_case(study.spec["study"]["case"], **t.get("set", {}))
@@ -210,6 +425,96 @@ def run_study(
         report = write_report(study, datasets, out, info)
     return {"tables": datasets, "report": report, **info}
 
+
+
+def _run_banded(study: Study, chosen: list[dict], out: Path, dur, *, jobs, scheduler, progress, point_fn) -> dict[str, Any]:
+    """cells x band samples in one pass (one progress bar over all points); see :func:`run_study`."""
+    from hsbearing.models.geometry import GuideLandError, guide_lands
+
+    samples = band_samples(study)
+    plans: dict[tuple[str, int], sweeps.SweepPlan] = {}
+    for t in chosen:
+        for smp in samples:
+            where = f"{study.source_path} [{t['id']}, band sample {smp.label}]"
+            try:
+                base = load_case(study.spec["study"]["case"], **t.get("set", {}), **smp.overrides)
+                guide_lands(base)
+            except GuideLandError as exc:
+                raise CaseError(study.source_path, "bands", f"sample {smp.label} ({_sample_text(smp)}) is not a "
+                                f"valid case for {t['id']}: {exc}") from None
+            except CaseError as exc:
+                raise CaseError(study.source_path, "bands", f"sample {smp.label} ({_sample_text(smp)}) is not a "
+                                f"valid case for {t['id']}: {exc}") from None
+            vary = {"lubricant.oil": study.oils, t["vary"]: list(t["values"])}
+            plan = sweeps.plan_sweep(base, vary, kind="run", duration=dur, point_fn=point_fn, source=where)
+            bad = [pt for pt in plan.points if pt.case is None]
+            if bad:
+                raise CaseError(study.source_path, "bands", f"sample {smp.label} ({_sample_text(smp)}): "
+                                f"{bad[0].error}")
+            plans[(t["id"], smp.index)] = plan
+    keys = list(plans)
+    t0 = time.perf_counter()
+    with sweeps._backend(jobs, scheduler) as backend, sweeps._dir_lock(out):
+        records = sweeps.execute([plans[k] for k in keys], out / RUNS, progress=progress, backend=backend)
+        wall = time.perf_counter() - t0
+        recs = dict(zip(keys, records))
+        backend_label = f"dask {scheduler}" if scheduler else f"jobs={jobs or os.cpu_count()}"
+        datasets = {}
+        for t in chosen:
+            parts = []
+            for smp in samples:
+                ds = sweeps.assemble(plans[(t["id"], smp.index)], recs[(t["id"], smp.index)], archive_prefix=f"{RUNS}/",
+                                     attrs={"study": study.name, "study_table": t["id"], "sweep_backend": backend_label})
+                parts.append(ds)
+            ds = xr.concat(parts, dim="sample", data_vars="all", coords="minimal", compat="override",
+                           combine_attrs="override")
+            ds = ds.assign_coords(sample=("sample", np.array([s.index for s in samples]),
+                                          {"long_name": "band sample (0 = nominal case when included)"}))
+            ds = ds.assign_coords(sample_label=("sample", np.array([s.label for s in samples], dtype=object),
+                                                {"long_name": "band sample label"}))
+            for key in study.bands["keys"]:
+                leaf = key.rpartition(".")[2]
+                ds = ds.assign_coords({f"band_{leaf}": ("sample", np.array([s.values[key] for s in samples], float),
+                                                        {"long_name": f"{key} of the band sample", "units": "m",
+                                                         "case_key": key})})
+            paper = t.get("paper", {})
+            if paper:
+                lab = np.array([[normalise_label(paper[o][i]) if o in paper else "" for i in range(len(t["values"]))]
+                                for o in study.oils], dtype=object)
+                dims = [d for d in ds["status"].dims if d != "sample"]
+                ds["paper_classification"] = xr.Variable(tuple(dims), lab, attrs={
+                    "long_name": f"classification in the paper ({t.get('title', t['id'])})"})
+            from hsbearing.results import VARIABLES
+
+            for name in ["sample", "sample_label", "paper_classification"] + [f"band_{k.rpartition('.')[2]}"
+                                                                                for k in study.bands["keys"]]:
+                if name in ds.variables and name in VARIABLES:
+                    ds[name].attrs.update({"units": VARIABLES[name].units, "long_name": VARIABLES[name].long_name})
+            ds.attrs.update({"band_method": study.bands.get("method", "lhs"), "band_seed": int(study.bands["seed"]),
+                             "band_samples": len(samples),
+                             "band_include_nominal": int(bool(study.bands.get("include_nominal", True)))})
+            write_netcdf(ds, out / f"{t['id']}{BANDS_SUFFIX}.nc")
+            datasets[t["id"]] = ds
+        all_points = {pt.archive or id(pt) for plan in plans.values() for pt in plan.points}
+        info = {
+            "wall_time": wall,
+            "backend": backend_label,
+            "duration": dur,
+            "point_fn": sweeps._fn_name(point_fn),
+            "n_unique_points": len(all_points),
+            "n_computed": len({r.get("archive") or id(r) for rs in records for r in rs
+                               if not r.get("resumed") and r.get("status") != "invalid"}),
+            "samples": samples,
+        }
+        report = write_band_report(study, datasets, out, info)
+    return {"tables": datasets, "report": report, **info}
+
+
+BANDS_SUFFIX = "_bands"
+
+
+def _sample_text(smp: BandSample) -> str:
+    return ", ".join(f"{k.rpartition('.')[2]} = {v * 1e3:.4f} mm" for k, v in smp.values.items())
 
 # ----------------------------------------------------------------------------- report
 
@@ -330,6 +635,180 @@ def write_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, info:
     with atomic_write(path) as tmp:
         tmp.write_text("\n".join(lines))
     return path
+
+
+# ----------------------------------------------------------------------------- banded report
+
+#: the superseded study (land-film sign error and the other cage-physics defects of the cage-physics issue)
+SUPERSEDED = {"zhang2016": "9 of 37 classified cells agreed (one run per cell, guessed clearances; docs/validation/zhang2016.md before issue 16)"}
+
+
+def _fraction_text(st: dict) -> str:
+    bits = []
+    for c, f in st["fractions"].items():
+        sub = st["subfractions"].get(c)
+        extra = f" [{', '.join(f'{d} {g:.2f}' for d, g in sub.items())}]" if sub else ""
+        bits.append(f"{c} {f:.2f}{extra}")
+    return "; ".join(bits) or "-"
+
+
+def _cell_stats(ds: xr.Dataset, dim: str, oil: str, i: int) -> dict:
+    pt = ds.sel(oil=oil).isel({dim: i})
+    n = pt.sizes["sample"]
+
+    def col(name, default):
+        return list(pt[name].values) if name in pt else [default] * n
+
+    paper = str(pt["paper_classification"].values) if "paper_classification" in pt else ""
+    return band_cell_stats(col("classification", ""), col("status", ""), col("classification_confidence", np.nan),
+                           col("classification_detail", ""), paper=paper) | {"paper": paper}
+
+
+def _band_counts(stats: list[dict]) -> dict[str, int]:
+    evaluated = [s for s in stats if s["paper"] and s["n_ok"]]
+    return {
+        "cells": len([s for s in stats if s["paper"]]),
+        "evaluated": len(evaluated),
+        "agrees": sum(s["agrees"] for s in evaluated),
+        "tied": sum(s["agrees_tied"] for s in evaluated),
+        "occurs": sum(s["occurs"] for s in evaluated),
+        "undetermined": sum(s["majority"] == "undetermined" for s in evaluated),
+    }
+
+
+def write_band_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, info: dict) -> Path:
+    """``out/report_bands.md``: per cell the class fractions over the band, the majority, agrees/occurs,
+    the agreement counts per table and overall, the band definition and the wall times."""
+    figdir = out / FIGURES
+    figdir.mkdir(parents=True, exist_ok=True)
+    st = study.spec["study"]
+    b = study.bands
+    samples: list[BandSample] = info["samples"]
+    lines: list[str] = [f"# {st.get('title', study.name)}: with the unknown inputs as bands", ""]
+    lines += [f"Source: {st.get('source', '')}. Study definition: `hsbearing/studies/{study.name}.toml` "
+              f"(`[bands]`); generated by `hsbearing study {study.name} --bands` (hsbearing {_version()}) on "
+              f"{time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}.", ""]
+    if info.get("point_fn"):
+        lines += [f"> **Not the dynamic model.** The points of this report were computed by the point function "
+                  f"`{info['point_fn']}` (a stand-in used to test the study machinery); its classifications "
+                  "say nothing about the bearing.", ""]
+    # -- run and wall times
+    dur = info.get("duration")
+    walls = _point_walls(datasets)
+    n_pts = len(walls)
+    mean_w = float(np.mean(list(walls.values()))) if walls else float("nan")
+    cores = os.cpu_count() or 1
+    lines += ["## Run and wall time", "",
+              f"- simulated time per point: {_fmt(dur * 1e3 if dur else float('nan'), '.4g')} ms"
+              + ("" if dur else " (the case's `[simulation] duration`)"),
+              f"- execution: {info['backend']} on {cores} core(s) of `{_host()}`",
+              f"- points: {info['n_unique_points']} distinct cases = cells x {len(samples)} band samples "
+              f"({info['n_computed']} computed in this invocation, the others resumed from `{RUNS}/`, e.g. the "
+              "nominal points of an earlier `hsbearing study` in the same directory)",
+              f"- **wall time of the banded study (this invocation): {info['wall_time']:.1f} s**",
+              f"- sum of the per-point wall times (all {n_pts} distinct points, resumed ones as recorded in their "
+              f"archives): {sum(walls.values()):.1f} s; mean per point {_fmt(mean_w, '.3g')} s",
+              f"- wall time of the nominal study alone: see `report.md` of `hsbearing study {study.name}` "
+              "(same directory)",
+              f"- **projection: a 4000-run map on a 16-core cluster** = 4000 x {_fmt(mean_w, '.3g')} s / 16 = "
+              f"{_fmt(4000 * mean_w / 16 / 60, '.3g')} min (the measured mean point wall time at this duration, one "
+              "point per core, no scheduling overhead; the per-point time here was measured with "
+              f"{info['backend']} on {cores} shared core(s), so it includes contention)",
+              ""] + _section_stats(datasets) + [""]
+    # -- band definition
+    lines += ["## The band", "",
+              f"Method: {b.get('method', 'lhs')} (Latin hypercube, seed {b['seed']}), {b['samples']} samples"
+              + (" plus the nominal case (sample 0)" if b.get("include_nominal", True) else "")
+              + "; the same samples in every cell (common random numbers). Ranges and their justification: "
+                f"`hsbearing/studies/{study.name}.toml` and docs/validation/{study.name}.md.", ""]
+    base = load_case(st["case"])
+    hdr = ["sample"] + [f"`{k}` [mm]" for k in b["keys"]]
+    derived = []
+    if "bearing.outer_land_diameter" in b["keys"] and base.cage.outside_diameter:
+        derived.append(("radial guide clearance [um]",
+                        lambda v: (v["bearing.outer_land_diameter"] - base.cage.outside_diameter) / 2 * 1e6))
+    if "cage.pocket_diameter" in b["keys"]:
+        derived.append(("radial pocket clearance [um]",
+                        lambda v: (v["cage.pocket_diameter"] - base.bearing.ball_diameter) / 2 * 1e6))
+    hdr += [d[0] for d in derived]
+    lines += ["| " + " | ".join(hdr) + " |", "|" + "---|" * len(hdr)]
+    rng = ["range"] + [" - ".join(str(x) for x in b["keys"][k]) for k in b["keys"]] + [""] * len(derived)
+    lines.append("| " + " | ".join(rng) + " |")
+    for smp in samples:
+        row = [f"{smp.index} ({smp.label})"] + [f"{smp.values[k] * 1e3:.4f}" for k in b["keys"]]
+        row += [f"{f(smp.values):.1f}" for _, f in derived]
+        lines.append("| " + " | ".join(row) + " |")
+    lines.append("")
+    # -- per table
+    all_stats: list[dict] = []
+    per_table: list[tuple[str, dict]] = []
+    for t in study.tables:
+        ds = datasets.get(t["id"])
+        if ds is None:
+            continue
+        dim = t["vary"].rpartition(".")[2]
+        lines += [f"## {t.get('title', t['id'])}", "",
+                  "Class fractions over the band samples that completed (sub-labels of \"1 period\" in brackets); "
+                  "*majority*: the most frequent class (ties joined by /); *agrees*: the paper's class is the "
+                  "majority alone (\"tie\": one of tied majorities); *occurs*: the paper's class appears in at "
+                  "least one sample; *confidence*: mean classifier confidence of the samples in the majority class.",
+                  "",
+                  f"| {t.get('axis_label', dim)} | oil | paper | ours over the band | majority | agrees | occurs | "
+                  "confidence | samples ok |", "|" + "---|" * 9]
+        tstats = []
+        for i in range(ds.sizes[dim]):
+            for o in study.oils:
+                stt = _cell_stats(ds, dim, o, i)
+                stt["where"] = f"{t['id']}, oil {o}, {_value_label(ds, dim, i)}"
+                tstats.append(stt)
+                agree = "yes" if stt["agrees"] else ("tie" if stt["agrees_tied"] else "no")
+                lines.append(f"| {_value_label(ds, dim, i)} | {o} | {stt['paper'] or '-'} | {_fraction_text(stt)} | "
+                             f"{stt['majority']} | {agree if stt['paper'] else '-'} | "
+                             f"{('yes' if stt['occurs'] else 'no') if stt['paper'] else '-'} | "
+                             f"{_fmt(stt['confidence'], '.2f')} | {stt['n_ok']}/{stt['n']} |")
+        c = _band_counts(tstats)
+        per_table.append((t["id"], c))
+        all_stats += tstats
+        lines += ["", f"{t['id']}: the paper's class is the majority in **{c['agrees']} of {c['evaluated']}** cells "
+                      f"(+{c['tied']} tied), occurs in **{c['occurs']} of {c['evaluated']}**.", ""]
+    # -- counts
+    tot = _band_counts(all_stats)
+    lines += ["## Agreement over the band", "",
+              "| table | cells | cells with a completed sample | majority agrees | tied majority incl. paper | "
+              "occurs | majority undetermined |", "|" + "---|" * 7]
+    for tid, c in per_table + [("**all**", tot)]:
+        lines.append(f"| {tid} | {c['cells']} | {c['evaluated']} | {c['agrees']} | {c['tied']} | {c['occurs']} | "
+                     f"{c['undetermined']} |")
+    lines += ["", f"**Majority agreement: {tot['agrees']} of {tot['evaluated']} cells; occurrence: {tot['occurs']} "
+                  f"of {tot['evaluated']}.** Superseded table: {SUPERSEDED.get(study.name, 'none')}.", "",
+              "### What changed from the superseded table, and why", "",
+              "> **[LEAD: to be filled from the results]** -- the cage-physics fixes since the superseded table "
+              "(land-film sign, guide lands from the geometry, oil laws; docs/validation/cage_whirl.md), the "
+              "classifier's sub-labels (still cage / synchronous whirl under \"1 period\"), and what the band "
+              "changes: cells whose class depends on the unknown clearances.", ""]
+    failed = []
+    for tid, ds in datasets.items():
+        for idx in np.ndindex(*ds["status"].shape):
+            pt = ds.isel(dict(zip(ds["status"].dims, idx)))
+            if pt["status"].item() != sweeps.STATUS_OK:
+                where = ", ".join(f"{str(c)[:-6]}={pt[c].item()}" for c in pt.coords if str(c).endswith("_label"))
+                failed.append(f"- {tid}: {where}: {pt['status'].item()}: {pt['error'].item()}")
+    if failed:
+        lines += ["## Points that did not complete", ""] + failed + [""]
+    path = out / f"report{BANDS_SUFFIX}.md"
+    with atomic_write(path) as tmp:
+        tmp.write_text("\n".join(lines))
+    return path
+
+
+def _point_walls(datasets) -> dict[str, float]:
+    walls: dict[str, float] = {}
+    for ds in datasets.values():
+        for a, w in zip(np.asarray(ds["archive"].values).ravel(), np.asarray(ds["wall_time"].values).ravel()):
+            if a and a not in walls and np.isfinite(w):
+                walls[str(a)] = float(w)
+    return walls
+
 
 
 def _ours(pt: xr.Dataset) -> str:
@@ -504,7 +983,7 @@ def _poincare(run: xr.Dataset):
 
 
 def cli_main(args) -> int:
-    """``hsbearing study NAME -o DIR [-j N] [--scheduler ADDR] [--duration 0.05s]``.
+    """``hsbearing study NAME -o DIR [--bands | --no-bands] [-j N] [--scheduler ADDR] [--duration 0.05s]``.
 
     Exit 0 when every point completed, 1 when some did not (the report lists
     them), 2 on bad input.
@@ -512,12 +991,14 @@ def cli_main(args) -> int:
     out = Path(args.output)
     if out.exists() and not out.is_dir():
         raise CaseError(str(out), None, "output must be a directory")
-    res = run_study(args.name, out, jobs=args.jobs, scheduler=args.scheduler, duration=args.duration, progress=True)
+    bands = bool(getattr(args, "bands", False))
+    res = run_study(args.name, out, jobs=args.jobs, scheduler=args.scheduler, duration=args.duration, progress=True,
+                    bands=bands)
     n_bad = sum(int((ds["status"] != sweeps.STATUS_OK).sum()) for ds in res["tables"].values())
-    print(f"study {args.name}: {res['n_unique_points']} distinct points, {res['n_computed']} computed, "
-          f"wall time {res['wall_time']:.1f} s ({res['backend']})")
+    print(f"study {args.name}{' (bands)' if bands else ''}: {res['n_unique_points']} distinct points, "
+          f"{res['n_computed']} computed, wall time {res['wall_time']:.1f} s ({res['backend']})")
     for tid in res["tables"]:
-        print(f"table: {out / (tid + '.nc')}")
+        print(f"table: {out / (tid + (BANDS_SUFFIX if bands else '') + '.nc')}")
     print(f"report: {res['report']}")
     if n_bad:
         print(f"hsbearing: {n_bad} table cells did not complete (see the report)", file=sys.stderr)

@@ -169,3 +169,236 @@ def test_study_on_dask_equals_local(tmp_path):
     for v in ("mean_cage_slip_ratio", "classification", "status", "archive", "paper_classification"):
         xr.testing.assert_identical(a[v], b[v])
     assert "execution: dask tcp://127.0.0.1" in (tmp_path / "dask" / "report.md").read_text()
+
+
+# ----------------------------------------------------------------------------- bands (issue 16)
+
+#: REGRESSION (not validation): the band samples of the bundled study as first drawn (seed 16).  The banded
+#: study's point archives are named by these values; if this changes, a banded study on disk is no longer
+#: reused -- change it only on purpose.
+ZHANG_BAND_LHS1 = {"bearing.outer_land_diameter": "52.3094 mm", "cage.guide_land_width": "1.1495 mm",
+                   "cage.pocket_diameter": "9.8057 mm"}
+
+
+def test_band_samples_deterministic_in_range_and_nominal_first():
+    s = study.load_study("zhang2016")
+    a, b = study.band_samples(s), study.band_samples(s)
+    assert a == b  # fixed seed: the same samples every time
+    bands = s.bands
+    assert bands["method"] == "lhs" and bands["include_nominal"] is True
+    assert len(a) == bands["samples"] + 1
+    nom = a[0]
+    assert nom.label == "nominal" and nom.overrides == {}  # the nominal case exactly: its archives are reused
+    base = study.load_case("zhang2016")
+    assert nom.values["bearing.outer_land_diameter"] == base.bearing.outer_land_diameter
+    assert nom.values["cage.pocket_diameter"] == base.cage.pocket_diameter
+    assert nom.values["cage.guide_land_width"] == pytest.approx(1.827e-3, abs=1e-6)  # the geometric default
+    lhs = a[1:]
+    n = len(lhs)
+    for key, (lo_s, hi_s) in bands["keys"].items():
+        lo, hi = (study.parse_quantity(v, "length") for v in (lo_s, hi_s))
+        vals = np.array([smp.values[key] for smp in lhs])
+        assert ((vals >= lo) & (vals <= hi)).all(), key
+        # Latin hypercube: exactly one sample in each of the n equal strata of the range
+        strata = np.floor((vals - lo) / (hi - lo) * n).astype(int)
+        assert sorted(strata) == list(range(n)), (key, strata)
+        # the override string is the value (0.1 um resolution)
+        for smp in lhs:
+            assert study.parse_quantity(smp.overrides[key], "length") == pytest.approx(smp.values[key], abs=1e-12)
+    assert lhs[0].overrides == ZHANG_BAND_LHS1
+    # every sample is a valid case for every table (lands fit beside the groove): run_study checks it first
+    for t in s.tables:
+        for smp in a:
+            study.load_case("zhang2016", **t.get("set", {}), **smp.overrides)
+
+
+def test_latin_hypercube_strata_and_seed():
+    u = study.latin_hypercube(7, 3, seed=1)
+    assert u.shape == (7, 3) and ((u >= 0) & (u < 1)).all()
+    for j in range(3):
+        assert sorted(np.floor(u[:, j] * 7).astype(int)) == list(range(7))
+    np.testing.assert_array_equal(u, study.latin_hypercube(7, 3, seed=1))
+    assert not np.array_equal(u, study.latin_hypercube(7, 3, seed=2))
+
+
+def test_band_cell_stats_fractions_majority_occurrence():
+    ok, bad = "ok", "failed"
+    st = study.band_cell_stats(["1 period", "Chaos", "1 period", "quasi-periodic", "1 period", "chaos"],
+                               [ok, ok, ok, ok, ok, bad], [0.8, 0.5, 0.6, 0.9, 0.7, 0.1],
+                               ["still cage", "", "synchronous whirl", "", "still cage", ""], paper="1 period")
+    assert st["n"] == 6 and st["n_ok"] == 5 and st["n_failed"] == 1  # the failed sample is left out
+    assert st["fractions"] == {"1 period": pytest.approx(0.6), "chaos": pytest.approx(0.2),
+                               "quasi-periodic": pytest.approx(0.2)}
+    assert st["subfractions"]["1 period"] == {"still cage": pytest.approx(0.4), "synchronous whirl": pytest.approx(0.2)}
+    assert st["majority"] == "1 period" and not st["tie"]
+    assert st["agrees"] and st["occurs"] and not st["agrees_tied"]
+    assert st["confidence"] == pytest.approx(0.7)  # mean over the three "1 period" samples
+    # the paper's class occurs but is not the majority
+    st = study.band_cell_stats(["chaos", "chaos", "4 periods"], [ok] * 3, paper="4 periods")
+    assert st["majority"] == "chaos" and not st["agrees"] and st["occurs"]
+    # a tie: not counted as agreement, reported as tied
+    st = study.band_cell_stats(["chaos", "4 periods"], [ok] * 2, [0.4, 0.6], paper="Chaos")
+    assert st["majority"] == "4 periods / chaos" and st["tie"] and not st["agrees"] and st["agrees_tied"]
+    assert st["confidence"] == pytest.approx(0.5)
+    # "undetermined" is an outcome: it can be the majority, then the cell does not agree
+    st = study.band_cell_stats(["undetermined", "undetermined", "1 period"], [ok] * 3, paper="1 period")
+    assert st["majority"] == "undetermined" and not st["agrees"] and st["occurs"]
+    # the paper's class never appears; nothing completed
+    st = study.band_cell_stats(["chaos"], [ok], paper="1 period")
+    assert not st["occurs"] and not st["agrees"]
+    st = study.band_cell_stats(["", ""], [bad, bad], paper="1 period")
+    assert st["n_ok"] == 0 and st["majority"] == "-" and st["fractions"] == {} and not st["occurs"]
+
+
+def banded_fake_dynamics(case, duration):
+    """The synthetic run of :func:`fake_dynamics`, but chaotic when the guide clearance exceeds 0.2 mm, so
+    the class depends on the band sample (the counts below are computed from that rule)."""
+    ds = fake_dynamics(case, duration)
+    if case.bearing.outer_land_diameter > 52.4e-3 + 1e-9:
+        ds.attrs["classification"] = "chaos"
+        ds.attrs["classification_confidence"] = 0.4
+    return ds
+
+
+def _mini_study(tmp_path, samples=2, include_nominal=True, extra=""):
+    p = tmp_path / "mini.toml"
+    p.write_text(f"""
+[study]
+name = "mini"
+case = "zhang2016"
+oils = ["4109", "4106"]
+duration = "3 ms"
+
+[bands]
+method = "lhs"
+seed = 3
+samples = {samples}
+include_nominal = {'true' if include_nominal else 'false'}
+{extra}
+[bands.keys]
+"bearing.outer_land_diameter" = ["52.2 mm", "52.6 mm"]
+"cage.guide_land_width" = ["1.0 mm", "1.7 mm"]
+"cage.pocket_diameter" = ["9.575 mm", "9.825 mm"]
+
+[[table]]
+id = "t5"
+title = "Table 5 (two cells)"
+set = {{ "lubricant.temperature" = "130 degC", "operating.axial_load" = "1000 N" }}
+vary = "operating.radial_load"
+values = ["100 N"]
+
+[table.paper]
+"4109" = ["quasi-periodic"]
+"4106" = ["chaos"]
+""")
+    return p
+
+
+def test_banded_study_reuses_nominal_resumes_and_aggregates(tmp_path):
+    src = _mini_study(tmp_path)
+    out = tmp_path / "out"
+    nominal = study.run_study(src, out, jobs=1, point_fn=banded_fake_dynamics, progress=False)
+    assert nominal["n_computed"] == 2
+    res = study.run_study(src, out, jobs=1, point_fn=banded_fake_dynamics, progress=False, bands=True)
+    # 2 cells x (nominal + 2 samples) = 6 points; the 2 nominal ones come from the nominal study's archives
+    assert res["n_unique_points"] == 6 and res["n_computed"] == 4
+    assert len(list((out / "runs").glob("*.nc"))) == 6
+    ds = res["tables"]["t5"]
+    assert ds["status"].dims == ("sample", "oil", "radial_load") and ds.sizes["sample"] == 3
+    assert list(ds["sample_label"].values) == ["nominal", "lhs1", "lhs2"]
+    assert (ds["archive"].isel(sample=0).values == nominal["tables"]["t5"]["archive"].values).all()
+    samples = res["samples"]
+    np.testing.assert_allclose(ds["band_outer_land_diameter"].values,
+                               [smp.values["bearing.outer_land_diameter"] for smp in samples])
+    on_disk = open_run(out / "t5_bands.nc")
+    assert on_disk["classification"].dims == ("sample", "oil", "radial_load")
+    assert (out / "report.md").exists() and (out / "t5.nc").exists()  # the nominal outputs are kept
+
+    # expected aggregation, from the rule of banded_fake_dynamics and the samples' land diameters
+    n_chaos = sum(smp.values["bearing.outer_land_diameter"] > 52.4e-3 + 1e-9 for smp in samples)
+    assert 0 < n_chaos < 3  # the band straddles the rule (else this test would not test the fractions)
+    text = (out / "report_bands.md").read_text()
+    assert "Not the dynamic model" in text
+    f_chaos = n_chaos / 3
+    maj = {"4109": "chaos" if n_chaos > 1.5 else "quasi-periodic", "4106": "chaos" if n_chaos > 1.5 else "1 period"}
+    other = {"4109": "quasi-periodic", "4106": "1 period"}
+    for oil, paper in (("4109", "quasi-periodic"), ("4106", "chaos")):
+        st = study._cell_stats(ds, "radial_load", oil, 0)
+        assert st["fractions"]["chaos"] == pytest.approx(f_chaos)
+        assert st["fractions"][other[oil]] == pytest.approx(1 - f_chaos)
+        assert st["majority"] == maj[oil] and st["occurs"]
+        assert st["agrees"] == (maj[oil] == paper)
+    n_agree = sum(maj[o] == p for o, p in (("4109", "quasi-periodic"), ("4106", "chaos")))
+    assert f"**Majority agreement: {n_agree} of 2 cells; occurrence: 2 of 2.**" in text
+    assert f"| 100 N | 4106 | chaos | " in text
+    assert "wall time of the banded study" in text and "4000-run map on a 16-core cluster" in text
+    assert "[LEAD: to be filled from the results]" in text
+
+    # resumption: nothing is recomputed, the same table is written
+    again = study.run_study(src, out, jobs=1, point_fn=banded_fake_dynamics, progress=False, bands=True)
+    assert again["n_computed"] == 0
+    xr.testing.assert_equal(again["tables"]["t5"]["classification"], ds["classification"])
+
+
+def test_banded_study_bad_input(tmp_path):
+    with pytest.raises(CaseError, match="bands.seed"):
+        study.load_study(_write(tmp_path, _mini_study(tmp_path).read_text().replace("seed = 3\n", "")))
+    with pytest.raises(CaseError, match="not below high"):
+        study.load_study(_write(tmp_path, _mini_study(tmp_path).read_text().replace('["52.2 mm", "52.6 mm"]',
+                                                                                    '["52.6 mm", "52.2 mm"]')))
+    with pytest.raises(CaseError, match="bands.method"):
+        study.load_study(_write(tmp_path, _mini_study(tmp_path).read_text().replace('"lhs"', '"grid"')))
+    # a sample whose land is wider than the groove leaves: bad input before anything is computed
+    wide = _write(tmp_path, _mini_study(tmp_path).read_text().replace('["1.0 mm", "1.7 mm"]', '["1.9 mm", "2.5 mm"]'))
+    with pytest.raises(CaseError, match="bands.*sample lhs"):
+        study.run_study(wide, tmp_path / "o", jobs=1, point_fn=banded_fake_dynamics, progress=False, bands=True)
+    assert not (tmp_path / "o" / "runs").exists() or not list((tmp_path / "o" / "runs").glob("*.nc"))
+    with pytest.raises(CaseError, match="no \\[bands\\] table"):
+        study.run_study(_write(tmp_path, _mini_study(tmp_path).read_text().split("[bands]")[0]
+                               + "[[table]]" + _mini_study(tmp_path).read_text().split("[[table]]")[1]),
+                        tmp_path / "o2", jobs=1, point_fn=banded_fake_dynamics, progress=False, bands=True)
+
+
+def _write(tmp_path, text, name="variant.toml"):
+    p = tmp_path / name
+    p.write_text(text)
+    return p
+
+
+def test_study_cli_bands_flag(tmp_path, capsys):
+    from hsbearing import cli
+
+    parser = cli.build_parser()
+    assert parser.parse_args(["study", "zhang2016", "-o", "x"]).bands is False  # default: nominal only
+    assert parser.parse_args(["study", "zhang2016", "-o", "x", "--bands"]).bands is True
+    assert parser.parse_args(["study", "zhang2016", "-o", "x", "--no-bands"]).bands is False
+    with pytest.raises(SystemExit) as exc:
+        parser.parse_args(["study", "zhang2016", "-o", "x", "--bands", "--no-bands"])
+    assert exc.value.code == 2
+    # --bands on a study without [bands]: exit 2, nothing computed or written
+    src = _mini_study(tmp_path).read_text()
+    plain = _write(tmp_path, src.split("[bands]")[0] + "[[table]]" + src.split("[[table]]")[1], "plain.toml")
+    assert cli.main(["study", str(plain), "-o", str(tmp_path / "o"), "--bands", "-j", "1"]) == 2
+    assert "no [bands] table" in capsys.readouterr().err
+    assert not list((tmp_path / "o").glob("**/*.nc"))
+
+
+def test_study_cli_bands_runs_the_banded_study(tmp_path, monkeypatch, capsys):
+    """``hsbearing study zhang2016 --bands``: the CLI passes the flag through (synthetic model, Table 5 only)."""
+    from hsbearing import cli
+
+    real = study.run_study
+
+    def table5(name, out_dir, **kw):
+        kw.update(point_fn=banded_fake_dynamics, tables=["table5"], duration="3 ms", progress=False)
+        return real(name, out_dir, **kw)
+
+    monkeypatch.setattr(study, "run_study", table5)
+    assert cli.main(["study", "zhang2016", "-o", str(tmp_path), "-j", "1", "--bands"]) == 0
+    out = capsys.readouterr().out
+    assert "(bands)" in out and f"table: {tmp_path / 'table5_bands.nc'}" in out
+    assert "45 distinct points" in out  # 9 cells x (nominal + 4 LHS samples)
+    ds = open_run(tmp_path / "table5_bands.nc")
+    assert ds.sizes == {"sample": 5, "oil": 3, "radial_load": 3}
+    assert "**Majority agreement:" in (tmp_path / "report_bands.md").read_text()
+    assert not (tmp_path / "report.md").exists()
