@@ -132,6 +132,8 @@ def _add(oil, law, props_oil, eq, tbar_kind, has_wc, fmax, description, s_scale=
         row.extend(c)
     row.extend([s_scale, notch_floor, mu_limit])
     LAWS[(oil, law)] = len(_rows)
+    if mu_limit > 0.0:
+        description += f"; plateau floored at the limiting shear {mu_limit:g} at low rolling speed"
     _DESCRIPTIONS[(oil, law)] = description
     _rows.append(row)
 
