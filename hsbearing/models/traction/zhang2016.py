@@ -225,7 +225,7 @@ def limiting_shear_speed_floor(Ub, Dn, pU, Lambda):
     """Smooth floor of the dimensionless rolling speed at which the fitted plateau reaches the limiting shear [-].
 
     The plateau of Eqs. 2-3 (and of the 4050 analogue) is D_L = Dn Ubar^pU with pU = -0.40 (4109) or -0.53
-    (4106) < 0: extrapolated to Ubar -> 0 it grows without bound (mu = 2.09 at U = 1 mm/s, 4106, 130 degC), far
+    (4106) < 0: extrapolated to Ubar -> 0 it grows without bound (mu = 2.09 at U = 1 mm/s, 4106, 200 N, 130 degC), far
     outside the range of the rig tests the laws were fitted to (which the seed does not state) and above any
     EHL traction.  Physically the mean shear stress of an EHL film cannot exceed its limiting shear stress
     tau_L = Lambda p ([1] Eq. 7, [2]): a traction plateau above Lambda is impossible, whatever the speed
@@ -236,7 +236,8 @@ def limiting_shear_speed_floor(Ub, Dn, pU, Lambda):
     Ubar* being the speed at which the fitted plateau equals Lambda: D_L(Ubar_eff) <= Lambda everywhere, the
     coefficients A_L..D_L freeze at their Ubar* values as U -> 0 (both directions of rolling: the laws see |U|),
     and Ubar_eff is C-infinity in Ubar > 0 (CVODE).  Above Ubar* the change is of order (Ubar*/Ubar)^m / m:
-    < 1e-5 in mu at the default case (16.3 m/s, 130 degC), < 0.2 % at >= 5 m/s and >= 50 N (tested).  Lambda = :data:`LIMITING_SHEAR_COEFFICIENT`.
+    < 1e-5 in mu at the default case (16.3 m/s, 130 degC), < 0.2 % at >= 5 m/s and >= 50 N (tested).
+    Lambda = :data:`LIMITING_SHEAR_COEFFICIENT`.
     Mixed and boundary friction (film parameter < 1, mu_bl ~ 0.1) are not part of this EHL law; the run's
     lambda < 1 warning flags those contacts (docs/life.md, "Warnings").
 
