@@ -398,9 +398,11 @@ def test_level_ratio_quoted_in_docs():
     assert 0.15 < min(ratios) < 0.17 and 0.44 < max(ratios) < 0.46, (min(ratios), max(ratios))
 
 
-def _independent_percent_mu(oil, S, W, U, T_C, E, R, f0=0.25, m=4.0, fmax=3.0, n=8.0):
+def _independent_percent_mu(oil, S, W, U, T_C, E, R, f0=0.25, m=4.0, fmax=3.0, n=8.0, Lam=0.047, mu_=4.0):
     """The "percent" law re-implemented from the CSV: Eqs. 1-3 with S_printed = 100 S, the load factor
-    floored (f^m + f0^m)^(1/m) then saturated f/(1 + (f/fmax)^n)^(1/n)."""
+    floored (f^m + f0^m)^(1/m) then saturated f/(1 + (f/fmax)^n)^(1/n), and the low-speed floor: Ubar raised
+    smoothly, (Ubar^mu_ + Ubar*^mu_)^(1/mu_), to the Ubar* at which D_L = Lam (docs/traction.md, "Low rolling
+    speed"; Lam = 0: no floor)."""
     rows = {r["term"]: r for r in _csv_rows("seed004_traction_coefficients.csv") if r["oil"] == ("4106" if oil == "4050" else oil)}
     o = traction.OILS[oil]
     Wb, Ub = W / (E * R**2), o.eta0 * U / (E * R)
@@ -409,6 +411,11 @@ def _independent_percent_mu(oil, S, W, U, T_C, E, R, f0=0.25, m=4.0, fmax=3.0, n
     f = abs(Wc / Wb - 1.0)
     f = (f**m + f0**m) ** (1.0 / m)
     f = f / (1.0 + (f / fmax) ** n) ** (1.0 / n)
+    if Lam > 0:
+        d = rows["D_L"]
+        Dn = float(d["coef"]) * Wb ** float(d["pW"]) * f * Tb ** float(d["pT"])  # D_L = Dn Ubar^pU
+        Ub_star = (Lam / Dn) ** (1.0 / float(d["pU"]))
+        Ub = (Ub**mu_ + Ub_star**mu_) ** (1.0 / mu_)
     c = {t: float(rows[t]["coef"]) * Wb ** float(rows[t]["pW"]) * f * Ub ** float(rows[t]["pU"]) * Tb ** float(rows[t]["pT"])
          for t in ("A_L", "B_L", "C_L", "D_L")}
     Sp = 100.0 * S

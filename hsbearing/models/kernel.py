@@ -38,7 +38,7 @@ def _invalidate_stale_cache() -> None:
     """
     here = Path(__file__).resolve().parent
     deps = [here / f for f in ("ball.py", "cage.py", "ring.py", "drag.py", "power.py", "pocket.py", "kernel.py")]
-    deps.append(here / "traction" / "zhang2016.py")
+    deps += [here / "traction" / f for f in ("zhang2016.py", "_kernels.py", "eyring_limit.py")]  # law, its kernel, Lambda
     h = hashlib.sha1()
     for f in deps:
         try:

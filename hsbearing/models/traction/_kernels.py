@@ -17,6 +17,7 @@ from hsbearing.models.traction.zhang2016 import (
     NOTCH_SHARPNESS,
     PARAMS,
     S_EPS,
+    SPEED_FLOOR_SHARPNESS,
     T_FLOOR_C,
     U_FLOOR,
     W_FLOOR,
@@ -56,6 +57,14 @@ def coefficients_nb(law_id, W, U, T_K, E, R):
                 f = fmax
             else:
                 f = f / (1.0 + r**LOAD_FACTOR_SHARPNESS) ** (1.0 / LOAD_FACTOR_SHARPNESS)
+    lam = p[27]
+    if lam > 0.0:  # low-speed floor at the limiting shear (zhang2016.limiting_shear_speed_floor)
+        Dn = abs(p[21]) * f * math.exp(p[22] * math.log(Wb) + p[24] * math.log(Tb))
+        if Dn > 0.0:
+            m = SPEED_FLOOR_SHARPNESS
+            Ub_star = math.exp(math.log(lam / Dn) / p[23])
+            hi, lo = max(Ub, Ub_star), min(Ub, Ub_star)
+            Ub = hi * (1.0 + (lo / hi) ** m) ** (1.0 / m)  # (Ub^m + Ub*^m)^(1/m) without over/underflow
     lW, lU, lT = math.log(Wb), math.log(Ub), math.log(Tb)
     A = p[9] * f * math.exp(p[10] * lW + p[11] * lU + p[12] * lT)
     B = p[13] * f * math.exp(p[14] * lW + p[15] * lU + p[16] * lT)

@@ -21,6 +21,11 @@ on oil 4050 are argued with evidence in ``docs/traction.md``; in short:
   documented fallback ``analogue_4106``: the form and coefficients of Eq. 3
   evaluated with 4050's own Table 1 properties (eta0, beta, K), bounded as
   above.  ``law="printed"`` keeps Eq. 4 for comparison.
+* every law except "printed" is bounded at low rolling speed by
+  :func:`limiting_shear_speed_floor`: the fitted power laws in Ubar (exponents
+  -0.2 to -0.66) are not extrapolated below the speed at which their plateau
+  D_L reaches the limiting-shear-stress coefficient of an EHL film
+  (docs/traction.md, "Low rolling speed").
 
 Sign convention: the seed's S >= 0.  Here mu is extended as an odd function
 of the signed slide-roll ratio, mu(-S) = -mu(S), so the traction opposes the
@@ -43,6 +48,8 @@ import math
 
 import numpy as np
 
+from hsbearing.models.traction.eyring_limit import LAMBDA_BRACKET
+
 __all__ = [
     "LAWS",
     "DEFAULT_LAW",
@@ -51,7 +58,9 @@ __all__ = [
     "LOAD_FACTOR_MAX",
     "NOTCH_FLOOR",
     "PERCENT",
+    "LIMITING_SHEAR_COEFFICIENT",
     "notch_floor",
+    "limiting_shear_speed_floor",
     "coefficients",
     "dimensionless_groups",
     "traction_coefficient",
@@ -71,6 +80,12 @@ LOAD_FACTOR_SHARPNESS = 8.0
 NOTCH_FLOOR = 0.25
 #: Exponent m of the smooth floor [-].
 NOTCH_SHARPNESS = 4.0
+#: Limiting-shear-stress coefficient Lambda = tau_L / p that bounds the plateau D_L of every non-printed law at low
+#: rolling speed [-]: the upper end of the bracket of :data:`eyring_limit.LAMBDA_BRACKET` (Hoeglund's paraffinic
+#: mineral oil M100, Arana et al. 2019 Table 2; an ester lies below it, docs/traction.md).
+LIMITING_SHEAR_COEFFICIENT = LAMBDA_BRACKET[1]
+#: Exponent m of the smooth speed floor Ubar_eff = (Ubar^m + Ubar*^m)^(1/m) [-].
+SPEED_FLOOR_SHARPNESS = 4.0
 #: Slide-roll ratio scale of the "percent" readings: the printed S is read in percent, S_printed = 100 S [-].
 PERCENT = 100.0
 #: Floors that keep the kernels finite (W = 0, U = 0, T <= 0 degC) [N], [m/s], [degC].
@@ -108,22 +123,25 @@ _DESCRIPTIONS: dict[tuple[str, str], str] = {}
 _rows = []
 
 
-def _add(oil, law, props_oil, eq, tbar_kind, has_wc, fmax, description, s_scale=1.0, notch_floor=0.0):
+def _add(oil, law, props_oil, eq, tbar_kind, has_wc, fmax, description, s_scale=1.0, notch_floor=0.0,
+         mu_limit=LIMITING_SHEAR_COEFFICIENT):
     eta0, beta, K = _OIL[props_oil]
     (c2, c1, c0), coefs = eq
     row = [eta0, beta, K, float(tbar_kind), float(has_wc), c2, c1, c0, fmax]
     for c in coefs:
         row.extend(c)
-    row.extend([s_scale, notch_floor])
+    row.extend([s_scale, notch_floor, mu_limit])
     LAWS[(oil, law)] = len(_rows)
+    if mu_limit > 0.0:
+        description += f"; plateau floored at the limiting shear {mu_limit:g} at low rolling speed"
     _DESCRIPTIONS[(oil, law)] = description
     _rows.append(row)
 
 
-_add("4109", "printed", "4109", _EQ2, TBAR_SQRT, 1, 0.0, "seed 004 Eq. 2 as printed")
-_add("4106", "printed", "4106", _EQ3, TBAR_SQRT, 1, 0.0, "seed 004 Eq. 3 as printed")
+_add("4109", "printed", "4109", _EQ2, TBAR_SQRT, 1, 0.0, "seed 004 Eq. 2 as printed", mu_limit=0.0)
+_add("4106", "printed", "4106", _EQ3, TBAR_SQRT, 1, 0.0, "seed 004 Eq. 3 as printed", mu_limit=0.0)
 _add("4050", "printed", "4050", _EQ4, TBAR_BRINKMAN, 0, 0.0,
-     "seed 004 Eq. 4 as printed (NOT a traction curve: C_L ~ 1e-26, mu grows linearly with S)")
+     "seed 004 Eq. 4 as printed (NOT a traction curve: C_L ~ 1e-26, mu grows linearly with S)", mu_limit=0.0)
 _add("4109", "bounded", "4109", _EQ2, TBAR_SQRT, 1, LOAD_FACTOR_MAX,
      "Eq. 2 with the load factor |Wc/W-1| smoothly saturated at 3 (W << Wc only)")
 _add("4106", "bounded", "4106", _EQ3, TBAR_SQRT, 1, LOAD_FACTOR_MAX,
@@ -142,7 +160,8 @@ _add("4050", "analogue_4106_percent", "4050", _EQ3, TBAR_SQRT, 1, LOAD_FACTOR_MA
 
 #: Constants of every law, one row per law id: eta0, beta, K, tbar_kind, has_wc, c2, c1, c0,
 #: f_max (0 = printed, no saturation), then (coef, pW, pU, pT) for A_L, B_L, C_L, D_L (columns 9-24),
-#: then s_scale (25: 1 = S a fraction, 100 = S in percent) and the notch floor f_0 (26: 0 = none).
+#: then s_scale (25: 1 = S a fraction, 100 = S in percent), the notch floor f_0 (26: 0 = none) and the
+#: limiting-shear coefficient of the low-speed floor (27: 0 = none, the printed laws).
 PARAMS = np.array(_rows, dtype=float)
 PARAMS.setflags(write=False)
 
@@ -202,6 +221,48 @@ def notch_floor(f, f0):
     return (f**m + f0**m) ** (1.0 / m)
 
 
+def limiting_shear_speed_floor(Ub, Dn, pU, Lambda):
+    """Smooth floor of the dimensionless rolling speed at which the fitted plateau reaches the limiting shear [-].
+
+    The plateau of Eqs. 2-3 (and of the 4050 analogue) is D_L = Dn Ubar^pU with pU = -0.40 (4109) or -0.53
+    (4106) < 0: extrapolated to Ubar -> 0 it grows without bound (mu = 2.09 at U = 1 mm/s, 4106, 200 N, 130 degC), far
+    outside the range of the rig tests the laws were fitted to (which the seed does not state) and above any
+    EHL traction.  Physically the mean shear stress of an EHL film cannot exceed its limiting shear stress
+    tau_L = Lambda p ([1] Eq. 7, [2]): a traction plateau above Lambda is impossible, whatever the speed
+    (slower rolling only removes the shear heating that lowers mu below Lambda).  So the laws are evaluated at
+
+        Ubar_eff = (Ubar^m + Ubar*^m)^(1/m),   Ubar* = (Lambda / Dn)^(1/pU),   m = SPEED_FLOOR_SHARPNESS,
+
+    Ubar* being the speed at which the fitted plateau equals Lambda: D_L(Ubar_eff) <= Lambda everywhere, the
+    coefficients A_L..D_L freeze at their Ubar* values as U -> 0 (both directions of rolling: the laws see |U|),
+    and Ubar_eff is C-infinity in Ubar > 0 (CVODE).  Above Ubar* the change is of order (Ubar*/Ubar)^m / m:
+    < 1e-5 in mu at the default case (16.3 m/s, 130 degC), < 0.2 % at >= 5 m/s and >= 50 N (tested).
+    Lambda = :data:`LIMITING_SHEAR_COEFFICIENT`.
+    Mixed and boundary friction (film parameter < 1, mu_bl ~ 0.1) are not part of this EHL law; the run's
+    lambda < 1 warning flags those contacts (docs/life.md, "Warnings").
+
+    Parameters
+    ----------
+    Ub : dimensionless rolling speed eta0 U / (E' R) [-] (> 0)
+    Dn : |D_L| / Ubar^pU, the speed-independent part of the plateau (load factor included) [-]
+    pU : Ubar exponent of D_L [-] (< 0)
+    Lambda : limiting-shear-stress coefficient [-] (<= 0: no floor, Ub returned)
+
+    References
+    ----------
+    [1] Arana A., Larrañaga J., Ulacia I., Proc. IMechE Part J 233(2) (2019) 303-316, Eq. (7) and Table 2.
+    [2] Bair S., Winer W. O., J. Lubr. Technol. 101 (1979) 258-265 (limiting shear stress tau_L = Lambda p).
+    """
+    if Lambda <= 0.0:
+        return Ub
+    Dn = np.asarray(Dn, dtype=float)
+    with np.errstate(divide="ignore"):
+        Ub_star = np.where(Dn > 0.0, (Lambda / np.where(Dn > 0.0, Dn, 1.0)) ** (1.0 / pU), 0.0)
+    m = SPEED_FLOOR_SHARPNESS
+    hi, lo = np.maximum(Ub, Ub_star), np.minimum(Ub, Ub_star)
+    return hi * (1.0 + (lo / hi) ** m) ** (1.0 / m)  # = (Ub^m + Ub*^m)^(1/m), without over/underflow
+
+
 def _saturate(f, fmax):
     """Smooth saturation f / (1 + (f/f_max)^n)^(1/n) (identity if f_max == 0)."""
     if fmax <= 0.0:
@@ -234,6 +295,8 @@ def coefficients(law_id: int, W, U, T_K, E, R):
         f = _saturate(notch_floor(np.abs(Wc / Wb - 1.0), p[26]), p[8])  # [1], Eqs. 2-3: |Wc/W - 1|
     else:
         f = 1.0
+    if p[27] > 0.0:  # low-speed floor at the limiting shear (limiting_shear_speed_floor)
+        Ub = limiting_shear_speed_floor(Ub, abs(p[21]) * f * Wb ** p[22] * Tb ** p[24], p[23], p[27])
     out = []
     for j in range(4):
         a, pW, pU, pT = p[9 + 4 * j: 13 + 4 * j]
