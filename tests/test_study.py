@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import csv
 import math
+import re
 from pathlib import Path
 
 import numpy as np
@@ -334,6 +335,15 @@ def test_banded_study_reuses_nominal_resumes_and_aggregates(tmp_path):
     assert f"**Majority agreement: {n_agree} of 2 cells; occurrence: 2 of 2.**" in text
     assert f"| 100 N | 4106 | chaos | " in text
     assert "wall time of the banded study" in text and "4000-run map on a 16-core cluster" in text
+    nominal_wall = float(re.search(r"wall time of the whole study \(this invocation\): ([0-9.]+) s",
+                                   (out / "report.md").read_text()).group(1))
+    whole = float(re.search(r"whole study = nominal \+ banded invocations: ([0-9.]+) s", text).group(1))
+    banded_wall = float(re.search(r"wall time of the banded study \(this invocation\): ([0-9.]+) s", text).group(1))
+    assert whole == pytest.approx(nominal_wall + banded_wall, abs=0.11)  # printed to 0.1 s
+    walls = np.unique(ds["wall_time"].values.ravel())
+    mean_w = float(re.search(r"mean per point ([0-9.e+-]+) s", text).group(1))
+    assert mean_w == pytest.approx(np.mean(ds["wall_time"].values), rel=0.01)  # 6 distinct points, 3 sig. digits
+    assert len(walls) == 6
     assert "[LEAD: to be filled from the results]" in text
     for png in ("cells_bands_t5.png", "slip_bands_t5.png"):
         assert (out / "figures" / png).stat().st_size > 1000 and f"figures/{png}" in text
