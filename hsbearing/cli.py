@@ -450,6 +450,9 @@ def build_parser() -> argparse.ArgumentParser:
                           "nominal points already in DIR/runs")
     grp.add_argument("--no-bands", dest="bands", action="store_false",
                      help="the nominal case only, one run per cell (default): DIR/<table>.nc, DIR/report.md")
+    sp.add_argument("--band-samples", type=int, default=None, metavar="K",
+                    help="with --bands: run only the first K band samples (the nominal one first); the others "
+                         "resume later from the same DIR")
     sp.add_argument("--no-figure", "--no-plot", dest="no_figure", action="store_true",
                     help="do not draw DIR/<table>.png (summary figure of each table)")
     sp.set_defaults(func=cmd_study)

@@ -375,6 +375,7 @@ def run_study(
     point_fn: Callable | None = None,
     tables: list[str] | None = None,
     bands: bool = False,
+    band_samples_limit: int | None = None,
 ) -> dict[str, Any]:
     """Run a study; returns ``{"tables": {id: Dataset}, "report": Path, "wall_time": s, ...}``.
 
@@ -382,7 +383,11 @@ def run_study(
     ``point_fn`` replaces the dynamic model (tests, dry runs) and is named in
     the report; ``tables`` restricts to some table ids; ``bands`` runs every
     cell over the samples of ``[bands]`` (:func:`band_samples`) and writes
-    ``DIR/<table>_bands.nc`` and ``DIR/report_bands.md`` instead.
+    ``DIR/<table>_bands.nc`` and ``DIR/report_bands.md`` instead;
+    ``band_samples_limit`` K runs only the first K samples (the nominal one and
+    the first K-1 Latin-hypercube points: same archives, so a later run with
+    all samples resumes them; a prefix of a Latin hypercube is not stratified,
+    and the report says so).
     """
     study = load_study(name)
     out = Path(out_dir)
@@ -395,7 +400,7 @@ def run_study(
         raise CaseError(study.source_path, "table", f"no table selected (have: {', '.join(t['id'] for t in study.tables)})")
     if bands:
         return _run_banded(study, chosen, out, dur, jobs=jobs, scheduler=scheduler, progress=progress,
-                           point_fn=point_fn)
+                           point_fn=point_fn, limit=band_samples_limit)
     plans = []
     for t in chosen:
         base = load_case(study.spec["study"]["case"], **t.get("set", {}))
@@ -434,11 +439,15 @@ def run_study(
 
 
 
-def _run_banded(study: Study, chosen: list[dict], out: Path, dur, *, jobs, scheduler, progress, point_fn) -> dict[str, Any]:
+def _run_banded(study: Study, chosen: list[dict], out: Path, dur, *, jobs, scheduler, progress, point_fn,
+                limit: int | None = None) -> dict[str, Any]:
     """cells x band samples in one pass (one progress bar over all points); see :func:`run_study`."""
     from hsbearing.models.geometry import GuideLandError, guide_lands
 
-    samples = band_samples(study)
+    all_samples = band_samples(study)
+    if limit is not None and not (isinstance(limit, int) and 1 <= limit):
+        raise CaseError("--band-samples", None, f"must be a positive integer, got {limit!r}")
+    samples = all_samples[:limit] if limit else all_samples
     plans: dict[tuple[str, int], sweeps.SweepPlan] = {}
     for t in chosen:
         for smp in samples:
@@ -512,6 +521,7 @@ def _run_banded(study: Study, chosen: list[dict], out: Path, dur, *, jobs, sched
             "n_computed": len({r.get("archive") or id(r) for rs in records for r in rs
                                if not r.get("resumed") and r.get("status") != "invalid"}),
             "samples": samples,
+            "n_band_samples": len(all_samples),
         }
         report = write_band_report(study, datasets, out, info)
     return {"tables": datasets, "report": report, **info}
@@ -736,6 +746,11 @@ def write_band_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, 
               + (" plus the nominal case (sample 0)" if b.get("include_nominal", True) else "")
               + "; the same samples in every cell (common random numbers). Ranges and their justification: "
                 f"`hsbearing/studies/{study.name}.toml` and docs/validation/{study.name}.md.", ""]
+    if len(samples) < info.get("n_band_samples", len(samples)):
+        lines += [f"> **Only the first {len(samples)} of the {info['n_band_samples']} band samples were run** "
+                  "(`--band-samples`): a prefix of a Latin hypercube is not stratified, so the fractions below are "
+                  "over a random, not a Latin-hypercube, sample of the band. The other samples resume later with the "
+                  "same archives.", ""]
     base = load_case(st["case"])
     hdr = ["sample"] + [f"`{k}` [mm]" for k in b["keys"]]
     derived = []
@@ -1307,8 +1322,11 @@ def cli_main(args) -> int:
     if out.exists() and not out.is_dir():
         raise CaseError(str(out), None, "output must be a directory")
     bands = bool(getattr(args, "bands", False))
+    limit = getattr(args, "band_samples", None)
+    if limit is not None and not bands:
+        raise CaseError("--band-samples", None, "only with --bands")
     res = run_study(args.name, out, jobs=args.jobs, scheduler=args.scheduler, duration=args.duration, progress=True,
-                    bands=bands)
+                    bands=bands, band_samples_limit=limit)
     n_bad = sum(int((ds["status"] != sweeps.STATUS_OK).sum()) for ds in res["tables"].values())
     print(f"study {args.name}{' (bands)' if bands else ''}: {res['n_unique_points']} distinct points, "
           f"{res['n_computed']} computed, wall time {res['wall_time']:.1f} s ({res['backend']})")

@@ -460,3 +460,21 @@ def test_derive_table6_by_the_stated_rule():
                           "c": {"t": "-"}}
     lines = study._table6_lines(st, {"t": ds})
     assert "| a | light load | heavy load (3 N) |" in lines
+
+
+def test_band_samples_limit_runs_a_prefix_and_the_rest_resumes(tmp_path):
+    src = _mini_study(tmp_path, samples=3)
+    out = tmp_path / "out"
+    part = study.run_study(src, out, jobs=1, point_fn=banded_fake_dynamics, progress=False, bands=True,
+                           band_samples_limit=2)
+    assert part["n_computed"] == 4 and part["tables"]["t5"].sizes["sample"] == 2
+    assert "Only the first 2 of the 4 band samples were run" in (out / "report_bands.md").read_text()
+    full = study.run_study(src, out, jobs=1, point_fn=banded_fake_dynamics, progress=False, bands=True)
+    assert full["n_computed"] == 4 and full["n_unique_points"] == 8  # the first two samples were resumed
+    assert "Only the first" not in (out / "report_bands.md").read_text()
+    with pytest.raises(CaseError, match="--band-samples"):
+        study.run_study(src, out, jobs=1, point_fn=banded_fake_dynamics, progress=False, bands=True,
+                        band_samples_limit=0)
+    from hsbearing import cli
+
+    assert cli.main(["study", str(src), "-o", str(tmp_path / "o3"), "--band-samples", "2"]) == 2  # needs --bands
