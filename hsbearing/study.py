@@ -988,11 +988,16 @@ def _plot_gallery(study: Study, t: dict, ds: xr.Dataset, root: Path, path: Path)
     if not drawn:
         plt.close(fig)
         return None
-    fig.suptitle(f"{t.get('title', t['id'])}: every cell -- whirl orbit (grey: transient, red dashed: guide "
-                 "clearance) over its Poincare map (once per cage revolution)", fontsize=7)
-    # fixed margins: tight_layout costs seconds with ~70 axes
-    height = fig.get_figheight()
-    fig.subplots_adjust(left=0.06, right=0.99, bottom=0.4 / height, top=1 - 0.75 / height, hspace=0.62, wspace=0.42)
+    import textwrap
+
+    width, height = fig.get_figwidth(), fig.get_figheight()
+    title = textwrap.fill(f"{t.get('title', t['id'])}: every cell -- whirl orbit (grey: transient, red dashed: guide "
+                          "clearance) over its Poincare map (once per cage revolution)", width=int(width * 15))
+    fig.suptitle(title, fontsize=7)
+    # fixed margins in inches (tight_layout costs seconds with ~70 axes)
+    n_title = title.count("\n") + 1
+    fig.subplots_adjust(left=0.5 / width, right=1 - 0.08 / width, bottom=0.4 / height,
+                        top=1 - (0.6 + 0.13 * n_title) / height, hspace=0.62, wspace=0.42)
     try:
         return _save(fig, path)
     finally:
