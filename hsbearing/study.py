@@ -1318,7 +1318,8 @@ def _poincare(run: xr.Dataset):
 
 
 def cli_main(args) -> int:
-    """``hsbearing study NAME -o DIR [--bands | --no-bands] [-j N] [--scheduler ADDR] [--duration 0.05s]``.
+    """``hsbearing study NAME -o DIR [--bands [--band-samples K] | --no-bands] [--table ID ...] [-j N]
+    [--scheduler ADDR] [--duration 0.05s]``.
 
     Exit 0 when every point completed, 1 when some did not (the report lists
     them), 2 on bad input.
@@ -1331,7 +1332,7 @@ def cli_main(args) -> int:
     if limit is not None and not bands:
         raise CaseError("--band-samples", None, "only with --bands")
     res = run_study(args.name, out, jobs=args.jobs, scheduler=args.scheduler, duration=args.duration, progress=True,
-                    bands=bands, band_samples_limit=limit)
+                    bands=bands, band_samples_limit=limit, tables=getattr(args, "tables", None))
     n_bad = sum(int((ds["status"] != sweeps.STATUS_OK).sum()) for ds in res["tables"].values())
     print(f"study {args.name}{' (bands)' if bands else ''}: {res['n_unique_points']} distinct points, "
           f"{res['n_computed']} computed, wall time {res['wall_time']:.1f} s ({res['backend']})")

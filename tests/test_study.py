@@ -386,6 +386,8 @@ def test_study_cli_bands_flag(tmp_path, capsys):
     assert parser.parse_args(["study", "zhang2016", "-o", "x"]).bands is False  # default: nominal only
     assert parser.parse_args(["study", "zhang2016", "-o", "x", "--bands"]).bands is True
     assert parser.parse_args(["study", "zhang2016", "-o", "x", "--no-bands"]).bands is False
+    assert parser.parse_args(["study", "zhang2016", "-o", "x", "--table", "table3", "--table", "table5"]).tables == [
+        "table3", "table5"]
     with pytest.raises(SystemExit) as exc:
         parser.parse_args(["study", "zhang2016", "-o", "x", "--bands", "--no-bands"])
     assert exc.value.code == 2
@@ -478,3 +480,5 @@ def test_band_samples_limit_runs_a_prefix_and_the_rest_resumes(tmp_path):
     from hsbearing import cli
 
     assert cli.main(["study", str(src), "-o", str(tmp_path / "o3"), "--band-samples", "2"]) == 2  # needs --bands
+    assert cli.main(["study", str(src), "-o", str(tmp_path / "o4"), "--table", "t9"]) == 2  # unknown table
+    assert not list((tmp_path / "o4").glob("**/*.nc"))
