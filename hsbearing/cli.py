@@ -308,6 +308,8 @@ def cmd_study(args) -> int:
     if not getattr(args, "no_figure", False) and not getattr(args, "bands", False):  # banded tables: report figures
         out = Path(args.output)
         for t in study.load_study(args.name).tables:
+            if getattr(args, "tables", None) and t["id"] not in args.tables:
+                continue
             _summary_figure(out / f"{t['id']}.nc", out / f"{t['id']}.png")
     return rc
 
@@ -461,6 +463,11 @@ def build_parser() -> argparse.ArgumentParser:
                           "nominal points already in DIR/runs")
     grp.add_argument("--no-bands", dest="bands", action="store_false",
                      help="the nominal case only, one run per cell (default): DIR/<table>.nc, DIR/report.md")
+    sp.add_argument("--table", dest="tables", action="append", default=None, metavar="ID",
+                    help="run only this table of the study (repeatable, e.g. --table table3 --table table5)")
+    sp.add_argument("--band-samples", type=int, default=None, metavar="K",
+                    help="with --bands: run only the first K band samples (the nominal one first); the others "
+                         "resume later from the same DIR")
     sp.add_argument("--no-figure", "--no-plot", dest="no_figure", action="store_true",
                     help="do not draw DIR/<table>.png (summary figure of each table)")
     sp.set_defaults(func=cmd_study)

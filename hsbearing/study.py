@@ -55,7 +55,8 @@ from hsbearing.results import open_run, write_netcdf, atomic_write, register
 from hsbearing import sweeps
 
 __all__ = ["list_studies", "study_help", "load_study", "run_study", "normalise_label", "write_report", "cli_main",
-           "BandSample", "band_samples", "latin_hypercube", "band_cell_stats", "write_band_report"]
+           "BandSample", "band_samples", "latin_hypercube", "band_cell_stats", "write_band_report",
+           "stability_rank", "derive_table6", "TABLE6_RULE"]
 
 RUNS = "runs"
 FIGURES = "figures"
@@ -177,6 +178,12 @@ def load_study(name_or_path: str | os.PathLike) -> Study:
                 raise CaseError(src, f"figure[{i}].cells", f"unknown cell {cell!r}")
     if "bands" in spec:
         _check_bands(spec["bands"], src)
+    for oil, row in spec.get("table6", {}).items():
+        if oil not in oils:
+            raise CaseError(src, f"table6.{oil}", f"oil not in study.oils {oils}")
+        for tid in row:
+            if tid not in ids:
+                raise CaseError(src, f"table6.{oil}.{tid}", f"unknown table (have: {', '.join(sorted(ids))})")
     return Study(spec["study"].get("name", p.stem), src, spec)
 
 
@@ -368,6 +375,7 @@ def run_study(
     point_fn: Callable | None = None,
     tables: list[str] | None = None,
     bands: bool = False,
+    band_samples_limit: int | None = None,
 ) -> dict[str, Any]:
     """Run a study; returns ``{"tables": {id: Dataset}, "report": Path, "wall_time": s, ...}``.
 
@@ -375,7 +383,11 @@ def run_study(
     ``point_fn`` replaces the dynamic model (tests, dry runs) and is named in
     the report; ``tables`` restricts to some table ids; ``bands`` runs every
     cell over the samples of ``[bands]`` (:func:`band_samples`) and writes
-    ``DIR/<table>_bands.nc`` and ``DIR/report_bands.md`` instead.
+    ``DIR/<table>_bands.nc`` and ``DIR/report_bands.md`` instead;
+    ``band_samples_limit`` K runs only the first K samples (the nominal one and
+    the first K-1 Latin-hypercube points: same archives, so a later run with
+    all samples resumes them; a prefix of a Latin hypercube is not stratified,
+    and the report says so).
     """
     study = load_study(name)
     out = Path(out_dir)
@@ -388,7 +400,7 @@ def run_study(
         raise CaseError(study.source_path, "table", f"no table selected (have: {', '.join(t['id'] for t in study.tables)})")
     if bands:
         return _run_banded(study, chosen, out, dur, jobs=jobs, scheduler=scheduler, progress=progress,
-                           point_fn=point_fn)
+                           point_fn=point_fn, limit=band_samples_limit)
     plans = []
     for t in chosen:
         base = load_case(study.spec["study"]["case"], **t.get("set", {}))
@@ -427,11 +439,15 @@ def run_study(
 
 
 
-def _run_banded(study: Study, chosen: list[dict], out: Path, dur, *, jobs, scheduler, progress, point_fn) -> dict[str, Any]:
+def _run_banded(study: Study, chosen: list[dict], out: Path, dur, *, jobs, scheduler, progress, point_fn,
+                limit: int | None = None) -> dict[str, Any]:
     """cells x band samples in one pass (one progress bar over all points); see :func:`run_study`."""
     from hsbearing.models.geometry import GuideLandError, guide_lands
 
-    samples = band_samples(study)
+    all_samples = band_samples(study)
+    if limit is not None and not (isinstance(limit, int) and 1 <= limit):
+        raise CaseError("--band-samples", None, f"must be a positive integer, got {limit!r}")
+    samples = all_samples[:limit] if limit else all_samples
     plans: dict[tuple[str, int], sweeps.SweepPlan] = {}
     for t in chosen:
         for smp in samples:
@@ -505,6 +521,7 @@ def _run_banded(study: Study, chosen: list[dict], out: Path, dur, *, jobs, sched
             "n_computed": len({r.get("archive") or id(r) for rs in records for r in rs
                                if not r.get("resumed") and r.get("status") != "invalid"}),
             "samples": samples,
+            "n_band_samples": len(all_samples),
         }
         report = write_band_report(study, datasets, out, info)
     return {"tables": datasets, "report": report, **info}
@@ -621,6 +638,15 @@ def write_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, info:
             figs.append(f"### {f.get('title', f['id'])}\n\n![{f['id']}]({FIGURES}/{png.name})\n")
     if figs:
         lines += ["## Whirl orbits and Poincare maps of representative cells", ""] + figs
+    gal = []
+    for t in study.tables:
+        if t["id"] in datasets:
+            png = _plot_gallery(study, t, datasets[t["id"]], out, figdir / f"cells_{t['id']}.png")
+            if png:
+                gal.append(f"![every cell of {t['id']}]({FIGURES}/{png.name})\n")
+    if gal:
+        lines += ["## Every cell: whirl orbit and Poincare map", ""] + gal
+    lines += _table6_lines(study, datasets)
     failed = [(tid, ds) for tid, ds in datasets.items() if (ds["status"] != sweeps.STATUS_OK).any()]
     if failed:
         lines += ["## Points that did not complete", ""]
@@ -708,8 +734,7 @@ def write_band_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, 
               f"- **wall time of the banded study (this invocation): {info['wall_time']:.1f} s**",
               f"- sum of the per-point wall times (all {n_pts} distinct points, resumed ones as recorded in their "
               f"archives): {sum(walls.values()):.1f} s; mean per point {_fmt(mean_w, '.3g')} s",
-              f"- wall time of the nominal study alone: see `report.md` of `hsbearing study {study.name}` "
-              "(same directory)",
+              _nominal_wall_line(out, info["wall_time"], study.name),
               f"- **projection: a 4000-run map on a 16-core cluster** = 4000 x {_fmt(mean_w, '.3g')} s / 16 = "
               f"{_fmt(4000 * mean_w / 16 / 60, '.3g')} min (the measured mean point wall time at this duration, one "
               "point per core, no scheduling overhead; the per-point time here was measured with "
@@ -721,6 +746,11 @@ def write_band_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, 
               + (" plus the nominal case (sample 0)" if b.get("include_nominal", True) else "")
               + "; the same samples in every cell (common random numbers). Ranges and their justification: "
                 f"`hsbearing/studies/{study.name}.toml` and docs/validation/{study.name}.md.", ""]
+    if len(samples) < info.get("n_band_samples", len(samples)):
+        lines += [f"> **Only the first {len(samples)} of the {info['n_band_samples']} band samples were run** "
+                  "(`--band-samples`): a prefix of a Latin hypercube is not stratified, so the fractions below are "
+                  "over a random, not a Latin-hypercube, sample of the band. The other samples resume later with the "
+                  "same archives.", ""]
     base = load_case(st["case"])
     hdr = ["sample"] + [f"`{k}` [mm]" for k in b["keys"]]
     derived = []
@@ -771,6 +801,31 @@ def write_band_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, 
         all_stats += tstats
         lines += ["", f"{t['id']}: the paper's class is the majority in **{c['agrees']} of {c['evaluated']}** cells "
                       f"(+{c['tied']} tied), occurs in **{c['occurs']} of {c['evaluated']}**.", ""]
+        if "mean_cage_slip_ratio" in ds:
+            lines += [f"Cage slip ratio [%] (time mean after the transient): nominal sample and the range over the "
+                      f"band -- compare {t.get('slip_figure', 'the paper')}:", "",
+                      f"| {t.get('axis_label', dim)} | " + " | ".join(study.oils) + " |",
+                      "|" + "---|" * (1 + len(study.oils))]
+            labels = list(ds["sample_label"].values)
+            for i in range(ds.sizes[dim]):
+                row = [_value_label(ds, dim, i)]
+                for o in study.oils:
+                    cell = ds.sel(oil=o).isel({dim: i})
+                    v = np.asarray(cell["mean_cage_slip_ratio"].values, float) * 100
+                    v = np.where(np.asarray(cell["status"].values) == sweeps.STATUS_OK, v, np.nan)
+                    nom = v[labels.index("nominal")] if "nominal" in labels else float("nan")
+                    fin = v[np.isfinite(v)]
+                    row.append(f"{_fmt(nom, '.2f')} [{_fmt(fin.min(), '.2f')}, {_fmt(fin.max(), '.2f')}]"
+                               if fin.size else "-")
+                lines.append("| " + " | ".join(row) + " |")
+            png = _plot_slip_band(ds, t, study.oils, figdir / f"slip_bands_{t['id']}.png")
+            if png:
+                lines += ["", f"![cage slip ratio over the band, {t['id']}]({FIGURES}/{png.name})"]
+            lines.append("")
+        png = _plot_gallery(study, t, ds, out, figdir / f"cells_bands_{t['id']}.png")
+        if png:
+            lines += ["Every cell (one sample each: the nominal one when it is in the majority class):", "",
+                      f"![every cell of {t['id']} over the band]({FIGURES}/{png.name})", ""]
     # -- counts
     tot = _band_counts(all_stats)
     lines += ["## Agreement over the band", "",
@@ -786,6 +841,7 @@ def write_band_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, 
               "(land-film sign, guide lands from the geometry, oil laws; docs/validation/cage_whirl.md), the "
               "classifier's sub-labels (still cage / synchronous whirl under \"1 period\"), and what the band "
               "changes: cells whose class depends on the unknown clearances.", ""]
+    lines += _table6_lines(study, datasets)
     failed = []
     for tid, ds in datasets.items():
         for idx in np.ndindex(*ds["status"].shape):
@@ -801,6 +857,20 @@ def write_band_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, 
     return path
 
 
+def _nominal_wall_line(out: Path, banded_wall: float, name: str) -> str:
+    """The nominal study's wall time as its ``report.md`` in the same directory states it, and the sum."""
+    import re
+
+    rep = out / "report.md"
+    m = re.search(r"wall time of the whole study \(this invocation\): ([0-9.]+) s", rep.read_text()) if rep.exists() else None
+    if not m:
+        return (f"- wall time of the nominal study: no `report.md` of `hsbearing study {name}` in this directory "
+                "(the nominal points were computed here)")
+    nom = float(m.group(1))
+    return (f"- wall time of the nominal study (its `report.md`, last invocation): {nom:.1f} s; **whole study = nominal "
+            f"+ banded invocations: {nom + banded_wall:.1f} s** (a resumed invocation counts only what it computed)")
+
+
 def _point_walls(datasets) -> dict[str, float]:
     walls: dict[str, float] = {}
     for ds in datasets.values():
@@ -809,6 +879,271 @@ def _point_walls(datasets) -> dict[str, float]:
                 walls[str(a)] = float(w)
     return walls
 
+
+
+# ----------------------------------------------------------------------------- every cell, slip bands, Table 6
+
+
+def stability_rank(label: str) -> float:
+    """Rank of a class by the paper's criterion "fewer periods ... are beneficial to cage's stability" (Sec. 5):
+    k periods -> k (1 period -> 1), quasi-periodic -> 10, chaos -> 11; undetermined / failed -> NaN."""
+    c = normalise_label(label)
+    if c == "1 period":
+        return 1.0
+    parts = c.split()
+    if len(parts) == 2 and parts[0].isdigit() and parts[1].startswith("period"):
+        return float(parts[0])
+    return {"quasi-periodic": 10.0, "chaos": 11.0}.get(c, float("nan"))
+
+
+def _pick_sample(ds_cell: xr.Dataset, st: dict | None) -> int | None:
+    """The sample index drawn for a banded cell: the nominal sample if it is in the majority class, else the
+    first completed sample in the majority class (first of tied classes), else the first completed one."""
+    n = ds_cell.sizes["sample"]
+    ok = [i for i in range(n) if ds_cell["status"].values[i] == sweeps.STATUS_OK and ds_cell["archive"].values[i]]
+    if not ok:
+        return None
+    if st and st["majority"] != "-":
+        first = st["majority"].split(" / ")[0]
+        for i in ok:
+            lab = normalise_label(ds_cell["classification"].values[i]) if "classification" in ds_cell else ""
+            if (lab or "-") == first:
+                return i
+    return ok[0]
+
+
+def _plot_gallery(study: Study, t: dict, ds: xr.Dataset, root: Path, path: Path) -> Path | None:
+    """Whirl orbit (top) and Poincare map D_Y-V_Y (bottom) of EVERY cell of a table: one column per value,
+    two rows per oil.  A banded table draws one sample per cell (:func:`_pick_sample`) and prints the class
+    fractions over the band in the panel title."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    dim = t["vary"].rpartition(".")[2]
+    banded = "sample" in ds.dims
+    oils, nval = study.oils, ds.sizes[dim]
+    fig, axes = plt.subplots(2 * len(oils), nval, figsize=(2.15 * nval, 1.95 * 2 * len(oils)), squeeze=False)
+    drawn = 0
+    for io, o in enumerate(oils):
+        for iv in range(nval):
+            cell = ds.sel(oil=o).isel({dim: iv})
+            ax_o, ax_p = axes[2 * io, iv], axes[2 * io + 1, iv]
+            for ax in (ax_o, ax_p):
+                ax.tick_params(labelsize=5, length=2, pad=1)
+                ax.locator_params(nbins=3)
+                ax.ticklabel_format(useOffset=False)
+            paper = str(cell["paper_classification"].values) if "paper_classification" in cell else ""
+            if banded:
+                st = _cell_stats(ds, dim, o, iv)
+                k = _pick_sample(cell, st)
+                pt = cell.isel(sample=k) if k is not None else None
+                frac = ", ".join(f"{c} {f:.0%}" for c, f in st["fractions"].items()) or "-"
+                head = f"{o}, {_value_label(ds, dim, iv)}  paper: {paper or '-'}\nband: {frac}"
+                if pt is not None:
+                    head += f"\nshown: {pt['sample_label'].item()} ({_ours(pt)})"
+            else:
+                pt = cell
+                head = f"{o}, {_value_label(ds, dim, iv)}\npaper: {paper or '-'}\nours: {_ours(pt)}"
+            ax_o.set_title(head, fontsize=5.2, loc="left")
+            run = None
+            if pt is not None and pt["archive"].item():
+                try:
+                    run = open_run(root / pt["archive"].item())
+                except Exception:
+                    run = None
+            if run is None or "cage_center_y" not in run or "time" not in run.dims:
+                ax_o.text(0.5, 0.5, "no run", ha="center", va="center", transform=ax_o.transAxes, fontsize=6)
+                ax_p.set_axis_off()
+                continue
+            try:
+                y = np.asarray(run["cage_center_y"].values, float) * 1e6
+                z = np.asarray(run["cage_center_z"].values, float) * 1e6
+                tt = np.asarray(run["time"].values, float)
+                t_tr = float(run.attrs.get("transient_discarded", tt[0]))
+                late = tt > t_tr
+                ax_o.plot(y[~late], z[~late], lw=0.25, color="0.75")
+                ax_o.plot(y[late], z[late], lw=0.3, color="C0")
+                gc = run.attrs.get("guide_clearance")
+                if gc is not None and np.isfinite(float(gc)):
+                    th = np.linspace(0, 2 * np.pi, 181)
+                    ax_o.plot(float(gc) * 1e6 * np.cos(th), float(gc) * 1e6 * np.sin(th), "r--", lw=0.4)
+                ax_o.set_aspect("equal", "datalim")
+                pts = _poincare(run)
+                if pts is not None and len(pts):
+                    ax_p.plot(pts[:, 0] * 1e6, pts[:, 1] * 1e3, ".", ms=1.5, color="C3")
+                    ax_p.text(0.02, 0.96, f"{len(pts)} pts", transform=ax_p.transAxes, fontsize=5, va="top")
+                else:
+                    ax_p.text(0.5, 0.5, "no section points", ha="center", va="center", transform=ax_p.transAxes,
+                              fontsize=6)
+                drawn += 1
+            finally:
+                run.close()
+            if iv == 0:
+                ax_o.set_ylabel("D_Z [um]", fontsize=5.5)
+                ax_p.set_ylabel("V_Y [mm/s]", fontsize=5.5)
+            if io == len(oils) - 1:
+                ax_p.set_xlabel("D_Y [um]", fontsize=5.5)
+    if not drawn:
+        plt.close(fig)
+        return None
+    import textwrap
+
+    width, height = fig.get_figwidth(), fig.get_figheight()
+    title = textwrap.fill(f"{t.get('title', t['id'])}: every cell -- whirl orbit (grey: transient, red dashed: guide "
+                          "clearance) over its Poincare map (once per cage revolution)", width=int(width * 15))
+    fig.suptitle(title, fontsize=7)
+    # fixed margins in inches (tight_layout costs seconds with ~70 axes)
+    n_title = title.count("\n") + 1
+    fig.subplots_adjust(left=0.5 / width, right=1 - 0.08 / width, bottom=0.4 / height,
+                        top=1 - (0.6 + 0.13 * n_title) / height, hspace=0.62, wspace=0.42)
+    try:
+        return _save(fig, path)
+    finally:
+        plt.close(fig)
+
+
+def _plot_slip_band(ds: xr.Dataset, t: dict, oils: list[str], path: Path) -> Path | None:
+    """Cage slip ratio against the table's key: the nominal sample as a line, the band's range shaded and
+    every sample as a dot (compare the paper's Figs. 13-15)."""
+    if "mean_cage_slip_ratio" not in ds:
+        return None
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    dim = t["vary"].rpartition(".")[2]
+    x, _ = _axis_values(ds, t["vary"], dim)
+    fig, ax = plt.subplots(figsize=(5.8, 4.0))
+    labels = list(ds["sample_label"].values)
+    for j, o in enumerate(oils):
+        y = np.asarray(ds["mean_cage_slip_ratio"].sel(oil=o).transpose("sample", dim).values, float) * 100
+        ok = np.asarray(ds["status"].sel(oil=o).transpose("sample", dim).values) == sweeps.STATUS_OK
+        y = np.where(ok, y, np.nan)
+        col = f"C{j}"
+        with np.errstate(all="ignore"):
+            lo, hi = np.nanmin(y, axis=0), np.nanmax(y, axis=0)
+        ax.fill_between(x, lo, hi, color=col, alpha=0.18, lw=0)
+        for k in range(y.shape[0]):
+            ax.plot(x, y[k], ".", color=col, ms=3)
+        k0 = labels.index("nominal") if "nominal" in labels else None
+        if k0 is not None:
+            ax.plot(x, y[k0], "-", color=col, label=f"oil {o} (nominal; band shaded)")
+        else:
+            ax.plot(x, np.nanmedian(y, axis=0), "-", color=col, label=f"oil {o} (band median; range shaded)")
+    ax.set_xlabel(t.get("axis_label", dim))
+    ax.set_ylabel("cage slip ratio [%]")
+    ax.set_title(f"{t['id']}: cage slip ratio over the band (compare {t.get('slip_figure', 'the paper')})", fontsize=9)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    try:
+        return _save(fig, path)
+    finally:
+        plt.close(fig)
+
+
+TABLE6_RULE = (
+    "For every condition (a value of a table) the most stable oil is the one whose cage class ranks best by the "
+    "paper's own criterion (Sec. 5: \"fewer periods of dynamic response ... and smaller slip ratio of cage are "
+    "beneficial to cage's stability\"): k periods -> rank k, quasi-periodic -> 10, chaos -> 11, undetermined "
+    "not ranked; the class is the majority class over the band (banded study) or the single run's class; ties "
+    "are broken by the cage-instability index (sd/mean of the whirl radius, Ghaisas et al. 2004; band mean), "
+    "then by the absolute cage slip ratio (band mean). Each table's values are split into a lower half "
+    "(low temperature / light load), an upper half (high / heavy) and, for an odd count, the middle value "
+    "(medium); an oil is recommended for a category when it is the most stable oil at a value of it.")
+
+
+def _cell_score(ds: xr.Dataset, dim: str, oil: str, i: int) -> tuple[float, float, float, str]:
+    cell = ds.sel(oil=oil).isel({dim: i})
+    if "sample" in ds.dims:
+        st = _cell_stats(ds, dim, oil, i)
+        cls = st["majority"] if not st["tie"] else max(st["majority"].split(" / "), key=lambda c: (
+            stability_rank(c) if np.isfinite(stability_rank(c)) else 99))  # a tie counts as the worse class
+        ok = np.asarray(cell["status"].values) == sweeps.STATUS_OK
+    else:
+        cls = _ours(cell)
+        ok = np.array(cell["status"].item() == sweeps.STATUS_OK)
+
+    def mean(name):
+        if name not in cell:
+            return float("nan")
+        v = np.atleast_1d(np.asarray(cell[name].values, float))[np.atleast_1d(ok)]
+        v = v[np.isfinite(v)]
+        return float(np.mean(np.abs(v) if name == "mean_cage_slip_ratio" else v)) if v.size else float("nan")
+
+    return stability_rank(cls), mean("cage_instability_index"), mean("mean_cage_slip_ratio"), cls
+
+
+def _categories(t: dict) -> list[str]:
+    n = len(t["values"])
+    low, high = (("low temperature", "high temperature") if t["vary"].endswith("temperature")
+                 else ("light load", "heavy load"))
+    mid = "medium temperature" if t["vary"].endswith("temperature") else "medium load"
+    half = n // 2
+    return [low] * half + ([mid] if n % 2 else []) + [high] * half
+
+
+def derive_table6(study: Study, datasets: dict[str, xr.Dataset]) -> dict[str, Any]:
+    """Our Table 6 by :data:`TABLE6_RULE`: ``{"best": {table: [(value label, [oils], detail)]},
+    "table": {oil: {table: "category (values)"}}}``."""
+    best: dict[str, list] = {}
+    table: dict[str, dict[str, str]] = {o: {} for o in study.oils}
+    for t in study.tables:
+        ds = datasets.get(t["id"])
+        if ds is None:
+            continue
+        dim = t["vary"].rpartition(".")[2]
+        cats = _categories(t)
+        rows = []
+        per_oil: dict[str, dict[str, list[str]]] = {o: {} for o in study.oils}
+        for i in range(ds.sizes[dim]):
+            scores = {o: _cell_score(ds, dim, o, i) for o in study.oils}
+            ranked = [o for o in study.oils if np.isfinite(scores[o][0])]
+            if not ranked:
+                rows.append((_value_label(ds, dim, i), [], "no oil classified"))
+                continue
+
+            def key(o):
+                r, idx, slip, _ = scores[o]
+                return (r, idx if np.isfinite(idx) else np.inf, slip if np.isfinite(slip) else np.inf)
+
+            top = min(key(o) for o in ranked)
+            winners = [o for o in ranked if key(o) == top]
+            detail = "; ".join(f"{o}: {scores[o][3]}, index {_fmt(scores[o][1], '.2f')}, |slip| "
+                               f"{_fmt(scores[o][2] * 100, '.2f')} %" for o in study.oils)
+            rows.append((_value_label(ds, dim, i), winners, detail))
+            for o in winners:
+                per_oil[o].setdefault(cats[i], []).append(_value_label(ds, dim, i))
+        best[t["id"]] = rows
+        for o in study.oils:
+            table[o][t["id"]] = "; ".join(f"{c} ({', '.join(v)})" for c, v in per_oil[o].items()) or "-"
+    return {"best": best, "table": table}
+
+
+def _table6_lines(study: Study, datasets: dict[str, xr.Dataset]) -> list[str]:
+    paper = study.spec.get("table6", {})
+    if not paper:
+        return []
+    d = derive_table6(study, datasets)
+    tids = [t["id"] for t in study.tables if t["id"] in datasets]
+    heads = {t["id"]: t.get("table6_column", t["id"]) for t in study.tables}
+    lines = ["## Table 6: recommended working condition per oil, the paper's and ours", "",
+             f"Rule (ours): {TABLE6_RULE}", "",
+             "| oil | " + " | ".join(f"{heads[k]}: paper | {heads[k]}: ours" for k in tids) + " |",
+             "|" + "---|" * (1 + 2 * len(tids))]
+    for o in study.oils:
+        row = [o]
+        for k in tids:
+            row += [str(paper.get(o, {}).get(k, "-")), d["table"][o].get(k, "-")]
+        lines.append("| " + " | ".join(row) + " |")
+    lines += ["", "The most stable oil at every condition (ours; the basis of the table above):", ""]
+    for k in tids:
+        for value, winners, detail in d["best"][k]:
+            lines.append(f"- {k}, {value}: **{', '.join(winners) or '-'}** ({detail})")
+    return lines + [""]
 
 
 def _ours(pt: xr.Dataset) -> str:
@@ -983,7 +1318,8 @@ def _poincare(run: xr.Dataset):
 
 
 def cli_main(args) -> int:
-    """``hsbearing study NAME -o DIR [--bands | --no-bands] [-j N] [--scheduler ADDR] [--duration 0.05s]``.
+    """``hsbearing study NAME -o DIR [--bands [--band-samples K] | --no-bands] [--table ID ...] [-j N]
+    [--scheduler ADDR] [--duration 0.05s]``.
 
     Exit 0 when every point completed, 1 when some did not (the report lists
     them), 2 on bad input.
@@ -992,8 +1328,11 @@ def cli_main(args) -> int:
     if out.exists() and not out.is_dir():
         raise CaseError(str(out), None, "output must be a directory")
     bands = bool(getattr(args, "bands", False))
+    limit = getattr(args, "band_samples", None)
+    if limit is not None and not bands:
+        raise CaseError("--band-samples", None, "only with --bands")
     res = run_study(args.name, out, jobs=args.jobs, scheduler=args.scheduler, duration=args.duration, progress=True,
-                    bands=bands)
+                    bands=bands, band_samples_limit=limit, tables=getattr(args, "tables", None))
     n_bad = sum(int((ds["status"] != sweeps.STATUS_OK).sum()) for ds in res["tables"].values())
     print(f"study {args.name}{' (bands)' if bands else ''}: {res['n_unique_points']} distinct points, "
           f"{res['n_computed']} computed, wall time {res['wall_time']:.1f} s ({res['backend']})")

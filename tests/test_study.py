@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import csv
 import math
+import re
 from pathlib import Path
 
 import numpy as np
@@ -111,7 +112,9 @@ def test_study_end_to_end_with_synthetic_runs(tmp_path):
     assert "| 27 degC | 1 period | quasi-periodic (x) | 1 period | 1 period (=) | 4 periods | 4 periods (=) |" in text
     assert "wall time of the whole study" in text
     figs = sorted(p.name for p in (tmp_path / "figures").glob("*.png"))
-    assert figs == sorted([f"fig{i:02d}.png" for i in range(5, 13)] + ["slip_table3.png", "slip_table4.png", "slip_table5.png"])
+    assert figs == sorted([f"fig{i:02d}.png" for i in range(5, 13)] + ["slip_table3.png", "slip_table4.png", "slip_table5.png"]
+                          + ["cells_table3.png", "cells_table4.png", "cells_table5.png"])  # every cell, per table
+    assert "## Table 6: recommended working condition per oil" in text
     for name in figs:
         assert f"figures/{name}" in text
 
@@ -332,7 +335,18 @@ def test_banded_study_reuses_nominal_resumes_and_aggregates(tmp_path):
     assert f"**Majority agreement: {n_agree} of 2 cells; occurrence: 2 of 2.**" in text
     assert f"| 100 N | 4106 | chaos | " in text
     assert "wall time of the banded study" in text and "4000-run map on a 16-core cluster" in text
+    nominal_wall = float(re.search(r"wall time of the whole study \(this invocation\): ([0-9.]+) s",
+                                   (out / "report.md").read_text()).group(1))
+    whole = float(re.search(r"whole study = nominal \+ banded invocations: ([0-9.]+) s", text).group(1))
+    banded_wall = float(re.search(r"wall time of the banded study \(this invocation\): ([0-9.]+) s", text).group(1))
+    assert whole == pytest.approx(nominal_wall + banded_wall, abs=0.11)  # printed to 0.1 s
+    walls = np.unique(ds["wall_time"].values.ravel())
+    mean_w = float(re.search(r"mean per point ([0-9.e+-]+) s", text).group(1))
+    assert mean_w == pytest.approx(np.mean(ds["wall_time"].values), rel=0.01)  # 6 distinct points, 3 sig. digits
+    assert len(walls) == 6
     assert "[LEAD: to be filled from the results]" in text
+    for png in ("cells_bands_t5.png", "slip_bands_t5.png"):
+        assert (out / "figures" / png).stat().st_size > 1000 and f"figures/{png}" in text
 
     # resumption: nothing is recomputed, the same table is written
     again = study.run_study(src, out, jobs=1, point_fn=banded_fake_dynamics, progress=False, bands=True)
@@ -372,6 +386,8 @@ def test_study_cli_bands_flag(tmp_path, capsys):
     assert parser.parse_args(["study", "zhang2016", "-o", "x"]).bands is False  # default: nominal only
     assert parser.parse_args(["study", "zhang2016", "-o", "x", "--bands"]).bands is True
     assert parser.parse_args(["study", "zhang2016", "-o", "x", "--no-bands"]).bands is False
+    assert parser.parse_args(["study", "zhang2016", "-o", "x", "--table", "table3", "--table", "table5"]).tables == [
+        "table3", "table5"]
     with pytest.raises(SystemExit) as exc:
         parser.parse_args(["study", "zhang2016", "-o", "x", "--bands", "--no-bands"])
     assert exc.value.code == 2
@@ -402,3 +418,67 @@ def test_study_cli_bands_runs_the_banded_study(tmp_path, monkeypatch, capsys):
     assert ds.sizes == {"sample": 5, "oil": 3, "radial_load": 3}
     assert "**Majority agreement:" in (tmp_path / "report_bands.md").read_text()
     assert not (tmp_path / "report.md").exists()
+
+
+def test_table6_transcription_matches_seed():
+    s = study.load_study("zhang2016")
+    with open(DATA / "seed004_table6.csv") as fh:
+        rows = list(csv.DictReader(line for line in fh if not line.startswith("#")))
+    col = {"table3": "temperature", "table4": "axial_load", "table5": "radial_load"}
+    assert {r["oil"] for r in rows} == set(s.spec["table6"]) == set(s.oils)
+    for r in rows:
+        for tid, c in col.items():
+            assert s.spec["table6"][r["oil"]][tid] == r[c].lower(), (r["oil"], tid)
+
+
+@pytest.mark.parametrize("label, rank", [("1 period", 1), ("4 periods", 4), ("3 Periods", 3), ("Quasi-periodicity", 10),
+                                         ("chaos", 11)])
+def test_stability_rank_follows_the_papers_criterion(label, rank):
+    assert study.stability_rank(label) == rank
+    assert math.isnan(study.stability_rank("undetermined")) and math.isnan(study.stability_rank("(failed)"))
+
+
+def test_derive_table6_by_the_stated_rule():
+    spec = {"study": {"oils": ["a", "b", "c"], "case": "zhang2016"},
+            "table": [{"id": "t", "vary": "operating.radial_load", "values": ["1 N", "2 N", "3 N"]}],
+            "table6": {"a": {"t": "light load"}}}
+    st = study.Study("syn", "syn.toml", spec)
+    cls = [["1 period", "chaos", "2 periods"], ["1 period", "quasi-periodic", "4 periods"],
+           ["chaos", "chaos", "undetermined"]]
+    idx = [[0.10, 0.9, 0.5], [0.05, 0.2, 0.1], [0.3, 0.3, 0.0]]
+    slip = [[0.01, 0.02, 0.03]] * 3
+    dims = ("oil", "radial_load")
+    ds = xr.Dataset({"classification": (dims, np.array(cls, dtype=object)),
+                     "status": (dims, np.full((3, 3), "ok", dtype=object)),
+                     "cage_instability_index": (dims, np.array(idx)),
+                     "mean_cage_slip_ratio": (dims, np.array(slip))},
+                    coords={"oil": ["a", "b", "c"], "radial_load": [1.0, 2.0, 3.0],
+                            "radial_load_label": ("radial_load", np.array(["1 N", "2 N", "3 N"], dtype=object))})
+    d = study.derive_table6(st, {"t": ds})
+    # 1 N: a and b both "1 period" -> the lower instability index (b); 2 N: quasi-periodic (10) beats chaos (11);
+    # 3 N: 2 periods beats 4 periods, undetermined is not ranked
+    assert [w for _, w, _ in d["best"]["t"]] == [["b"], ["b"], ["a"]]
+    assert d["table"] == {"a": {"t": "heavy load (3 N)"}, "b": {"t": "light load (1 N); medium load (2 N)"},
+                          "c": {"t": "-"}}
+    lines = study._table6_lines(st, {"t": ds})
+    assert "| a | light load | heavy load (3 N) |" in lines
+
+
+def test_band_samples_limit_runs_a_prefix_and_the_rest_resumes(tmp_path):
+    src = _mini_study(tmp_path, samples=3)
+    out = tmp_path / "out"
+    part = study.run_study(src, out, jobs=1, point_fn=banded_fake_dynamics, progress=False, bands=True,
+                           band_samples_limit=2)
+    assert part["n_computed"] == 4 and part["tables"]["t5"].sizes["sample"] == 2
+    assert "Only the first 2 of the 4 band samples were run" in (out / "report_bands.md").read_text()
+    full = study.run_study(src, out, jobs=1, point_fn=banded_fake_dynamics, progress=False, bands=True)
+    assert full["n_computed"] == 4 and full["n_unique_points"] == 8  # the first two samples were resumed
+    assert "Only the first" not in (out / "report_bands.md").read_text()
+    with pytest.raises(CaseError, match="--band-samples"):
+        study.run_study(src, out, jobs=1, point_fn=banded_fake_dynamics, progress=False, bands=True,
+                        band_samples_limit=0)
+    from hsbearing import cli
+
+    assert cli.main(["study", str(src), "-o", str(tmp_path / "o3"), "--band-samples", "2"]) == 2  # needs --bands
+    assert cli.main(["study", str(src), "-o", str(tmp_path / "o4"), "--table", "t9"]) == 2  # unknown table
+    assert not list((tmp_path / "o4").glob("**/*.nc"))
