@@ -376,6 +376,7 @@ def run_study(
     tables: list[str] | None = None,
     bands: bool = False,
     band_samples_limit: int | None = None,
+    report_only: bool = False,
 ) -> dict[str, Any]:
     """Run a study; returns ``{"tables": {id: Dataset}, "report": Path, "wall_time": s, ...}``.
 
@@ -387,7 +388,10 @@ def run_study(
     ``band_samples_limit`` K runs only the first K samples (the nominal one and
     the first K-1 Latin-hypercube points: same archives, so a later run with
     all samples resumes them; a prefix of a Latin hypercube is not stratified,
-    and the report says so).
+    and the report says so); ``report_only`` computes nothing: the tables and
+    the report are made from the archives already in ``DIR/runs`` (the others
+    are "missing"), e.g. to look at a banded study while it runs (use a copy of
+    the directory: a running study holds its lock).
     """
     study = load_study(name)
     out = Path(out_dir)
@@ -400,7 +404,7 @@ def run_study(
         raise CaseError(study.source_path, "table", f"no table selected (have: {', '.join(t['id'] for t in study.tables)})")
     if bands:
         return _run_banded(study, chosen, out, dur, jobs=jobs, scheduler=scheduler, progress=progress,
-                           point_fn=point_fn, limit=band_samples_limit)
+                           point_fn=point_fn, limit=band_samples_limit, report_only=report_only)
     plans = []
     for t in chosen:
         base = load_case(study.spec["study"]["case"], **t.get("set", {}))
@@ -408,10 +412,11 @@ def run_study(
         plans.append(sweeps.plan_sweep(base, vary, kind="run", duration=dur, point_fn=point_fn,
                                        source=f"{study.source_path} [{t['id']}]"))
     t0 = time.perf_counter()
-    with sweeps._backend(jobs, scheduler) as backend, sweeps._dir_lock(out):
-        records = sweeps.execute(plans, out / RUNS, progress=progress, backend=backend)
+    with _backend_or_none(jobs, scheduler, report_only) as backend, sweeps._dir_lock(out):
+        records = _execute_or_collect(plans, out / RUNS, progress=progress, backend=backend, report_only=report_only)
         wall = time.perf_counter() - t0
-        backend_label = f"dask {scheduler}" if scheduler else f"jobs={jobs or os.cpu_count()}"
+        backend_label = ("report only (nothing computed)" if report_only else
+                         f"dask {scheduler}" if scheduler else f"jobs={jobs or os.cpu_count()}")
         datasets = {}
         for t, plan, recs in zip(chosen, plans, records):
             ds = sweeps.assemble(plan, recs, archive_prefix=f"{RUNS}/",
@@ -432,15 +437,43 @@ def run_study(
             "point_fn": sweeps._fn_name(point_fn),
             "n_unique_points": n_points,
             "n_computed": len({r.get("archive") or id(r) for recs in records for r in recs
-                               if not r.get("resumed") and r.get("status") != "invalid"}),
+                               if not r.get("resumed") and r.get("status") not in ("invalid", STATUS_MISSING)}),
         }
         report = write_report(study, datasets, out, info)
     return {"tables": datasets, "report": report, **info}
 
 
 
+def _backend_or_none(jobs, scheduler, report_only: bool):
+    return contextlib.nullcontext() if report_only else sweeps._backend(jobs, scheduler)
+
+
+STATUS_MISSING = "missing"
+
+
+def _execute_or_collect(plans, archive_dir: Path, *, progress, backend, report_only: bool) -> list[list[dict]]:
+    """:func:`hsbearing.sweeps.execute`, or with ``report_only`` the records of the archives already on disk
+    (status "missing" for the others; nothing is computed or written in ``archive_dir``)."""
+    if not report_only:
+        return sweeps.execute(plans, archive_dir, progress=progress, backend=backend)
+    cache: dict[str, dict] = {}
+    out = []
+    for plan in plans:
+        recs = []
+        for pt in plan.points:
+            if pt.archive not in cache:
+                path = archive_dir / pt.archive
+                rec = sweeps._read_record(path) if path.exists() else None
+                cache[pt.archive] = (dict(rec, archive=pt.archive, resumed=True) if rec is not None else
+                                     {"status": STATUS_MISSING, "error": "not computed yet (report only)",
+                                      "wall_time": float("nan"), "archive": "", "resumed": False, "summary": {}})
+            recs.append(cache[pt.archive])
+        out.append(recs)
+    return out
+
+
 def _run_banded(study: Study, chosen: list[dict], out: Path, dur, *, jobs, scheduler, progress, point_fn,
-                limit: int | None = None) -> dict[str, Any]:
+                limit: int | None = None, report_only: bool = False) -> dict[str, Any]:
     """cells x band samples in one pass (one progress bar over all points); see :func:`run_study`."""
     from hsbearing.models.geometry import GuideLandError, guide_lands
 
@@ -470,11 +503,13 @@ def _run_banded(study: Study, chosen: list[dict], out: Path, dur, *, jobs, sched
             plans[(t["id"], smp.index)] = plan
     keys = list(plans)
     t0 = time.perf_counter()
-    with sweeps._backend(jobs, scheduler) as backend, sweeps._dir_lock(out):
-        records = sweeps.execute([plans[k] for k in keys], out / RUNS, progress=progress, backend=backend)
+    with _backend_or_none(jobs, scheduler, report_only) as backend, sweeps._dir_lock(out):
+        records = _execute_or_collect([plans[k] for k in keys], out / RUNS, progress=progress, backend=backend,
+                                      report_only=report_only)
         wall = time.perf_counter() - t0
         recs = dict(zip(keys, records))
-        backend_label = f"dask {scheduler}" if scheduler else f"jobs={jobs or os.cpu_count()}"
+        backend_label = ("report only (nothing computed)" if report_only else
+                         f"dask {scheduler}" if scheduler else f"jobs={jobs or os.cpu_count()}")
         datasets = {}
         for t in chosen:
             parts = []
@@ -519,7 +554,7 @@ def _run_banded(study: Study, chosen: list[dict], out: Path, dur, *, jobs, sched
             "point_fn": sweeps._fn_name(point_fn),
             "n_unique_points": len(all_points),
             "n_computed": len({r.get("archive") or id(r) for rs in records for r in rs
-                               if not r.get("resumed") and r.get("status") != "invalid"}),
+                               if not r.get("resumed") and r.get("status") not in ("invalid", STATUS_MISSING)}),
             "samples": samples,
             "n_band_samples": len(all_samples),
         }
@@ -843,12 +878,18 @@ def write_band_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, 
               "changes: cells whose class depends on the unknown clearances.", ""]
     lines += _table6_lines(study, datasets)
     failed = []
+    n_missing = 0
     for tid, ds in datasets.items():
         for idx in np.ndindex(*ds["status"].shape):
             pt = ds.isel(dict(zip(ds["status"].dims, idx)))
-            if pt["status"].item() != sweeps.STATUS_OK:
+            if pt["status"].item() == STATUS_MISSING:
+                n_missing += 1
+            elif pt["status"].item() != sweeps.STATUS_OK:
                 where = ", ".join(f"{str(c)[:-6]}={pt[c].item()}" for c in pt.coords if str(c).endswith("_label"))
                 failed.append(f"- {tid}: {where}: {pt['status'].item()}: {pt['error'].item()}")
+    if n_missing:
+        lines += [f"> **Partial report:** {n_missing} table cells x samples have no archive yet (report only); "
+                  "they are left out of the fractions.", ""]
     if failed:
         lines += ["## Points that did not complete", ""] + failed + [""]
     path = out / f"report{BANDS_SUFFIX}.md"
@@ -1332,8 +1373,10 @@ def cli_main(args) -> int:
     if limit is not None and not bands:
         raise CaseError("--band-samples", None, "only with --bands")
     res = run_study(args.name, out, jobs=args.jobs, scheduler=args.scheduler, duration=args.duration, progress=True,
-                    bands=bands, band_samples_limit=limit, tables=getattr(args, "tables", None))
-    n_bad = sum(int((ds["status"] != sweeps.STATUS_OK).sum()) for ds in res["tables"].values())
+                    bands=bands, band_samples_limit=limit, tables=getattr(args, "tables", None),
+                    report_only=bool(getattr(args, "report_only", False)))
+    n_bad = sum(int(((ds["status"] != sweeps.STATUS_OK) & (ds["status"] != STATUS_MISSING)).sum())
+                for ds in res["tables"].values())
     print(f"study {args.name}{' (bands)' if bands else ''}: {res['n_unique_points']} distinct points, "
           f"{res['n_computed']} computed, wall time {res['wall_time']:.1f} s ({res['backend']})")
     for tid in res["tables"]:

@@ -482,3 +482,22 @@ def test_band_samples_limit_runs_a_prefix_and_the_rest_resumes(tmp_path):
     assert cli.main(["study", str(src), "-o", str(tmp_path / "o3"), "--band-samples", "2"]) == 2  # needs --bands
     assert cli.main(["study", str(src), "-o", str(tmp_path / "o4"), "--table", "t9"]) == 2  # unknown table
     assert not list((tmp_path / "o4").glob("**/*.nc"))
+
+
+def test_report_only_computes_nothing_and_marks_missing_points(tmp_path):
+    src = _mini_study(tmp_path)
+    out = tmp_path / "out"
+    study.run_study(src, out, jobs=1, point_fn=banded_fake_dynamics, progress=False, bands=True, band_samples_limit=2)
+    before = sorted(p.name for p in (out / "runs").iterdir())
+    res = study.run_study(src, out, jobs=1, point_fn=banded_fake_dynamics, progress=False, bands=True,
+                          report_only=True)
+    assert sorted(p.name for p in (out / "runs").iterdir()) == before  # nothing computed or written there
+    assert res["n_computed"] == 0 and res["backend"].startswith("report only")
+    ds = res["tables"]["t5"]
+    assert list(ds["status"].isel(sample=2).values.ravel()) == ["missing", "missing"]
+    assert (ds["status"].isel(sample=slice(0, 2)) == "ok").all()
+    st = study._cell_stats(ds, "radial_load", "4109", 0)
+    assert st["n_ok"] == 2 and st["n"] == 3
+    text = (out / "report_bands.md").read_text()
+    assert "**Partial report:** 2 table cells x samples have no archive yet" in text
+    assert "## Points that did not complete" not in text
