@@ -771,9 +771,9 @@ def write_band_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, 
               f"archives): {sum(walls.values()):.1f} s; mean per point {_fmt(mean_w, '.3g')} s",
               _nominal_wall_line(out, info["wall_time"], study.name),
               f"- **projection: a 4000-run map on a 16-core cluster** = 4000 x {_fmt(mean_w, '.3g')} s / 16 = "
-              f"{_fmt(4000 * mean_w / 16 / 60, '.3g')} min (the measured mean point wall time at this duration, one "
-              "point per core, no scheduling overhead; the per-point time here was measured with "
-              f"{info['backend']} on {cores} shared core(s), so it includes contention)",
+              f"{_fmt(4000 * mean_w / 16 / 60, '.3g')} min (the mean point wall time recorded by the runs at this "
+              "duration, one point per core, no scheduling overhead; the runs shared this machine's "
+              f"{cores} core(s) with other work, so the per-point time includes that contention)",
               ""] + _section_stats(datasets) + [""]
     # -- band definition
     lines += ["## The band", "",
@@ -1091,8 +1091,9 @@ TABLE6_RULE = (
     "paper's own criterion (Sec. 5: \"fewer periods of dynamic response ... and smaller slip ratio of cage are "
     "beneficial to cage's stability\"): k periods -> rank k, quasi-periodic -> 10, chaos -> 11, undetermined "
     "not ranked; the class is the majority class over the band (banded study) or the single run's class; ties "
-    "are broken by the cage-instability index (sd/mean of the whirl radius, Ghaisas et al. 2004; band mean), "
-    "then by the absolute cage slip ratio (band mean). Each table's values are split into a lower half "
+    "are broken by the cage-instability index (sd/mean of the whirl radius, Ghaisas et al. 2004; band mean; "
+    "differences below 0.05 do not count), then by the absolute cage slip ratio (band mean; differences below "
+    "0.1 percentage point do not count); oils still tied are all recommended. Each table's values are split into a lower half "
     "(low temperature / light load), an upper half (high / heavy) and, for an odd count, the middle value "
     "(medium); an oil is recommended for a category when it is the most stable oil at a value of it.")
 
@@ -1116,6 +1117,25 @@ def _cell_score(ds: xr.Dataset, dim: str, oil: str, i: int) -> tuple[float, floa
         return float(np.mean(np.abs(v) if name == "mean_cage_slip_ratio" else v)) if v.size else float("nan")
 
     return stability_rank(cls), mean("cage_instability_index"), mean("mean_cage_slip_ratio"), cls
+
+
+#: differences below these are not told apart by the Table 6 rule (the index of a steady orbit is noise of
+#: ~0.01-0.05; slip ratios within 0.1 percentage point are the same for the paper's Figs. 13-15)
+TABLE6_INDEX_TOL = 0.05
+TABLE6_SLIP_TOL = 1e-3
+
+
+def _most_stable(oils: list[str], scores: dict) -> list[str]:
+    """Best class rank; then the instability index within TABLE6_INDEX_TOL of the lowest; then the absolute
+    slip ratio within TABLE6_SLIP_TOL of the lowest; every oil left is a winner."""
+    r0 = min(scores[o][0] for o in oils)
+    left = [o for o in oils if scores[o][0] == r0]
+    for j, tol in ((1, TABLE6_INDEX_TOL), (2, TABLE6_SLIP_TOL)):
+        vals = [scores[o][j] for o in left if np.isfinite(scores[o][j])]
+        if vals:
+            m = min(vals)
+            left = [o for o in left if np.isfinite(scores[o][j]) and scores[o][j] <= m + tol]
+    return left
 
 
 def _categories(t: dict) -> list[str]:
@@ -1147,12 +1167,7 @@ def derive_table6(study: Study, datasets: dict[str, xr.Dataset]) -> dict[str, An
                 rows.append((_value_label(ds, dim, i), [], "no oil classified"))
                 continue
 
-            def key(o):
-                r, idx, slip, _ = scores[o]
-                return (r, idx if np.isfinite(idx) else np.inf, slip if np.isfinite(slip) else np.inf)
-
-            top = min(key(o) for o in ranked)
-            winners = [o for o in ranked if key(o) == top]
+            winners = _most_stable(ranked, scores)
             detail = "; ".join(f"{o}: {scores[o][3]}, index {_fmt(scores[o][1], '.2f')}, |slip| "
                                f"{_fmt(scores[o][2] * 100, '.2f')} %" for o in study.oils)
             rows.append((_value_label(ds, dim, i), winners, detail))

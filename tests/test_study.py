@@ -445,7 +445,7 @@ def test_derive_table6_by_the_stated_rule():
     st = study.Study("syn", "syn.toml", spec)
     cls = [["1 period", "chaos", "2 periods"], ["1 period", "quasi-periodic", "4 periods"],
            ["chaos", "chaos", "undetermined"]]
-    idx = [[0.10, 0.9, 0.5], [0.05, 0.2, 0.1], [0.3, 0.3, 0.0]]
+    idx = [[0.20, 0.9, 0.5], [0.05, 0.2, 0.1], [0.3, 0.3, 0.0]]
     slip = [[0.01, 0.02, 0.03]] * 3
     dims = ("oil", "radial_load")
     ds = xr.Dataset({"classification": (dims, np.array(cls, dtype=object)),
@@ -460,6 +460,11 @@ def test_derive_table6_by_the_stated_rule():
     assert [w for _, w, _ in d["best"]["t"]] == [["b"], ["b"], ["a"]]
     assert d["table"] == {"a": {"t": "heavy load (3 N)"}, "b": {"t": "light load (1 N); medium load (2 N)"},
                           "c": {"t": "-"}}
+    # index differences below TABLE6_INDEX_TOL do not count: then the slip ratio decides, then all tied win
+    ds["cage_instability_index"][0, 0] = 0.05 + 0.04
+    assert study.derive_table6(st, {"t": ds})["best"]["t"][0][1] == ["a", "b"]  # same slip: both recommended
+    ds["mean_cage_slip_ratio"][1, 0] = -0.005  # |slip| 0.5 % < 1 %: b
+    assert study.derive_table6(st, {"t": ds})["best"]["t"][0][1] == ["b"]
     lines = study._table6_lines(st, {"t": ds})
     assert "| a | light load | heavy load (3 N) |" in lines
 
