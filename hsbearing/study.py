@@ -56,7 +56,7 @@ from hsbearing import sweeps
 
 __all__ = ["list_studies", "study_help", "load_study", "run_study", "normalise_label", "write_report", "cli_main",
            "BandSample", "band_samples", "latin_hypercube", "band_cell_stats", "write_band_report",
-           "stability_rank", "derive_table6", "TABLE6_RULE"]
+           "stability_rank", "derive_table6", "TABLE6_RULE", "orbit_drift"]
 
 RUNS = "runs"
 FIGURES = "figures"
@@ -674,13 +674,14 @@ def write_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, info:
     if figs:
         lines += ["## Whirl orbits and Poincare maps of representative cells", ""] + figs
     gal = []
+    drift: list[str] = []
     for t in study.tables:
         if t["id"] in datasets:
-            png = _plot_gallery(study, t, datasets[t["id"]], out, figdir / f"cells_{t['id']}.png")
+            png = _plot_gallery(study, t, datasets[t["id"]], out, figdir / f"cells_{t['id']}.png", drift)
             if png:
                 gal.append(f"![every cell of {t['id']}]({FIGURES}/{png.name})\n")
     if gal:
-        lines += ["## Every cell: whirl orbit and Poincare map", ""] + gal
+        lines += ["## Every cell: whirl orbit and Poincare map", ""] + gal + _drift_lines(drift)
     lines += _table6_lines(study, datasets)
     failed = [(tid, ds) for tid, ds in datasets.items() if (ds["status"] != sweeps.STATUS_OK).any()]
     if failed:
@@ -857,10 +858,12 @@ def write_band_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, 
             if png:
                 lines += ["", f"![cage slip ratio over the band, {t['id']}]({FIGURES}/{png.name})"]
             lines.append("")
-        png = _plot_gallery(study, t, ds, out, figdir / f"cells_bands_{t['id']}.png")
+        drift: list[str] = []
+        png = _plot_gallery(study, t, ds, out, figdir / f"cells_bands_{t['id']}.png", drift)
         if png:
             lines += ["Every cell (one sample each: the nominal one when it is in the majority class):", "",
                       f"![every cell of {t['id']} over the band]({FIGURES}/{png.name})", ""]
+        lines += _drift_lines(drift)
     # -- counts
     tot = _band_counts(all_stats)
     lines += ["## Agreement over the band", "",
@@ -912,6 +915,16 @@ def _nominal_wall_line(out: Path, banded_wall: float, name: str) -> str:
             f"+ banded invocations: {nom + banded_wall:.1f} s** (a resumed invocation counts only what it computed)")
 
 
+def _drift_lines(drift: list[str]) -> list[str]:
+    if not drift:
+        return []
+    return (["Cells drawn above whose cage is still drifting at the end of the run (`orbit_drift`: the mean whirl "
+             "radius changes monotonically over the analysed span by more than 10 % and 1 % of the guide "
+             "clearance, \"DRIFT\" in the panel): their section is an open arc of the transient, so their class "
+             "(often \"quasi-periodic\") is not that of an attractor; a longer run would settle them:", ""]
+            + [f"- {d}" for d in drift] + [""])
+
+
 def _point_walls(datasets) -> dict[str, float]:
     walls: dict[str, float] = {}
     for ds in datasets.values():
@@ -953,7 +966,31 @@ def _pick_sample(ds_cell: xr.Dataset, st: dict | None) -> int | None:
     return ok[0]
 
 
-def _plot_gallery(study: Study, t: dict, ds: xr.Dataset, root: Path, path: Path) -> Path | None:
+def orbit_drift(t, y, z, t_start: float, clearance: float | None = None, parts: int = 4) -> dict[str, Any]:
+    """Is the cage still drifting at the end of the run?  The analysed span (t > t_start) is cut into
+    ``parts`` equal pieces; the mean whirl radius r = sqrt(D_Y^2 + D_Z^2) [m] of each piece is compared.
+    ``drifting`` when those means change monotonically and the change exceeds both 10 % of the mean radius
+    and 1 % of the guide clearance (the still-cage threshold of docs/analysis.md): a spiral that has not
+    reached its attractor, whose Poincare section is an open arc, not a closed curve -- a class from it
+    ("quasi-periodic" for an arc) describes the transient.  A report-side diagnostic: the classification
+    itself is not changed."""
+    t = np.asarray(t, float)
+    r = np.hypot(np.asarray(y, float), np.asarray(z, float))
+    sel = t > t_start
+    r = r[sel]
+    if r.size < 4 * parts:
+        return {"drifting": False, "radii": [], "change": float("nan")}
+    means = np.array([np.mean(c) for c in np.array_split(r, parts)])
+    d = np.diff(means)
+    monotone = bool(np.all(d > 0) or np.all(d < 0))
+    change = float(means[-1] - means[0])
+    floor = 0.01 * clearance if clearance is not None and np.isfinite(clearance) else 0.0
+    drifting = monotone and abs(change) > max(0.1 * float(np.mean(means)), floor)
+    return {"drifting": drifting, "radii": means.tolist(), "change": change}
+
+
+def _plot_gallery(study: Study, t: dict, ds: xr.Dataset, root: Path, path: Path,
+                  drift_log: list | None = None) -> Path | None:
     """Whirl orbit (top) and Poincare map D_Y-V_Y (bottom) of EVERY cell of a table: one column per value,
     two rows per oil.  A banded table draws one sample per cell (:func:`_pick_sample`) and prints the class
     fractions over the band in the panel title."""
@@ -1007,6 +1044,15 @@ def _plot_gallery(study: Study, t: dict, ds: xr.Dataset, root: Path, path: Path)
                 ax_o.plot(y[~late], z[~late], lw=0.25, color="0.75")
                 ax_o.plot(y[late], z[late], lw=0.3, color="C0")
                 gc = run.attrs.get("guide_clearance")
+                dr = orbit_drift(tt, y * 1e-6, z * 1e-6, t_tr, float(gc) if gc is not None else None)
+                if dr["drifting"]:
+                    ax_o.text(0.02, 0.02, f"DRIFT {dr['change'] * 1e6:+.0f} um", transform=ax_o.transAxes,
+                              fontsize=5.5, color="m", va="bottom")
+                    if drift_log is not None:
+                        drift_log.append(f"{t['id']}, oil {o}, {_value_label(ds, dim, iv)}"
+                                         + (f" (sample {pt['sample_label'].item()})" if banded else "")
+                                         + f": class {_ours(pt)}, mean whirl radius per quarter of the analysed "
+                                           f"span {', '.join(f'{x * 1e6:.1f}' for x in dr['radii'])} um")
                 if gc is not None and np.isfinite(float(gc)):
                     th = np.linspace(0, 2 * np.pi, 181)
                     ax_o.plot(float(gc) * 1e6 * np.cos(th), float(gc) * 1e6 * np.sin(th), "r--", lw=0.4)

@@ -506,3 +506,25 @@ def test_report_only_computes_nothing_and_marks_missing_points(tmp_path):
     text = (out / "report_bands.md").read_text()
     assert "**Partial report:** 2 table cells x samples have no archive yet" in text
     assert "## Points that did not complete" not in text
+
+
+def test_orbit_drift_flags_a_spiral_not_a_steady_whirl_or_a_still_cage():
+    t = np.linspace(0.0, 1.0, 4001)
+    w = 2 * np.pi * 50
+    c = 200e-6  # guide clearance
+    # a spiral still growing (r from 50 to 150 um over the analysed span): drifting
+    r = 50e-6 + 100e-6 * t
+    d = study.orbit_drift(t, r * np.cos(w * t), r * np.sin(w * t), 0.0, c)
+    assert d["drifting"] and d["change"] == pytest.approx(75e-6, rel=0.05)  # quarter means 62.5 ... 137.5 um
+    # a steady whirl on the land with a little noise: not drifting
+    rng = np.random.default_rng(0)
+    r = 190e-6 + 2e-6 * rng.standard_normal(t.size)
+    assert not study.orbit_drift(t, r * np.cos(w * t), r * np.sin(w * t), 0.0, c)["drifting"]
+    # a still cage creeping by 1 um (< 1 % of the clearance): not flagged
+    y = -2e-6 + 1e-6 * t
+    assert not study.orbit_drift(t, y, np.zeros_like(t), 0.0, c)["drifting"]
+    # only the analysed span counts: a spiral that settles before t_start is steady
+    r = np.where(t < 0.5, 50e-6 + 280e-6 * t, 190e-6)
+    assert not study.orbit_drift(t, r * np.cos(w * t), r * np.sin(w * t), 0.5, c)["drifting"]
+    # over the whole run it rises, then stays: the last quarters are equal, not a monotone drift
+    assert study.orbit_drift(t, r * np.cos(w * t), r * np.sin(w * t), 0.0, c)["drifting"] is False
