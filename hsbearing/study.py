@@ -817,10 +817,13 @@ def write_band_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, 
                   "Class fractions over the band samples that completed (sub-labels of \"1 period\" in brackets); "
                   "*majority*: the most frequent class (ties joined by /); *agrees*: the paper's class is the "
                   "majority alone (\"tie\": one of tied majorities); *occurs*: the paper's class appears in at "
-                  "least one sample; *confidence*: mean classifier confidence of the samples in the majority class.",
+                  "least one sample; *confidence*: mean classifier confidence of the samples in the majority class; "
+                  "*whirl / cage speed*: dominant whirl frequency of the cage centre over the cage speed (1 = a "
+                  "whirl synchronous with the section, the paper's \"1 period\" single circle; +-11 = Z: a vibration at the "
+                  "ball-pass frequency, seen where the cage is held on one spot of the land).",
                   "",
                   f"| {t.get('axis_label', dim)} | oil | paper | ours over the band | majority | agrees | occurs | "
-                  "confidence | samples ok |", "|" + "---|" * 9]
+                  "confidence | samples ok | whirl / cage speed (band range) |", "|" + "---|" * 10]
         tstats = []
         for i in range(ds.sizes[dim]):
             for o in study.oils:
@@ -831,7 +834,8 @@ def write_band_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, 
                 lines.append(f"| {_value_label(ds, dim, i)} | {o} | {stt['paper'] or '-'} | {_fraction_text(stt)} | "
                              f"{stt['majority']} | {agree if stt['paper'] else '-'} | "
                              f"{('yes' if stt['occurs'] else 'no') if stt['paper'] else '-'} | "
-                             f"{_fmt(stt['confidence'], '.2f')} | {stt['n_ok']}/{stt['n']} |")
+                             f"{_fmt(stt['confidence'], '.2f')} | {stt['n_ok']}/{stt['n']} | "
+                             f"{_band_range(ds.sel(oil=o).isel({dim: i}), 'whirl_frequency_ratio')} |")
         c = _band_counts(tstats)
         per_table.append((t["id"], c))
         all_stats += tstats
@@ -913,6 +917,17 @@ def _nominal_wall_line(out: Path, banded_wall: float, name: str) -> str:
     nom = float(m.group(1))
     return (f"- wall time of the nominal study (its `report.md`, last invocation): {nom:.1f} s; **whole study = nominal "
             f"+ banded invocations: {nom + banded_wall:.1f} s** (a resumed invocation counts only what it computed)")
+
+
+def _band_range(cell: xr.Dataset, name: str) -> str:
+    """'a .. b' of a summary over the completed samples of a cell (2 decimals), '-' if none."""
+    if name not in cell:
+        return "-"
+    v = np.asarray(cell[name].values, float)
+    v = v[(np.asarray(cell["status"].values) == sweeps.STATUS_OK) & np.isfinite(v)]
+    if not v.size:
+        return "-"
+    return f"{v.min():.2f}" if np.isclose(v.min(), v.max(), atol=5e-3) else f"{v.min():.2f} .. {v.max():.2f}"
 
 
 def _drift_lines(drift: list[str]) -> list[str]:
