@@ -604,7 +604,9 @@ def write_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, info:
               f"- execution: {info['backend']} on {os.cpu_count()} core(s) of `{_host()}`",
               f"- points: {info['n_unique_points']} distinct cases ({info['n_computed']} computed in this invocation, "
               f"the others resumed from `{RUNS}/`)",
-              f"- **wall time of the whole study (this invocation): {info['wall_time']:.1f} s**",
+              (f"- wall time of this invocation (report only: nothing computed): {info['wall_time']:.1f} s"
+               if info["backend"].startswith("report only") else
+               f"- **wall time of the whole study (this invocation): {info['wall_time']:.1f} s**"),
               f"- sum of the per-point wall times: {_sum_wall(datasets):.1f} s"] + _section_stats(datasets) + [""]
     totals = [0, 0, 0]  # agree, classified, undetermined
     disagreements: list[str] = []
@@ -767,7 +769,9 @@ def write_band_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, 
               f"- points: {info['n_unique_points']} distinct cases = cells x {len(samples)} band samples "
               f"({info['n_computed']} computed in this invocation, the others resumed from `{RUNS}/`, e.g. the "
               "nominal points of an earlier `hsbearing study` in the same directory)",
-              f"- **wall time of the banded study (this invocation): {info['wall_time']:.1f} s**",
+              (f"- wall time of this invocation (report only: nothing computed): {info['wall_time']:.1f} s"
+               if info["backend"].startswith("report only") else
+               f"- **wall time of the banded study (this invocation): {info['wall_time']:.1f} s**"),
               f"- sum of the per-point wall times (all {n_pts} distinct points, resumed ones as recorded in their "
               f"archives): {sum(walls.values()):.1f} s; mean per point {_fmt(mean_w, '.3g')} s",
               _nominal_wall_line(out, info["wall_time"], study.name),

@@ -506,6 +506,7 @@ def test_report_only_computes_nothing_and_marks_missing_points(tmp_path):
     text = (out / "report_bands.md").read_text()
     assert "**Partial report:** 2 table cells x samples have no archive yet" in text
     assert "## Points that did not complete" not in text
+    assert "report only: nothing computed" in text and "wall time of the banded study" not in text
 
 
 def test_orbit_drift_flags_a_spiral_not_a_steady_whirl_or_a_still_cage():
