@@ -465,6 +465,9 @@ def build_parser() -> argparse.ArgumentParser:
                      help="the nominal case only, one run per cell (default): DIR/<table>.nc, DIR/report.md")
     sp.add_argument("--table", dest="tables", action="append", default=None, metavar="ID",
                     help="run only this table of the study (repeatable, e.g. --table table3 --table table5)")
+    sp.add_argument("--report-only", action="store_true",
+                    help="compute nothing: tables and report from the archives already in DIR/runs (the others are "
+                         "reported missing); for a look at a running study, use a copy of DIR")
     sp.add_argument("--band-samples", type=int, default=None, metavar="K",
                     help="with --bands: run only the first K band samples (the nominal one first); the others "
                          "resume later from the same DIR")

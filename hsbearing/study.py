@@ -56,7 +56,7 @@ from hsbearing import sweeps
 
 __all__ = ["list_studies", "study_help", "load_study", "run_study", "normalise_label", "write_report", "cli_main",
            "BandSample", "band_samples", "latin_hypercube", "band_cell_stats", "write_band_report",
-           "stability_rank", "derive_table6", "TABLE6_RULE"]
+           "stability_rank", "derive_table6", "TABLE6_RULE", "orbit_drift"]
 
 RUNS = "runs"
 FIGURES = "figures"
@@ -376,6 +376,7 @@ def run_study(
     tables: list[str] | None = None,
     bands: bool = False,
     band_samples_limit: int | None = None,
+    report_only: bool = False,
 ) -> dict[str, Any]:
     """Run a study; returns ``{"tables": {id: Dataset}, "report": Path, "wall_time": s, ...}``.
 
@@ -387,7 +388,10 @@ def run_study(
     ``band_samples_limit`` K runs only the first K samples (the nominal one and
     the first K-1 Latin-hypercube points: same archives, so a later run with
     all samples resumes them; a prefix of a Latin hypercube is not stratified,
-    and the report says so).
+    and the report says so); ``report_only`` computes nothing: the tables and
+    the report are made from the archives already in ``DIR/runs`` (the others
+    are "missing"), e.g. to look at a banded study while it runs (use a copy of
+    the directory: a running study holds its lock).
     """
     study = load_study(name)
     out = Path(out_dir)
@@ -400,7 +404,7 @@ def run_study(
         raise CaseError(study.source_path, "table", f"no table selected (have: {', '.join(t['id'] for t in study.tables)})")
     if bands:
         return _run_banded(study, chosen, out, dur, jobs=jobs, scheduler=scheduler, progress=progress,
-                           point_fn=point_fn, limit=band_samples_limit)
+                           point_fn=point_fn, limit=band_samples_limit, report_only=report_only)
     plans = []
     for t in chosen:
         base = load_case(study.spec["study"]["case"], **t.get("set", {}))
@@ -408,10 +412,11 @@ def run_study(
         plans.append(sweeps.plan_sweep(base, vary, kind="run", duration=dur, point_fn=point_fn,
                                        source=f"{study.source_path} [{t['id']}]"))
     t0 = time.perf_counter()
-    with sweeps._backend(jobs, scheduler) as backend, sweeps._dir_lock(out):
-        records = sweeps.execute(plans, out / RUNS, progress=progress, backend=backend)
+    with _backend_or_none(jobs, scheduler, report_only) as backend, sweeps._dir_lock(out):
+        records = _execute_or_collect(plans, out / RUNS, progress=progress, backend=backend, report_only=report_only)
         wall = time.perf_counter() - t0
-        backend_label = f"dask {scheduler}" if scheduler else f"jobs={jobs or os.cpu_count()}"
+        backend_label = ("report only (nothing computed)" if report_only else
+                         f"dask {scheduler}" if scheduler else f"jobs={jobs or os.cpu_count()}")
         datasets = {}
         for t, plan, recs in zip(chosen, plans, records):
             ds = sweeps.assemble(plan, recs, archive_prefix=f"{RUNS}/",
@@ -432,15 +437,43 @@ def run_study(
             "point_fn": sweeps._fn_name(point_fn),
             "n_unique_points": n_points,
             "n_computed": len({r.get("archive") or id(r) for recs in records for r in recs
-                               if not r.get("resumed") and r.get("status") != "invalid"}),
+                               if not r.get("resumed") and r.get("status") not in ("invalid", STATUS_MISSING)}),
         }
         report = write_report(study, datasets, out, info)
     return {"tables": datasets, "report": report, **info}
 
 
 
+def _backend_or_none(jobs, scheduler, report_only: bool):
+    return contextlib.nullcontext() if report_only else sweeps._backend(jobs, scheduler)
+
+
+STATUS_MISSING = "missing"
+
+
+def _execute_or_collect(plans, archive_dir: Path, *, progress, backend, report_only: bool) -> list[list[dict]]:
+    """:func:`hsbearing.sweeps.execute`, or with ``report_only`` the records of the archives already on disk
+    (status "missing" for the others; nothing is computed or written in ``archive_dir``)."""
+    if not report_only:
+        return sweeps.execute(plans, archive_dir, progress=progress, backend=backend)
+    cache: dict[str, dict] = {}
+    out = []
+    for plan in plans:
+        recs = []
+        for pt in plan.points:
+            if pt.archive not in cache:
+                path = archive_dir / pt.archive
+                rec = sweeps._read_record(path) if path.exists() else None
+                cache[pt.archive] = (dict(rec, archive=pt.archive, resumed=True) if rec is not None else
+                                     {"status": STATUS_MISSING, "error": "not computed yet (report only)",
+                                      "wall_time": float("nan"), "archive": "", "resumed": False, "summary": {}})
+            recs.append(cache[pt.archive])
+        out.append(recs)
+    return out
+
+
 def _run_banded(study: Study, chosen: list[dict], out: Path, dur, *, jobs, scheduler, progress, point_fn,
-                limit: int | None = None) -> dict[str, Any]:
+                limit: int | None = None, report_only: bool = False) -> dict[str, Any]:
     """cells x band samples in one pass (one progress bar over all points); see :func:`run_study`."""
     from hsbearing.models.geometry import GuideLandError, guide_lands
 
@@ -470,11 +503,13 @@ def _run_banded(study: Study, chosen: list[dict], out: Path, dur, *, jobs, sched
             plans[(t["id"], smp.index)] = plan
     keys = list(plans)
     t0 = time.perf_counter()
-    with sweeps._backend(jobs, scheduler) as backend, sweeps._dir_lock(out):
-        records = sweeps.execute([plans[k] for k in keys], out / RUNS, progress=progress, backend=backend)
+    with _backend_or_none(jobs, scheduler, report_only) as backend, sweeps._dir_lock(out):
+        records = _execute_or_collect([plans[k] for k in keys], out / RUNS, progress=progress, backend=backend,
+                                      report_only=report_only)
         wall = time.perf_counter() - t0
         recs = dict(zip(keys, records))
-        backend_label = f"dask {scheduler}" if scheduler else f"jobs={jobs or os.cpu_count()}"
+        backend_label = ("report only (nothing computed)" if report_only else
+                         f"dask {scheduler}" if scheduler else f"jobs={jobs or os.cpu_count()}")
         datasets = {}
         for t in chosen:
             parts = []
@@ -519,7 +554,7 @@ def _run_banded(study: Study, chosen: list[dict], out: Path, dur, *, jobs, sched
             "point_fn": sweeps._fn_name(point_fn),
             "n_unique_points": len(all_points),
             "n_computed": len({r.get("archive") or id(r) for rs in records for r in rs
-                               if not r.get("resumed") and r.get("status") != "invalid"}),
+                               if not r.get("resumed") and r.get("status") not in ("invalid", STATUS_MISSING)}),
             "samples": samples,
             "n_band_samples": len(all_samples),
         }
@@ -569,7 +604,9 @@ def write_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, info:
               f"- execution: {info['backend']} on {os.cpu_count()} core(s) of `{_host()}`",
               f"- points: {info['n_unique_points']} distinct cases ({info['n_computed']} computed in this invocation, "
               f"the others resumed from `{RUNS}/`)",
-              f"- **wall time of the whole study (this invocation): {info['wall_time']:.1f} s**",
+              (f"- wall time of this invocation (report only: nothing computed): {info['wall_time']:.1f} s"
+               if info["backend"].startswith("report only") else
+               f"- **wall time of the whole study (this invocation): {info['wall_time']:.1f} s**"),
               f"- sum of the per-point wall times: {_sum_wall(datasets):.1f} s"] + _section_stats(datasets) + [""]
     totals = [0, 0, 0]  # agree, classified, undetermined
     disagreements: list[str] = []
@@ -639,13 +676,14 @@ def write_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, info:
     if figs:
         lines += ["## Whirl orbits and Poincare maps of representative cells", ""] + figs
     gal = []
+    drift: list[str] = []
     for t in study.tables:
         if t["id"] in datasets:
-            png = _plot_gallery(study, t, datasets[t["id"]], out, figdir / f"cells_{t['id']}.png")
+            png = _plot_gallery(study, t, datasets[t["id"]], out, figdir / f"cells_{t['id']}.png", drift)
             if png:
                 gal.append(f"![every cell of {t['id']}]({FIGURES}/{png.name})\n")
     if gal:
-        lines += ["## Every cell: whirl orbit and Poincare map", ""] + gal
+        lines += ["## Every cell: whirl orbit and Poincare map", ""] + gal + _drift_lines(drift)
     lines += _table6_lines(study, datasets)
     failed = [(tid, ds) for tid, ds in datasets.items() if (ds["status"] != sweeps.STATUS_OK).any()]
     if failed:
@@ -731,14 +769,16 @@ def write_band_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, 
               f"- points: {info['n_unique_points']} distinct cases = cells x {len(samples)} band samples "
               f"({info['n_computed']} computed in this invocation, the others resumed from `{RUNS}/`, e.g. the "
               "nominal points of an earlier `hsbearing study` in the same directory)",
-              f"- **wall time of the banded study (this invocation): {info['wall_time']:.1f} s**",
+              (f"- wall time of this invocation (report only: nothing computed): {info['wall_time']:.1f} s"
+               if info["backend"].startswith("report only") else
+               f"- **wall time of the banded study (this invocation): {info['wall_time']:.1f} s**"),
               f"- sum of the per-point wall times (all {n_pts} distinct points, resumed ones as recorded in their "
               f"archives): {sum(walls.values()):.1f} s; mean per point {_fmt(mean_w, '.3g')} s",
               _nominal_wall_line(out, info["wall_time"], study.name),
               f"- **projection: a 4000-run map on a 16-core cluster** = 4000 x {_fmt(mean_w, '.3g')} s / 16 = "
-              f"{_fmt(4000 * mean_w / 16 / 60, '.3g')} min (the measured mean point wall time at this duration, one "
-              "point per core, no scheduling overhead; the per-point time here was measured with "
-              f"{info['backend']} on {cores} shared core(s), so it includes contention)",
+              f"{_fmt(4000 * mean_w / 16 / 60, '.3g')} min (the mean point wall time recorded by the runs at this "
+              "duration, one point per core, no scheduling overhead; the runs shared this machine's "
+              f"{cores} core(s) with other work, so the per-point time includes that contention)",
               ""] + _section_stats(datasets) + [""]
     # -- band definition
     lines += ["## The band", "",
@@ -781,10 +821,13 @@ def write_band_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, 
                   "Class fractions over the band samples that completed (sub-labels of \"1 period\" in brackets); "
                   "*majority*: the most frequent class (ties joined by /); *agrees*: the paper's class is the "
                   "majority alone (\"tie\": one of tied majorities); *occurs*: the paper's class appears in at "
-                  "least one sample; *confidence*: mean classifier confidence of the samples in the majority class.",
+                  "least one sample; *confidence*: mean classifier confidence of the samples in the majority class; "
+                  "*whirl / cage speed*: dominant whirl frequency of the cage centre over the cage speed (1 = a "
+                  "whirl synchronous with the section, the paper's \"1 period\" single circle; +-11 = Z: a vibration at the "
+                  "ball-pass frequency, seen where the cage is held on one spot of the land).",
                   "",
                   f"| {t.get('axis_label', dim)} | oil | paper | ours over the band | majority | agrees | occurs | "
-                  "confidence | samples ok |", "|" + "---|" * 9]
+                  "confidence | samples ok | whirl / cage speed (band range) |", "|" + "---|" * 10]
         tstats = []
         for i in range(ds.sizes[dim]):
             for o in study.oils:
@@ -795,7 +838,8 @@ def write_band_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, 
                 lines.append(f"| {_value_label(ds, dim, i)} | {o} | {stt['paper'] or '-'} | {_fraction_text(stt)} | "
                              f"{stt['majority']} | {agree if stt['paper'] else '-'} | "
                              f"{('yes' if stt['occurs'] else 'no') if stt['paper'] else '-'} | "
-                             f"{_fmt(stt['confidence'], '.2f')} | {stt['n_ok']}/{stt['n']} |")
+                             f"{_fmt(stt['confidence'], '.2f')} | {stt['n_ok']}/{stt['n']} | "
+                             f"{_band_range(ds.sel(oil=o).isel({dim: i}), 'whirl_frequency_ratio')} |")
         c = _band_counts(tstats)
         per_table.append((t["id"], c))
         all_stats += tstats
@@ -822,10 +866,12 @@ def write_band_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, 
             if png:
                 lines += ["", f"![cage slip ratio over the band, {t['id']}]({FIGURES}/{png.name})"]
             lines.append("")
-        png = _plot_gallery(study, t, ds, out, figdir / f"cells_bands_{t['id']}.png")
+        drift: list[str] = []
+        png = _plot_gallery(study, t, ds, out, figdir / f"cells_bands_{t['id']}.png", drift)
         if png:
             lines += ["Every cell (one sample each: the nominal one when it is in the majority class):", "",
                       f"![every cell of {t['id']} over the band]({FIGURES}/{png.name})", ""]
+        lines += _drift_lines(drift)
     # -- counts
     tot = _band_counts(all_stats)
     lines += ["## Agreement over the band", "",
@@ -843,12 +889,18 @@ def write_band_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, 
               "changes: cells whose class depends on the unknown clearances.", ""]
     lines += _table6_lines(study, datasets)
     failed = []
+    n_missing = 0
     for tid, ds in datasets.items():
         for idx in np.ndindex(*ds["status"].shape):
             pt = ds.isel(dict(zip(ds["status"].dims, idx)))
-            if pt["status"].item() != sweeps.STATUS_OK:
+            if pt["status"].item() == STATUS_MISSING:
+                n_missing += 1
+            elif pt["status"].item() != sweeps.STATUS_OK:
                 where = ", ".join(f"{str(c)[:-6]}={pt[c].item()}" for c in pt.coords if str(c).endswith("_label"))
                 failed.append(f"- {tid}: {where}: {pt['status'].item()}: {pt['error'].item()}")
+    if n_missing:
+        lines += [f"> **Partial report:** {n_missing} table cells x samples have no archive yet (report only); "
+                  "they are left out of the fractions.", ""]
     if failed:
         lines += ["## Points that did not complete", ""] + failed + [""]
     path = out / f"report{BANDS_SUFFIX}.md"
@@ -869,6 +921,27 @@ def _nominal_wall_line(out: Path, banded_wall: float, name: str) -> str:
     nom = float(m.group(1))
     return (f"- wall time of the nominal study (its `report.md`, last invocation): {nom:.1f} s; **whole study = nominal "
             f"+ banded invocations: {nom + banded_wall:.1f} s** (a resumed invocation counts only what it computed)")
+
+
+def _band_range(cell: xr.Dataset, name: str) -> str:
+    """'a .. b' of a summary over the completed samples of a cell (2 decimals), '-' if none."""
+    if name not in cell:
+        return "-"
+    v = np.asarray(cell[name].values, float)
+    v = v[(np.asarray(cell["status"].values) == sweeps.STATUS_OK) & np.isfinite(v)]
+    if not v.size:
+        return "-"
+    return f"{v.min():.2f}" if np.isclose(v.min(), v.max(), atol=5e-3) else f"{v.min():.2f} .. {v.max():.2f}"
+
+
+def _drift_lines(drift: list[str]) -> list[str]:
+    if not drift:
+        return []
+    return (["Cells drawn above whose cage is still drifting at the end of the run (`orbit_drift`: the mean whirl "
+             "radius changes monotonically over the analysed span by more than 10 % and 1 % of the guide "
+             "clearance, \"DRIFT\" in the panel): their section is an open arc of the transient, so their class "
+             "(often \"quasi-periodic\") is not that of an attractor; a longer run would settle them:", ""]
+            + [f"- {d}" for d in drift] + [""])
 
 
 def _point_walls(datasets) -> dict[str, float]:
@@ -912,7 +985,31 @@ def _pick_sample(ds_cell: xr.Dataset, st: dict | None) -> int | None:
     return ok[0]
 
 
-def _plot_gallery(study: Study, t: dict, ds: xr.Dataset, root: Path, path: Path) -> Path | None:
+def orbit_drift(t, y, z, t_start: float, clearance: float | None = None, parts: int = 4) -> dict[str, Any]:
+    """Is the cage still drifting at the end of the run?  The analysed span (t > t_start) is cut into
+    ``parts`` equal pieces; the mean whirl radius r = sqrt(D_Y^2 + D_Z^2) [m] of each piece is compared.
+    ``drifting`` when those means change monotonically and the change exceeds both 10 % of the mean radius
+    and 1 % of the guide clearance (the still-cage threshold of docs/analysis.md): a spiral that has not
+    reached its attractor, whose Poincare section is an open arc, not a closed curve -- a class from it
+    ("quasi-periodic" for an arc) describes the transient.  A report-side diagnostic: the classification
+    itself is not changed."""
+    t = np.asarray(t, float)
+    r = np.hypot(np.asarray(y, float), np.asarray(z, float))
+    sel = t > t_start
+    r = r[sel]
+    if r.size < 4 * parts:
+        return {"drifting": False, "radii": [], "change": float("nan")}
+    means = np.array([np.mean(c) for c in np.array_split(r, parts)])
+    d = np.diff(means)
+    monotone = bool(np.all(d > 0) or np.all(d < 0))
+    change = float(means[-1] - means[0])
+    floor = 0.01 * clearance if clearance is not None and np.isfinite(clearance) else 0.0
+    drifting = monotone and abs(change) > max(0.1 * float(np.mean(means)), floor)
+    return {"drifting": drifting, "radii": means.tolist(), "change": change}
+
+
+def _plot_gallery(study: Study, t: dict, ds: xr.Dataset, root: Path, path: Path,
+                  drift_log: list | None = None) -> Path | None:
     """Whirl orbit (top) and Poincare map D_Y-V_Y (bottom) of EVERY cell of a table: one column per value,
     two rows per oil.  A banded table draws one sample per cell (:func:`_pick_sample`) and prints the class
     fractions over the band in the panel title."""
@@ -966,6 +1063,15 @@ def _plot_gallery(study: Study, t: dict, ds: xr.Dataset, root: Path, path: Path)
                 ax_o.plot(y[~late], z[~late], lw=0.25, color="0.75")
                 ax_o.plot(y[late], z[late], lw=0.3, color="C0")
                 gc = run.attrs.get("guide_clearance")
+                dr = orbit_drift(tt, y * 1e-6, z * 1e-6, t_tr, float(gc) if gc is not None else None)
+                if dr["drifting"]:
+                    ax_o.text(0.02, 0.02, f"DRIFT {dr['change'] * 1e6:+.0f} um", transform=ax_o.transAxes,
+                              fontsize=5.5, color="m", va="bottom")
+                    if drift_log is not None:
+                        drift_log.append(f"{t['id']}, oil {o}, {_value_label(ds, dim, iv)}"
+                                         + (f" (sample {pt['sample_label'].item()})" if banded else "")
+                                         + f": class {_ours(pt)}, mean whirl radius per quarter of the analysed "
+                                           f"span {', '.join(f'{x * 1e6:.1f}' for x in dr['radii'])} um")
                 if gc is not None and np.isfinite(float(gc)):
                     th = np.linspace(0, 2 * np.pi, 181)
                     ax_o.plot(float(gc) * 1e6 * np.cos(th), float(gc) * 1e6 * np.sin(th), "r--", lw=0.4)
@@ -1050,8 +1156,9 @@ TABLE6_RULE = (
     "paper's own criterion (Sec. 5: \"fewer periods of dynamic response ... and smaller slip ratio of cage are "
     "beneficial to cage's stability\"): k periods -> rank k, quasi-periodic -> 10, chaos -> 11, undetermined "
     "not ranked; the class is the majority class over the band (banded study) or the single run's class; ties "
-    "are broken by the cage-instability index (sd/mean of the whirl radius, Ghaisas et al. 2004; band mean), "
-    "then by the absolute cage slip ratio (band mean). Each table's values are split into a lower half "
+    "are broken by the cage-instability index (sd/mean of the whirl radius, Ghaisas et al. 2004; band mean; "
+    "differences below 0.05 do not count), then by the absolute cage slip ratio (band mean; differences below "
+    "0.1 percentage point do not count); oils still tied are all recommended. Each table's values are split into a lower half "
     "(low temperature / light load), an upper half (high / heavy) and, for an odd count, the middle value "
     "(medium); an oil is recommended for a category when it is the most stable oil at a value of it.")
 
@@ -1075,6 +1182,25 @@ def _cell_score(ds: xr.Dataset, dim: str, oil: str, i: int) -> tuple[float, floa
         return float(np.mean(np.abs(v) if name == "mean_cage_slip_ratio" else v)) if v.size else float("nan")
 
     return stability_rank(cls), mean("cage_instability_index"), mean("mean_cage_slip_ratio"), cls
+
+
+#: differences below these are not told apart by the Table 6 rule (the index of a steady orbit is noise of
+#: ~0.01-0.05; slip ratios within 0.1 percentage point are the same for the paper's Figs. 13-15)
+TABLE6_INDEX_TOL = 0.05
+TABLE6_SLIP_TOL = 1e-3
+
+
+def _most_stable(oils: list[str], scores: dict) -> list[str]:
+    """Best class rank; then the instability index within TABLE6_INDEX_TOL of the lowest; then the absolute
+    slip ratio within TABLE6_SLIP_TOL of the lowest; every oil left is a winner."""
+    r0 = min(scores[o][0] for o in oils)
+    left = [o for o in oils if scores[o][0] == r0]
+    for j, tol in ((1, TABLE6_INDEX_TOL), (2, TABLE6_SLIP_TOL)):
+        vals = [scores[o][j] for o in left if np.isfinite(scores[o][j])]
+        if vals:
+            m = min(vals)
+            left = [o for o in left if np.isfinite(scores[o][j]) and scores[o][j] <= m + tol]
+    return left
 
 
 def _categories(t: dict) -> list[str]:
@@ -1106,12 +1232,7 @@ def derive_table6(study: Study, datasets: dict[str, xr.Dataset]) -> dict[str, An
                 rows.append((_value_label(ds, dim, i), [], "no oil classified"))
                 continue
 
-            def key(o):
-                r, idx, slip, _ = scores[o]
-                return (r, idx if np.isfinite(idx) else np.inf, slip if np.isfinite(slip) else np.inf)
-
-            top = min(key(o) for o in ranked)
-            winners = [o for o in ranked if key(o) == top]
+            winners = _most_stable(ranked, scores)
             detail = "; ".join(f"{o}: {scores[o][3]}, index {_fmt(scores[o][1], '.2f')}, |slip| "
                                f"{_fmt(scores[o][2] * 100, '.2f')} %" for o in study.oils)
             rows.append((_value_label(ds, dim, i), winners, detail))
@@ -1332,8 +1453,10 @@ def cli_main(args) -> int:
     if limit is not None and not bands:
         raise CaseError("--band-samples", None, "only with --bands")
     res = run_study(args.name, out, jobs=args.jobs, scheduler=args.scheduler, duration=args.duration, progress=True,
-                    bands=bands, band_samples_limit=limit, tables=getattr(args, "tables", None))
-    n_bad = sum(int((ds["status"] != sweeps.STATUS_OK).sum()) for ds in res["tables"].values())
+                    bands=bands, band_samples_limit=limit, tables=getattr(args, "tables", None),
+                    report_only=bool(getattr(args, "report_only", False)))
+    n_bad = sum(int(((ds["status"] != sweeps.STATUS_OK) & (ds["status"] != STATUS_MISSING)).sum())
+                for ds in res["tables"].values())
     print(f"study {args.name}{' (bands)' if bands else ''}: {res['n_unique_points']} distinct points, "
           f"{res['n_computed']} computed, wall time {res['wall_time']:.1f} s ({res['backend']})")
     for tid in res["tables"]:

@@ -445,7 +445,7 @@ def test_derive_table6_by_the_stated_rule():
     st = study.Study("syn", "syn.toml", spec)
     cls = [["1 period", "chaos", "2 periods"], ["1 period", "quasi-periodic", "4 periods"],
            ["chaos", "chaos", "undetermined"]]
-    idx = [[0.10, 0.9, 0.5], [0.05, 0.2, 0.1], [0.3, 0.3, 0.0]]
+    idx = [[0.20, 0.9, 0.5], [0.05, 0.2, 0.1], [0.3, 0.3, 0.0]]
     slip = [[0.01, 0.02, 0.03]] * 3
     dims = ("oil", "radial_load")
     ds = xr.Dataset({"classification": (dims, np.array(cls, dtype=object)),
@@ -460,6 +460,11 @@ def test_derive_table6_by_the_stated_rule():
     assert [w for _, w, _ in d["best"]["t"]] == [["b"], ["b"], ["a"]]
     assert d["table"] == {"a": {"t": "heavy load (3 N)"}, "b": {"t": "light load (1 N); medium load (2 N)"},
                           "c": {"t": "-"}}
+    # index differences below TABLE6_INDEX_TOL do not count: then the slip ratio decides, then all tied win
+    ds["cage_instability_index"][0, 0] = 0.05 + 0.04
+    assert study.derive_table6(st, {"t": ds})["best"]["t"][0][1] == ["a", "b"]  # same slip: both recommended
+    ds["mean_cage_slip_ratio"][1, 0] = -0.005  # |slip| 0.5 % < 1 %: b
+    assert study.derive_table6(st, {"t": ds})["best"]["t"][0][1] == ["b"]
     lines = study._table6_lines(st, {"t": ds})
     assert "| a | light load | heavy load (3 N) |" in lines
 
@@ -482,3 +487,45 @@ def test_band_samples_limit_runs_a_prefix_and_the_rest_resumes(tmp_path):
     assert cli.main(["study", str(src), "-o", str(tmp_path / "o3"), "--band-samples", "2"]) == 2  # needs --bands
     assert cli.main(["study", str(src), "-o", str(tmp_path / "o4"), "--table", "t9"]) == 2  # unknown table
     assert not list((tmp_path / "o4").glob("**/*.nc"))
+
+
+def test_report_only_computes_nothing_and_marks_missing_points(tmp_path):
+    src = _mini_study(tmp_path)
+    out = tmp_path / "out"
+    study.run_study(src, out, jobs=1, point_fn=banded_fake_dynamics, progress=False, bands=True, band_samples_limit=2)
+    before = sorted(p.name for p in (out / "runs").iterdir())
+    res = study.run_study(src, out, jobs=1, point_fn=banded_fake_dynamics, progress=False, bands=True,
+                          report_only=True)
+    assert sorted(p.name for p in (out / "runs").iterdir()) == before  # nothing computed or written there
+    assert res["n_computed"] == 0 and res["backend"].startswith("report only")
+    ds = res["tables"]["t5"]
+    assert list(ds["status"].isel(sample=2).values.ravel()) == ["missing", "missing"]
+    assert (ds["status"].isel(sample=slice(0, 2)) == "ok").all()
+    st = study._cell_stats(ds, "radial_load", "4109", 0)
+    assert st["n_ok"] == 2 and st["n"] == 3
+    text = (out / "report_bands.md").read_text()
+    assert "**Partial report:** 2 table cells x samples have no archive yet" in text
+    assert "## Points that did not complete" not in text
+    assert "report only: nothing computed" in text and "wall time of the banded study" not in text
+
+
+def test_orbit_drift_flags_a_spiral_not_a_steady_whirl_or_a_still_cage():
+    t = np.linspace(0.0, 1.0, 4001)
+    w = 2 * np.pi * 50
+    c = 200e-6  # guide clearance
+    # a spiral still growing (r from 50 to 150 um over the analysed span): drifting
+    r = 50e-6 + 100e-6 * t
+    d = study.orbit_drift(t, r * np.cos(w * t), r * np.sin(w * t), 0.0, c)
+    assert d["drifting"] and d["change"] == pytest.approx(75e-6, rel=0.05)  # quarter means 62.5 ... 137.5 um
+    # a steady whirl on the land with a little noise: not drifting
+    rng = np.random.default_rng(0)
+    r = 190e-6 + 2e-6 * rng.standard_normal(t.size)
+    assert not study.orbit_drift(t, r * np.cos(w * t), r * np.sin(w * t), 0.0, c)["drifting"]
+    # a still cage creeping by 1 um (< 1 % of the clearance): not flagged
+    y = -2e-6 + 1e-6 * t
+    assert not study.orbit_drift(t, y, np.zeros_like(t), 0.0, c)["drifting"]
+    # only the analysed span counts: a spiral that settles before t_start is steady
+    r = np.where(t < 0.5, 50e-6 + 280e-6 * t, 190e-6)
+    assert not study.orbit_drift(t, r * np.cos(w * t), r * np.sin(w * t), 0.5, c)["drifting"]
+    # over the whole run it rises, then stays: the last quarters are equal, not a monotone drift
+    assert study.orbit_drift(t, r * np.cos(w * t), r * np.sin(w * t), 0.0, c)["drifting"] is False
