@@ -149,6 +149,22 @@ def _rupture_guess(xs, lo):
     return xs + g * (xs - lo)
 
 
+@njit(cache=True, fastmath=True, inline="always")
+def _atan_near(x, xp, atp):
+    """atan(x) from atp = atan(xp) for a nearby xp (the previous Newton iterate) without a libm call.
+
+    atan(x) = atan(xp) + atan(u), u = (x - xp)/(1 + x xp) (valid for x xp > -1); for |u| < 0.02 the odd
+    series of atan(u) to u^9 is exact to |u|^11/11 < 2e-20; otherwise (or if x xp <= -1) math.atan(x).
+    """
+    den = 1.0 + x * xp
+    if den > 0.0:
+        u = (x - xp) / den
+        if abs(u) < 0.02:
+            u2 = u * u
+            return atp + u * (1.0 - u2 * (1.0 / 3.0 - u2 * (0.2 - u2 * (1.0 / 7.0 - u2 * (1.0 / 9.0)))))
+    return math.atan(x)
+
+
 @njit(cache=True, fastmath=True)
 def _station_dimless(A, beta, lo, hi, at_lo, at_hi, tabulated=True):
     """Dimensionless line contact with A >= 0: returns (xi_2, IP, IPxi, pressurised).
@@ -157,7 +173,9 @@ def _station_dimless(A, beta, lo, hi, at_lo, at_hi, tabulated=True):
     inside, p >= 0 complementarity (Reynolds exit condition P = P' = 0 at a free xi_2 < hi).
     IP = int P dxi, IPxi = int P xi dxi over [lo, xi_2]; at_lo, at_hi = atan(lo), atan(hi).
     ``tabulated``: start the rupture Newton solve from :func:`_rupture_guess` (default) instead of
-    Martin's infinite-inlet exit (the reference, kept for the tests); both converge to the same root.
+    Martin's infinite-inlet exit and take atan of the later iterates from the previous one
+    (:func:`_atan_near`, exact to round-off); ``False`` is the reference (kept for the tests); both
+    converge to the same root with the same stopping rule.
     """
     if not hi > lo:  # no wall left at this station (the pocket edges meet): no film
         return lo, 0.0, 0.0
@@ -191,8 +209,15 @@ def _station_dimless(A, beta, lo, hi, at_lo, at_hi, tabulated=True):
             if x >= b_:
                 x = b_
             at2 = at_hi
-            for _ in range(60):
-                at2 = math.atan(x)
+            xp = x
+            atp = 0.0
+            for it in range(60):
+                if tabulated and it > 0:
+                    at2 = _atan_near(x, xp, atp)
+                else:
+                    at2 = math.atan(x)
+                xp = x
+                atp = at2
                 k2x, k3x, m3x = _kk(x, at2)
                 dk3 = k3x - k3l
                 G = A * (k2x - k2l) + beta * (m3x - m3l) - (A * (1.0 + x * x) + beta * x) * dk3
