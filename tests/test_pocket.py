@@ -286,3 +286,18 @@ def test_tabulated_rupture_start_station_level():
         d = np.abs(t - r)
         worst = np.maximum(worst, [d[0] / WM, d[1] / (WM * L), max(d[2] / (1 + abs(r[2])), d[3] / (1 + abs(r[3])))])
     assert worst[0] < 1e-7 and worst[1] < 1e-4 and worst[2] < 1e-5, worst
+
+
+def test_rupture_guess_extreme_arguments():
+    """Extreme finite arguments stay inside the table (a read outside it would be undefined memory in
+    compiled code); a vanishing entrainment (xs = -beta/(2A) overflowing) falls back to the reference start
+    and gives the reference result."""
+    from hsbearing.models.pocket import _rupture_guess, _station
+
+    for xs, lo in [(1e308, -1e308), (-1e308, -1e308), (1e300, 1e300), (0.5, 0.5), (0.0, -1e-300), (-1e-300, 0.0)]:
+        assert math.isfinite(_rupture_guess(xs, lo)) or abs(xs) > 1e300 or abs(lo) > 1e300
+    a, L = 5e-6, math.sqrt(2 * Rb * 5e-6)
+    for U in (5e-320, -5e-320, 1e-300, 1e-30):
+        args = (a, U, -0.3, -4.0, 6.0, math.atan(-4.0), math.atan(6.0), L, ETA)
+        r, t = _station(*args, False), _station(*args, True)
+        assert np.allclose(r, t, rtol=1e-9, atol=0, equal_nan=True), (U, r, t)

@@ -142,6 +142,10 @@ def _rupture_guess(xs, lo):
     ul = min(max(ul, 0.0), n - 1.000001)
     i = int(us)
     j = int(ul)
+    # integer clamp as well: whatever the float path gave (the caller passes finite arguments only),
+    # the table is never read outside its bounds
+    i = min(max(i, 0), n - 2)
+    j = min(max(j, 0), n - 2)
     fs = us - i
     fl = ul - j
     g = ((1.0 - fs) * ((1.0 - fl) * _RUP_TABLE[i, j] + fl * _RUP_TABLE[i, j + 1])
@@ -200,7 +204,7 @@ def _station_dimless(A, beta, lo, hi, at_lo, at_hi, tabulated=True):
             a_ = xs
             b_ = hi
             # start: Martin's exit 0.475 (infinite inlet, no source) scaled by the local width sqrt(1 + xs^2)
-            if tabulated:
+            if tabulated and abs(xs) < 1e300 and lo > -1e300:  # (A vanishing: xs overflows; Martin's start)
                 x = _rupture_guess(xs, lo)
                 if x <= a_:
                     x = xs + 0.475 * math.sqrt(1.0 + xs * xs)
