@@ -301,3 +301,36 @@ def test_rupture_guess_extreme_arguments():
         args = (a, U, -0.3, -4.0, 6.0, math.atan(-4.0), math.atan(6.0), L, ETA)
         r, t = _station(*args, False), _station(*args, True)
         assert np.allclose(r, t, rtol=1e-9, atol=0, equal_nan=True), (U, r, t)
+
+
+def test_jacobian_reuses_pocket_wrench_for_ring_columns_exactly():
+    """jac_kernel reuses each ball's pocket wrench for the ring-state columns (the pocket depends on ball and
+    cage states only): those columns equal the plain finite difference of the full rhs bit for bit, at a
+    state with film, Hertz contact and friction all active."""
+    import hsbearing
+    from hsbearing.dynamics import build_model
+    from hsbearing.models import kernel as K
+
+    model = build_model(hsbearing.load_case("zhang2016"))
+    P = model.P
+    Z = model.layout.Z
+    y = model.y0.copy()
+    y[2 * Z:3 * Z] = np.linspace(-1.25, 1.25, Z) * P[K.P_CP] / (0.5 * P[K.P_DM])  # wall contact to wall contact
+    y[3 * Z:4 * Z] = 0.01
+    N = y.size
+    J = np.zeros((N, N))
+    K.jac_kernel(y, P, model.qu, model.qw, J, model.hscale, np.empty(4 * N))
+
+    def f(yy):
+        out = np.empty(N)
+        K.rhs_kernel(yy, P, model.qu, model.qw, out, np.empty((Z, K.N_CONTRIB)), np.empty((1, 1)), False,
+                     np.empty(K.N_CONTRIB), np.empty(K.N_GAUX))
+        return out
+
+    f0 = f(y)
+    rg = 9 * Z + 12
+    for col in range(rg, N):
+        h = 1.4901161193847656e-08 * max(abs(y[col]), model.hscale[col])
+        yp = y.copy()
+        yp[col] += h
+        assert np.array_equal(J[:, col], (f(yp) - f0) / (yp[col] - y[col])), col

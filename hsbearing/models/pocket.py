@@ -72,7 +72,8 @@ def _kk(xi, at):
 # ---------------------------------------------------------------- rupture: tabulated start for the Newton solve
 # The free boundary xi_2 of :func:`_station_dimless` (when it lies inside the wall) depends only on the
 # source sign change xs = -beta/(2A) and the inlet edge lo (not on hi).  A bilinear table of
-# g = (xi_2 - xs)/(xs - lo) > 0 (1/2 for a vanishing inlet) over the mapped plane (z / sqrt(_RUP_C^2 + z^2) for z = xs, lo)
+# g = (xi_2 - xs)/(xs - lo) > 0 (1/2 for a vanishing inlet) over the mapped plane
+# (z / sqrt(_RUP_C^2 + z^2) for z = xs, lo)
 # gives the Newton iteration a start within ~1e-3 of the root, so it stops after ~2 iterations instead of
 # ~4 from Martin's infinite-inlet start (issue 18).  The table only moves the start: the iteration and
 # its stopping rule are unchanged, the returned root is the same exact root (docs/pocket.md "Cost").
@@ -82,7 +83,9 @@ _RUP_C = 4.0  # [-] half-width of the mapped range: resolution ~0.1 near the fil
 
 @njit(cache=True, fastmath=True)
 def _rupture_exact(xs, lo):
-    """Root xi_2 > xs of the free-boundary residual for A = 1, beta = -2 xs, no far edge (bisection + Newton to 1e-14)."""
+    """Root xi_2 > xs of the free-boundary residual for A = 1, beta = -2 xs, no far edge.
+
+    Bracketing + Newton to 1e-14 (table construction only)."""
     b = -2.0 * xs
     k2l, k3l, m3l = _kk(lo, math.atan(lo))
     a_ = xs
