@@ -629,7 +629,8 @@ def jac_kernel(y, P, qu, qw, J, hscale, work):
     the change of ball j's contribution to the ring and cage loads gives
     those rows (the ring/cage accelerations are linear in the summed
     contributions).  The 22 cage/ring states are perturbed one by one (a full
-    evaluation each).  31 evaluations instead of 9 Z + 22.
+    evaluation each; the 10 ring columns reuse the pocket wrenches of the unperturbed
+    evaluation, which do not depend on ring states).  31 evaluations instead of 9 Z + 22.
 
     hscale : per-state typical magnitudes (the perturbation is
     sqrt(eps) max(|y|, hscale)); work : scratch array of length >= 4 N.
