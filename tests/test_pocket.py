@@ -228,3 +228,109 @@ def test_kernel_pocket_wrench_closed():
         scaleF = np.linalg.norm(F) + 1e-12
         assert np.linalg.norm(Fc + F) < 1e-9 * scaleF + 1e-12, j
         assert np.linalg.norm(Mc + M + np.cross(b, F)) < 1e-9 * (np.linalg.norm(M) + 0.03 * scaleF) + 1e-15, j
+
+
+# ----------------------------------------------------------------------------- tabulated rupture start (issue 18)
+def _random_pocket_states(rng, n):
+    """The state space the simulation visits (docs/pocket.md): e/c up to 0.995 in any direction, spin in
+    both senses, squeeze both signs, sliding, ball off the pocket mid-plane by up to +-0.2 mm."""
+    out = []
+    for _ in range(n):
+        ec = rng.uniform(0.9, 0.995) if rng.random() < 0.4 else rng.uniform(0.0, 0.995)
+        ang = rng.uniform(0, 2 * np.pi)
+        v = rng.normal(0, 0.05, 3)
+        w = np.array([rng.choice([-1, 1]) * rng.uniform(300, 4000), rng.uniform(-2500, 2500), rng.uniform(-800, 800)])
+        out.append((C * ec * math.cos(ang), C * ec * math.sin(ang), rng.uniform(-2e-4, 2e-4), v, w))
+    return out
+
+
+@pytest.mark.parametrize("edges", [(R_BORE, R_OUT), (22.9e-3, 24.0e-3)], ids=["seed004", "narrow_cage"])
+def test_tabulated_rupture_start_same_wrench(edges):
+    """The tabulated Newton start (default) returns the reference closed form's wrench (Martin's start,
+    ``tabulated=False``) to round-off over random visited states, for the seed's cage edges and for a
+    narrow cage whose edges cut the film on both sides.  Measured worst: ~2e-12 of the film load."""
+    rng = np.random.default_rng(18)
+    worst_f = worst_m = 0.0
+    for ex, et, s0, v, w in _random_pocket_states(rng, 400):
+        args = (ex, et, s0, *v, *w, ETA, Rb, Rp, edges[0], edges[1], HDM, N_ST)
+        ref = np.array(pocket_film_wrench(*args, False))
+        new = np.array(pocket_film_wrench(*args))
+        W = max(ref[6], 1e-12)
+        worst_f = max(worst_f, np.abs(new[:3] - ref[:3]).max() / W)
+        worst_m = max(worst_m, np.abs(new[3:6] - ref[3:6]).max() / (np.abs(ref[3:6]).max() + 1e-12))
+    assert worst_f < 1e-9 and worst_m < 1e-9, (worst_f, worst_m)
+
+
+def test_tabulated_rupture_start_station_level():
+    """Station level, beyond the visited range: entrainment of both signs, any source (wedge/squeeze) of either
+    sign, gaps 0.2-50 um, edges 0.1-20 contact widths on both sides.  The rupture position and the pressure
+    integrals equal the reference start's to the closed form's own round-off: scale W_M = Martin's load
+    4.896 eta (|U|/2) R_b L / a (Hamrock et al. Ch. 17); measured worst 1.5e-8 W_M (W), 1.8e-5 W_M L (Wx,
+    whose lever arm reaches 20 L), 5e-7 (1 + |x|/L) L (rupture).  Beyond ~20 contact widths the closed form
+    loses digits by cancellation when the source sign change sits within ~1e-3 L of an edge (both starts
+    alike; the station carries no load there): docs/pocket.md "Cost"."""
+    from hsbearing.models.pocket import _station
+
+    rng = np.random.default_rng(7)
+    worst = np.zeros(3)
+    for _ in range(20000):
+        a = 10 ** rng.uniform(-6.7, -4.3)
+        L = math.sqrt(2 * Rb * a)
+        lo, hi = -10 ** rng.uniform(-1, 1.3), 10 ** rng.uniform(-1, 1.3)
+        U = rng.choice([-1, 1]) * 10 ** rng.uniform(-3, 1.5)
+        F0 = rng.choice([-1, 1]) * 10 ** rng.uniform(-3, 3) * 6 * ETA * abs(U) * L / a
+        args = (a, U, F0, lo, hi, math.atan(lo), math.atan(hi), L, ETA)
+        r = np.array(_station(*args, False))
+        t = np.array(_station(*args, True))
+        WM = max(4.896 * ETA * 0.5 * abs(U) * Rb * L / a, abs(r[0]))
+        d = np.abs(t - r)
+        worst = np.maximum(worst, [d[0] / WM, d[1] / (WM * L), max(d[2] / (1 + abs(r[2])), d[3] / (1 + abs(r[3])))])
+    assert worst[0] < 1e-7 and worst[1] < 1e-4 and worst[2] < 1e-5, worst
+
+
+def test_rupture_guess_extreme_arguments():
+    """Extreme finite arguments stay inside the table (a read outside it would be undefined memory in
+    compiled code); a vanishing entrainment (xs = -beta/(2A) overflowing) falls back to the reference start
+    and gives the reference result."""
+    from hsbearing.models.pocket import _rupture_guess, _station
+
+    for xs, lo in [(1e308, -1e308), (-1e308, -1e308), (1e300, 1e300), (0.5, 0.5), (0.0, -1e-300), (-1e-300, 0.0)]:
+        assert math.isfinite(_rupture_guess(xs, lo)) or abs(xs) > 1e300 or abs(lo) > 1e300
+    a, L = 5e-6, math.sqrt(2 * Rb * 5e-6)
+    for U in (5e-320, -5e-320, 1e-300, 1e-30):
+        args = (a, U, -0.3, -4.0, 6.0, math.atan(-4.0), math.atan(6.0), L, ETA)
+        r, t = _station(*args, False), _station(*args, True)
+        assert np.allclose(r, t, rtol=1e-9, atol=0, equal_nan=True), (U, r, t)
+
+
+def test_jacobian_reuses_pocket_wrench_for_ring_columns_exactly():
+    """jac_kernel reuses each ball's pocket wrench for the ring-state columns (the pocket depends on ball and
+    cage states only): those columns equal the plain finite difference of the full rhs bit for bit, at a
+    state with film, Hertz contact and friction all active."""
+    import hsbearing
+    from hsbearing.dynamics import build_model
+    from hsbearing.models import kernel as K
+
+    model = build_model(hsbearing.load_case("zhang2016"))
+    P = model.P
+    Z = model.layout.Z
+    y = model.y0.copy()
+    y[2 * Z:3 * Z] = np.linspace(-1.25, 1.25, Z) * P[K.P_CP] / (0.5 * P[K.P_DM])  # wall contact to wall contact
+    y[3 * Z:4 * Z] = 0.01
+    N = y.size
+    J = np.zeros((N, N))
+    K.jac_kernel(y, P, model.qu, model.qw, J, model.hscale, np.empty(4 * N))
+
+    def f(yy):
+        out = np.empty(N)
+        K.rhs_kernel(yy, P, model.qu, model.qw, out, np.empty((Z, K.N_CONTRIB)), np.empty((1, 1)), False,
+                     np.empty(K.N_CONTRIB), np.empty(K.N_GAUX))
+        return out
+
+    f0 = f(y)
+    rg = 9 * Z + 12
+    for col in range(rg, N):
+        h = 1.4901161193847656e-08 * max(abs(y[col]), model.hscale[col])
+        yp = y.copy()
+        yp[col] += h
+        assert np.array_equal(J[:, col], (f(yp) - f0) / (yp[col] - y[col])), col

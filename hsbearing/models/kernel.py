@@ -252,6 +252,14 @@ def reaction_moment(ax, ay, az, fx, fy, fz, mx, my, mz):
 @njit(cache=True)
 def ball_loop(y, P, qu, qw, ydot, contrib, aux, want_aux):
     """Ball rows of ydot and per-ball contributions to the ring and cage loads (see module doc)."""
+    ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, 0, contrib)  # pmode 0: pcache unused
+
+
+@njit(cache=True)
+def ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, pmode, pcache):
+    """:func:`ball_loop` with the pocket wrench of each ball stored (``pmode`` 1) or reused (``pmode`` 2)
+    in ``pcache`` (Z x 11): for Jacobian columns of states the pocket wrench does not depend on (the ring
+    states); ``pmode`` 0 computes it as :func:`ball_loop`.  Cost only: the arithmetic is unchanged."""
     Z = int(P[P_Z])
     D2 = 0.5 * P[P_D]
     m, I = P[P_MB], P[P_IB]
@@ -363,9 +371,18 @@ def ball_loop(y, P, qu, qw, ydot, contrib, aux, want_aux):
         wpr = wrx_ * er_x + wry_ * er_y + wrz_ * er_z
         wpt = wrx_ * et_x + wry_ * et_y + wrz_ * et_z
         # film (rigid isoviscous, floored at h_min) + Hertz + boundary friction P_S: models/pocket.py
-        (pFx, pFr, pFt, pMx, pMr, pMt, Qf, Qs, Ppf, Ppb, PS) = pocket_wrench(
-            dxp, dtp, drp, ddx, ddr, ddt, wpx, wpr, wpt, P[P_ETAF] * damp, D2, D2 + P[P_CP], P[P_RBOREC],
-            P[P_RLAND], hdm, int(P[P_NPOCKET]), P[P_HMIN], P[P_KC], P[P_MUC] * fric, P[P_V0C])
+        if pmode == 2:  # reuse: the pocket wrench depends on ball and cage states only
+            pFx, pFr, pFt = pcache[j, 0], pcache[j, 1], pcache[j, 2]
+            pMx, pMr, pMt = pcache[j, 3], pcache[j, 4], pcache[j, 5]
+            Qf, Qs, Ppf, Ppb, PS = pcache[j, 6], pcache[j, 7], pcache[j, 8], pcache[j, 9], pcache[j, 10]
+        else:
+            (pFx, pFr, pFt, pMx, pMr, pMt, Qf, Qs, Ppf, Ppb, PS) = pocket_wrench(
+                dxp, dtp, drp, ddx, ddr, ddt, wpx, wpr, wpt, P[P_ETAF] * damp, D2, D2 + P[P_CP], P[P_RBOREC],
+                P[P_RLAND], hdm, int(P[P_NPOCKET]), P[P_HMIN], P[P_KC], P[P_MUC] * fric, P[P_V0C])
+            if pmode == 1:
+                pcache[j, 0], pcache[j, 1], pcache[j, 2], pcache[j, 3] = pFx, pFr, pFt, pMx
+                pcache[j, 4], pcache[j, 5], pcache[j, 6], pcache[j, 7] = pMr, pMt, Qf, Qs
+                pcache[j, 8], pcache[j, 9], pcache[j, 10] = Ppf, Ppb, PS
         # to inertial axes: force and moment (about the ball centre) on the ball
         gx_ = pFx * ex_x + pFr * er_x + pFt * et_x
         gy_ = pFx * ex_y + pFr * er_y + pFt * et_y
@@ -612,7 +629,8 @@ def jac_kernel(y, P, qu, qw, J, hscale, work):
     the change of ball j's contribution to the ring and cage loads gives
     those rows (the ring/cage accelerations are linear in the summed
     contributions).  The 22 cage/ring states are perturbed one by one (a full
-    evaluation each).  31 evaluations instead of 9 Z + 22.
+    evaluation each; the 10 ring columns reuse the pocket wrenches of the unperturbed
+    evaluation, which do not depend on ring states).  31 evaluations instead of 9 Z + 22.
 
     hscale : per-state typical magnitudes (the perturbation is
     sqrt(eps) max(|y|, hscale)); work : scratch array of length >= 4 N.
@@ -635,7 +653,8 @@ def jac_kernel(y, P, qu, qw, J, hscale, work):
     sq = 1.4901161193847656e-08
     for i in range(N):
         h[i] = sq * max(abs(y[i]), hscale[i])
-    ball_loop(y, P, qu, qw, f0, c0, aux, False)
+    pc = np.empty((Z, 11))  # pocket wrench at y, reused for the ring columns (it does not depend on them)
+    ball_loop_cached(y, P, qu, qw, f0, c0, aux, False, 1, pc)
     summed_global_rows(y, P, c0, csum, f0, gaux)
     cg = nb
     rg = nb + 12
@@ -676,7 +695,7 @@ def jac_kernel(y, P, qu, qw, J, hscale, work):
             yp[i] = y[i]
         yp[col] += h[col]
         hj = yp[col] - y[col]
-        ball_loop(yp, P, qu, qw, f1, c1, aux, False)
+        ball_loop_cached(yp, P, qu, qw, f1, c1, aux, False, 2 if col >= rg else 0, pc)
         summed_global_rows(yp, P, c1, csum, f1, gaux)
         for i in range(N):
             J[i, col] = (f1[i] - f0[i]) / hj
