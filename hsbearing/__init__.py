@@ -12,12 +12,7 @@ Public API (DESIGN.md "Contracts"):
 
 from __future__ import annotations
 
-from importlib.metadata import PackageNotFoundError, version as _version
-
-try:
-    __version__ = _version("hsbearing")
-except PackageNotFoundError:  # pragma: no cover - running from a source tree
-    __version__ = "0.0.0+unknown"
+from hsbearing._version import __version__
 
 from hsbearing.case import Case, CaseError, load_case, list_cases
 from hsbearing.errors import SolverError

@@ -29,6 +29,8 @@ from importlib import resources
 from pathlib import Path
 from typing import Any, Mapping
 
+from hsbearing.errors import CaseError  # defined in errors (below models/); case.CaseError is the same class
+
 __all__ = [
     "Case",
     "CaseError",
@@ -68,17 +70,6 @@ DIMENSIONS: dict[str, str] = {
     "velocity": "m/s",
     "frequency": "Hz",
 }
-
-
-class CaseError(ValueError):
-    """Bad input in a case file: carries the file and the key for a one-line message."""
-
-    def __init__(self, source: str, key: str | None, message: str):
-        self.source = str(source)
-        self.key = key
-        self.message = message
-        where = f"{self.source}: {key}: " if key else f"{self.source}: "
-        super().__init__(where + message)
 
 
 @dataclass(frozen=True)

@@ -11,7 +11,7 @@ import hashlib
 import sys
 from pathlib import Path
 
-from hsbearing import __version__
+from hsbearing._version import __version__
 from hsbearing.case import CaseError, DEFAULT_CASE, list_cases, load_case, parse_quantity
 from hsbearing.errors import SolverError
 

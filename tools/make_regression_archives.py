@@ -49,7 +49,11 @@ RUNS: dict[str, list[str]] = {
 # behaviour (a compiled rhs, another Jacobian path) moves the trajectory within the integration tolerance.
 # Everything else (closed forms, quasi-static Newton solves, tables) must be bit-identical.
 ODE_ARCHIVES = {"zhang2016_run", "jiang2014_gyro_run"}
-ODE_RTOL = 1e-4   # relative to each variable's largest magnitude in the stored archive (case rtol is 1e-5 / 1e-6)
+# Measured (2026-11-24, zhang2016_run): the same source run with a freshly compiled numba kernel (cold cache,
+# e.g. a fresh clone in CI) and with the kernel loaded from numba's on-disk cache takes 594 vs 590 CVODE
+# steps; the largest difference is 1.5e-3 of the scale of power_loss_contact_damping (the spiky damping
+# power), 2.8e-4 of cage_tilt_y, below 1.4e-4 elsewhere.  The tolerance leaves a factor ~3 above that.
+ODE_RTOL = 5e-3   # relative to each variable's largest magnitude in the stored archive (case rtol is 1e-5 / 1e-6)
 
 # attrs that record when, where or with which version an archive was written, not what was computed
 IGNORED_ATTRS = {"created", "hsbearing_version", "case_source", "history", "host", "hostname", "date"}
