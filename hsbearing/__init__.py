@@ -60,7 +60,7 @@ def simulate(case, duration=None, *, progress: bool = False, **kwargs):
 
 def quasi_static(case, **kwargs):
     """High-speed quasi-static equilibrium of the case (Jones-Harris) as a Dataset over ``ball``."""
-    from hsbearing.solvers import quasistatic
+    from hsbearing import quasistatic
 
     return quasistatic.solve_case(_as_case(case), **kwargs)
 

@@ -238,7 +238,7 @@ def cmd_quasistatic(args) -> int:
         else:
             print(f"hsbearing: numerical failure: {exc}", file=sys.stderr)
         return 1
-    from hsbearing.solvers import quasistatic
+    from hsbearing import quasistatic
 
     quasistatic.print_summary(ds)
     from hsbearing.display import contact_pressure_warning

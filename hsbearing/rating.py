@@ -100,7 +100,7 @@ def life(case, *, quasistatic: bool = True):
     warns = []
     if quasistatic:
         from hsbearing import contact_state
-        from hsbearing.solvers import quasistatic as qs
+        from hsbearing import quasistatic as qs
 
         inner_rot = abs(op.inner_speed) >= abs(op.outer_speed)  # the load is fixed in space (shaft/housing loads)
         out = {}

@@ -122,7 +122,7 @@ def contact_states(case, speed=None, source: str = "static", tilt: bool = True, 
         Qi = Qo = Q
         ai = ao = al
     elif source == "quasistatic":
-        from hsbearing.solvers import quasistatic
+        from hsbearing import quasistatic
 
         ds = quasistatic.solve_case(case, inner_speed=speed, centrifugal=centrifugal, gyroscopic=centrifugal)
         Qi, Qo = ds["inner_contact_load"].values, ds["outer_contact_load"].values
