@@ -33,10 +33,7 @@ __all__ = [
 ]
 
 
-def _as_case(case, overrides=None):
-    if isinstance(case, Case):
-        return case.with_overrides(**overrides) if overrides else case
-    return load_case(case, **(overrides or {}))
+from hsbearing.case import as_case as _as_case  # noqa: E402 - the older private name
 
 
 def simulate(case, duration=None, *, progress: bool = False, **kwargs):
@@ -46,16 +43,9 @@ def simulate(case, duration=None, *, progress: bool = False, **kwargs):
     ``[simulation] duration``.  Raises :class:`SolverError` (with
     ``.partial``) on numerical failure.
     """
-    case = _as_case(case)
-    if case.system == "gyro_ribbon_cage":
-        from hsbearing.models.friction import gyro
+    from hsbearing import systems  # the registry: [case] system -> its package (hsbearing/systems/)
 
-        return gyro.simulate(case, duration=duration, progress=progress, **kwargs)
-    if case.system in ("angular_contact", "deep_groove"):
-        from hsbearing import dynamics
-
-        return dynamics.simulate(case, duration=duration, progress=progress, **kwargs)
-    raise CaseError(case.source, "case.system", f"system {case.system!r} has no dynamic model (use 'hsbearing preload')")
+    return systems.simulate(_as_case(case), duration=duration, progress=progress, **kwargs)
 
 
 def quasi_static(case, **kwargs):

@@ -108,7 +108,7 @@ def _gyro_dataset(n=400):
     mc = np.where((t > 0.08) & (t < 0.09), 4e-6, 0.0) - np.where((t > 0.15) & (t < 0.16), 3e-6, 0.0)
     src = {"friction_moment_viscous": 0.05e-6, "friction_moment_hysteresis": 0.858e-6,
            "friction_moment_differential": 0.893e-6, "friction_moment_pivoting": 0.970e-6}
-    from hsbearing.models.friction import gyro  # noqa: F401  (registers the gyro variables)
+    from hsbearing.systems.gyro import model as gyro  # noqa: F401  (registers the gyro variables)
 
     data = {k: np.full(n, v) for k, v in src.items()}
     data["friction_moment_cage"] = mc
@@ -451,7 +451,7 @@ def test_compile_notice_comes_before_the_bar_and_compilation_before_integration(
 
 def test_start_ensemble_bars_say_which_start(monkeypatch):
     """A 5-start gyro run shows five progress bars: each is labelled "start k/5" (they were identical)."""
-    from hsbearing.models.friction import gyro
+    from hsbearing.systems.gyro import model as gyro
 
     descs = []
 
