@@ -29,7 +29,8 @@ _RPM = 60 / (2 * math.pi)
 
 @pytest.fixture
 def figures(monkeypatch):
-    """The Figure objects the code saves (plotting.save_figure and its alias _save), in order."""
+    """The Figure objects the code saves (plotting.save_figure, which every figure module calls as
+    hsbearing.plotting.common.save_figure), in order."""
     got = []
     real = plotting.save_figure
 
@@ -38,7 +39,7 @@ def figures(monkeypatch):
         return real(fig, path, *a, **k)
 
     monkeypatch.setattr(plotting, "save_figure", capture)
-    monkeypatch.setattr(plotting, "_save", capture)
+    monkeypatch.setattr(plotting.common, "save_figure", capture)
     return got
 
 

@@ -9,7 +9,8 @@ from pathlib import Path
 
 import numpy as np
 
-from hsbearing.plotting.common import _RPM, _case_labels, save_figure
+from hsbearing.plotting import common  # common.save_figure: one place to capture every figure
+from hsbearing.plotting.common import _RPM, _case_labels
 
 # ----------------------------------------------------------------------------- sweep / study summary figure
 #
@@ -530,7 +531,7 @@ def plot_sweep(ds, path) -> Path:
     panel.
     """
     fig, meta = sweep_figure(ds)
-    return save_figure(fig, Path(path), metadata=meta)
+    return common.save_figure(fig, Path(path), metadata=meta)
 
 
 def sweep_figure(ds):

@@ -13,12 +13,12 @@ from pathlib import Path
 
 import numpy as np
 
+from hsbearing.plotting import common  # common.save_figure: one place to capture every figure
 from hsbearing.plotting.common import (
     _RPM,
     _figure,
     _length_scale,
     _per_ball_axes,
-    _save,
     _shade,
     _velocity_scale,
     _wrap,
@@ -191,7 +191,7 @@ def _plot_dynamic(ds, path: Path) -> Path:
     ax.set_ylabel("cage slip ratio $(\\omega_{c,th}-\\omega_c)/\\omega_{c,th}$ [%]")
     ax.set_title("(d) cage slip ratio", fontsize=10)
     ax.grid(alpha=0.3)
-    return _save(fig, path)
+    return common.save_figure(fig, path)
 
 
 
@@ -216,7 +216,7 @@ def _plot_static(ds, path: Path) -> Path:
             a = np.degrees(np.atleast_1d(np.asarray(ds[name].values, float)))
             ax2.plot(np.arange(1, len(a) + 1), a, "o-", color=c, label=lab)
     _per_ball_axes(ax2, nb, "contact angle [\N{DEGREE SIGN}]", "contact angles per ball", grid_axis="both")
-    return _save(fig, path)
+    return common.save_figure(fig, path)
 
 
 

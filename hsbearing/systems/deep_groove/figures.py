@@ -7,7 +7,8 @@ from pathlib import Path
 
 import numpy as np
 
-from hsbearing.plotting.common import _RPM, _case_labels, _figure, _save, _vals
+from hsbearing.plotting import common  # common.save_figure: one place to capture every figure
+from hsbearing.plotting.common import _RPM, _case_labels, _figure, _vals
 from hsbearing.systems.deep_groove.friction import friction_torque
 
 __all__ = ["plot_friction", "make_figures"]
@@ -66,7 +67,7 @@ def plot_friction(ds, path) -> Path:
     sp = f" at n = {rpm[0]:.0f} r/min" if len(rpm) else ""
     ax2.set_title(f"(b) ball contacts{sp}", fontsize=10)
     ax2.grid(alpha=0.3, axis="y")
-    return _save(fig, path)
+    return common.save_figure(fig, path)
 
 
 # --------------------------------------------------------------------------- figures (seed 003 Figs. 8-16)

@@ -6,7 +6,8 @@ from pathlib import Path
 
 import numpy as np
 
-from hsbearing.plotting.common import _RPM, _figure, _save, _vals
+from hsbearing.plotting import common  # common.save_figure: one place to capture every figure
+from hsbearing.plotting.common import _RPM, _figure, _vals
 
 __all__ = ['GYRO_SOURCES', 'plot_gyro']
 
@@ -67,4 +68,4 @@ def plot_gyro(ds, path) -> Path:
     if ds.attrs.get("status", "ok") != "ok":
         title += f" [{ds.attrs['status']}]"
     fig.suptitle(title, fontsize=10)
-    return _save(fig, path)
+    return common.save_figure(fig, path)

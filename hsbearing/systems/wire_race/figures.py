@@ -6,7 +6,8 @@ from pathlib import Path
 
 import numpy as np
 
-from hsbearing.plotting.common import ISO76_BALL_PRESSURE, _figure, _save, _vals
+from hsbearing.plotting import common  # common.save_figure: one place to capture every figure
+from hsbearing.plotting.common import ISO76_BALL_PRESSURE, _figure, _vals
 
 __all__ = ['plot_preload']
 
@@ -57,4 +58,4 @@ def plot_preload(ds, path) -> Path:
     ax2.set_title("(b) maximum contact pressure", fontsize=10)
     ax2.grid(alpha=0.3)
     ax2.legend(fontsize=8, loc="upper left")
-    return _save(fig, path)
+    return common.save_figure(fig, path)
