@@ -13,8 +13,7 @@ Public API (DESIGN.md "Contracts"):
 from __future__ import annotations
 
 from hsbearing._version import __version__
-
-from hsbearing.case import Case, CaseError, load_case, list_cases
+from hsbearing.case import Case, CaseError, list_cases, load_case
 from hsbearing.errors import SolverError
 from hsbearing.results import open_run
 

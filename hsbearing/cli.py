@@ -138,7 +138,7 @@ def cmd_run(args) -> int:
     from hsbearing import simulate
     from hsbearing.case import check_output_samples
     from hsbearing.errors import Interrupted
-    from hsbearing.results import check_output_path, write_netcdf
+    from hsbearing.results import check_output_path
 
     if getattr(args, "continue_from", None):
         return _cmd_continue(args)
@@ -190,7 +190,7 @@ def _cmd_continue(args) -> int:
     """``hsbearing run --continue ARCHIVE.nc [--duration T] [-o OUT.nc]``: extend a run from its last state."""
     from hsbearing import dynamics
     from hsbearing.errors import Interrupted
-    from hsbearing.results import check_output_path, open_run, write_netcdf
+    from hsbearing.results import check_output_path, open_run
 
     src = Path(args.continue_from)
     if args.case or args.set:

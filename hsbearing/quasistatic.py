@@ -41,8 +41,7 @@ import numpy as np
 import xarray as xr
 from scipy import optimize
 
-from hsbearing.errors import SolverError
-from hsbearing.errors import CaseError
+from hsbearing.errors import CaseError, SolverError
 from hsbearing.models import geometry as _geometry
 from hsbearing.models import hertz
 from hsbearing.models import quasistatic_physics as qp
@@ -499,7 +498,7 @@ def _newton_ring(ring: _Ring, q, tol, maxiter=30):
             t *= 0.5
         if not improved:
             break
-        q, R, (X1, X2, st, free) = qn, Rn, pack
+        q, R, (X1, X2, _st, free) = qn, Rn, pack
     return q, R
 
 
@@ -572,7 +571,7 @@ def _solve_fixed_control(P: Problem, *, initial=None, tol=1e-10, maxfev=200) -> 
         try:
             sol = _solve_default(P, tol, maxfev, stats)
         except SolverError as exc:
-            raise exc if err is None or exc.partial is not None else err
+            raise exc if err is None or exc.partial is not None else err  # noqa: B904 - the earlier failure, as it was
     sol.problem = P
     sol.stats.update(stats)
     sol.stats["wall_time_s"] = time.perf_counter() - t0

@@ -59,8 +59,8 @@ def life(case, *, quasistatic: bool = True):
     names above and attrs listing the inputs used (X, Y, e, nu, n) and any
     range notes (kappa outside 0.1..4 clipped).
     """
-    from hsbearing.case import as_case as _as_case
     from hsbearing.case import CaseError
+    from hsbearing.case import as_case as _as_case
     from hsbearing.models import geometry
     from hsbearing.models import life as L
 

@@ -66,8 +66,17 @@ from typing import Any, Callable, Iterable, Mapping, Sequence
 import numpy as np
 import xarray as xr
 
-from hsbearing.case import (DIMENSIONS, SCHEMA, Case, CaseError, check_output_samples, load_case, loads_case,
-                            parse_quantity, resolve_key)
+from hsbearing.case import (
+    DIMENSIONS,
+    SCHEMA,
+    Case,
+    CaseError,
+    check_output_samples,
+    load_case,
+    loads_case,
+    parse_quantity,
+    resolve_key,
+)
 from hsbearing.errors import SolverError
 from hsbearing.results import VARIABLES, check_output_path, register, standard_attrs, write_netcdf
 
@@ -621,7 +630,7 @@ class _LocalPool:
                     on_done(key, rec, ds)
                 if broken:
                     # every other in-flight point died with the pool: suspects too
-                    for f, (key, args) in futs.items():
+                    for _f, (key, args) in futs.items():
                         suspects.append((key, args))
                     futs.clear()
                     self.ex.shutdown(wait=True, cancel_futures=True)

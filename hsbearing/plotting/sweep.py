@@ -369,7 +369,7 @@ def _draw_sweep_panel(ax, prep, title, unit, items, colours, annotate_bad: bool)
     one = prep["layout"]["n_series"] == 1
     for s in range(prep["layout"]["n_series"]):
         col = colours[s]
-        for k, (name, lab, ls, y) in enumerate(items):
+        for k, (name, _lab, ls, y) in enumerate(items):
             ys = np.where(good[s], y[s], np.nan)
             fin = np.isfinite(ys)
             ax.plot(x, ys, ls=ls, color=col, lw=1.1, zorder=2)  # NaN (not-ok or missing points) breaks the line

@@ -110,7 +110,6 @@ def contact_states(case, speed=None, source: str = "static", tilt: bool = True, 
     g = geometry.derive(case)
     mb, mr = case.materials.ball, case.materials.races
     Fa = abs(case.operating.axial_load)
-    Fr = math.hypot(case.operating.radial_load, case.operating.radial_load_z)
     Ri, Ro = sp.deformed_radius(g.ri, g.D), sp.deformed_radius(g.ro, g.D)
     if source == "static":
         op = case.operating

@@ -293,7 +293,7 @@ def preload_window(case, torque_lo, torque_hi, *, stiffness=None, delta_max: flo
                             f"{t:g} N m is below the torque at zero preload ({t0:.4g} N m: weight of the framework and M_u)")
         if t > tmax:
             raise CaseError("--target-torque", None, f"{t:g} N m needs a preload above {delta_max * 1e6:g} um")
-        out.append(0.0 if t == t0 else brentq(lambda d: torque_at(d) - t, 0.0, delta_max, xtol=1e-12))
+        out.append(0.0 if t == t0 else brentq(lambda d: torque_at(d) - t, 0.0, delta_max, xtol=1e-12))  # noqa: B023 - solved here
     return out[0], out[1]
 
 
@@ -316,7 +316,7 @@ def plot_torque_vs_preload(ds: xr.Dataset, path, measured: dict | None = None, p
     um = ds["preload"].values * 1e6
     ax.plot(um, ds["rolling_torque"].values, "-", color="C0", label="ours: $M_{sc}$, Eq. 4")
     ax.plot(um, ds["torque"].values, "--", color="C0", label="ours: $M_{sc} + M_u$, Eq. 11")
-    for i, (label, (x, y)) in enumerate((paper or {}).items()):
+    for label, (x, y) in (paper or {}).items():
         ax.plot(np.asarray(x) * 1e6, y, "s", mfc="none", color="C1", label=label)
     markers = ("o", "^", "v", "D")
     for i, (label, (x, y)) in enumerate((measured or {}).items()):
