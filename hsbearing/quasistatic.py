@@ -18,6 +18,7 @@ Numerics (nested, all vectorised over balls):
    races and feel no centrifugal force stay on that line with zero loads (no
    NaN, no singular Jacobian); at speed they are seated on the outer race.
 2. outer level -- the 5 ring equations are solved by a damped Newton method
+   (:func:`hsbearing.solvers.newton.damped_newton`, generic)
    with the exact Jacobian of the nested problem (implicit-function theorem,
    central differences), with :func:`scipy.optimize.root` (Powell hybrid) as
    the fallback when Newton stalls; residual below 1e-10 of the applied load.
@@ -46,6 +47,7 @@ from hsbearing.models import geometry as _geometry
 from hsbearing.models import hertz
 from hsbearing.models import quasistatic_physics as qp
 from hsbearing.results import make_dataset, register, solver_attrs, standard_attrs
+from hsbearing.solvers.newton import damped_newton
 
 __all__ = [
     "Problem",
@@ -461,45 +463,19 @@ def _initial_ring_guess(P: Problem) -> np.ndarray:
 
 
 def _newton_ring(ring: _Ring, q, tol, maxiter=30):
-    """Damped Newton on the ring equations (scaled); returns q and the last residual.
-
-    Stops early when a step cannot reduce the residual (line search exhausted)
-    or when five iterations gain less than a factor 2 -- a stuck start is left
-    to the next route of :func:`solve` instead of burning evaluations.
+    """Damped Newton on the ring equations (scaled; :func:`hsbearing.solvers.newton.damped_newton`): returns q
+    and the last residual.  The ball positions of a rejected line-search trial are restored, so the next
+    trial starts its ball solve from the last accepted ones.
     """
-    a = ring.act
-    R, (X1, X2, st, free) = ring.residual(q)
-    history = []
-    target = 1e-3 * tol  # one step past the tolerance costs little and leaves margin (quadratic convergence)
-    for _ in range(maxiter):
-        rn = np.max(np.abs(R[a] / ring.rs[a]))
-        history.append(rn)
-        if rn < target or (rn < tol and len(history) > 1 and rn > 0.1 * history[-2]):
-            break
-        if len(history) > 5 and history[-1] > 0.5 * history[-6]:
-            break
-        J = ring.jacobian(q, X1, X2, free)[np.ix_(a, a)]
-        Js = J * ring.xs[a][None, :] / ring.rs[a][:, None]
-        try:
-            dz = np.linalg.lstsq(Js, -R[a] / ring.rs[a], rcond=1e-13)[0]
-        except np.linalg.LinAlgError:
-            break
-        dq = np.zeros(5)
-        dq[a] = dz * ring.xs[a]
-        t, improved = 1.0, False
-        for _ in range(12):
-            qn = q + t * dq
-            X1s, X2s = ring.X1, ring.X2
-            Rn, pack = ring.residual(qn)
-            if np.max(np.abs(Rn[a] / ring.rs[a])) < rn:
-                improved = True
-                break
-            ring.X1, ring.X2 = X1s, X2s
-            t *= 0.5
-        if not improved:
-            break
-        q, R, (X1, X2, _st, free) = qn, Rn, pack
-    return q, R
+
+    def save():
+        return ring.X1, ring.X2
+
+    def restore(saved):
+        ring.X1, ring.X2 = saved
+
+    return damped_newton(ring.residual, lambda x, pack: ring.jacobian(x, pack[0], pack[1], pack[3]), q, tol,
+                         active=ring.act, xscale=ring.xs, rscale=ring.rs, maxiter=maxiter, save=save, restore=restore)
 
 
 def solve(P: Problem, *, initial=None, tol=1e-10, maxfev=200) -> QuasiStaticSolution:
