@@ -48,6 +48,11 @@ lock: $(STAMP)
 	$(BIN)/pip-compile --quiet --upgrade --extra test --extra bench --strip-extras --no-emit-find-links \
 	    --no-emit-index-url --no-emit-trusted-host -o requirements.lock pyproject.toml
 
+# ruff over the package (rules: [tool.ruff] in pyproject.toml); installed into .venv on demand until the lock has it
+lint: $(STAMP)
+	@$(BIN)/ruff --version >/dev/null 2>&1 || $(BIN)/python -m pip install --quiet ruff
+	$(BIN)/ruff check hsbearing
+
 bench: $(STAMP)
 	@for f in benchmarks/bench_*.py; do echo "== $$f"; $(BIN)/python $$f || exit 1; done
 

@@ -12,14 +12,8 @@ Public API (DESIGN.md "Contracts"):
 
 from __future__ import annotations
 
-from importlib.metadata import PackageNotFoundError, version as _version
-
-try:
-    __version__ = _version("hsbearing")
-except PackageNotFoundError:  # pragma: no cover - running from a source tree
-    __version__ = "0.0.0+unknown"
-
-from hsbearing.case import Case, CaseError, load_case, list_cases
+from hsbearing._version import __version__
+from hsbearing.case import Case, CaseError, list_cases, load_case
 from hsbearing.errors import SolverError
 from hsbearing.results import open_run
 
@@ -38,10 +32,7 @@ __all__ = [
 ]
 
 
-def _as_case(case, overrides=None):
-    if isinstance(case, Case):
-        return case.with_overrides(**overrides) if overrides else case
-    return load_case(case, **(overrides or {}))
+from hsbearing.case import as_case as _as_case  # noqa: E402 - the older private name
 
 
 def simulate(case, duration=None, *, progress: bool = False, **kwargs):
@@ -51,21 +42,14 @@ def simulate(case, duration=None, *, progress: bool = False, **kwargs):
     ``[simulation] duration``.  Raises :class:`SolverError` (with
     ``.partial``) on numerical failure.
     """
-    case = _as_case(case)
-    if case.system == "gyro_ribbon_cage":
-        from hsbearing.models.friction import gyro
+    from hsbearing import systems  # the registry: [case] system -> its package (hsbearing/systems/)
 
-        return gyro.simulate(case, duration=duration, progress=progress, **kwargs)
-    if case.system in ("angular_contact", "deep_groove"):
-        from hsbearing import dynamics
-
-        return dynamics.simulate(case, duration=duration, progress=progress, **kwargs)
-    raise CaseError(case.source, "case.system", f"system {case.system!r} has no dynamic model (use 'hsbearing preload')")
+    return systems.simulate(_as_case(case), duration=duration, progress=progress, **kwargs)
 
 
 def quasi_static(case, **kwargs):
     """High-speed quasi-static equilibrium of the case (Jones-Harris) as a Dataset over ``ball``."""
-    from hsbearing.solvers import quasistatic
+    from hsbearing import quasistatic
 
     return quasistatic.solve_case(_as_case(case), **kwargs)
 

@@ -29,6 +29,8 @@ from importlib import resources
 from pathlib import Path
 from typing import Any, Mapping
 
+from hsbearing.errors import CaseError  # defined in errors (below models/); case.CaseError is the same class
+
 __all__ = [
     "Case",
     "CaseError",
@@ -68,17 +70,6 @@ DIMENSIONS: dict[str, str] = {
     "velocity": "m/s",
     "frequency": "Hz",
 }
-
-
-class CaseError(ValueError):
-    """Bad input in a case file: carries the file and the key for a one-line message."""
-
-    def __init__(self, source: str, key: str | None, message: str):
-        self.source = str(source)
-        self.key = key
-        self.message = message
-        where = f"{self.source}: {key}: " if key else f"{self.source}: "
-        super().__init__(where + message)
 
 
 @dataclass(frozen=True)
@@ -876,3 +867,22 @@ _BARE_KEY = re.compile(r"^[A-Za-z0-9_-]+$")
 
 def _toml_key(k: str) -> str:
     return k if _BARE_KEY.match(k) else _toml_string(k)
+
+
+def parse_sets(items: list[str] | None, source: str = "--set") -> dict[str, str]:
+    """``["table.key=value", ...]`` (the CLI's repeated ``--set``) -> ``{"table.key": "value"}``; CaseError
+    naming ``source`` for an item without ``=``."""
+    out = {}
+    for item in items or []:
+        if "=" not in item:
+            raise CaseError(source, item, "expected key=value, e.g. --set operating.axial_load=\"2 kN\"")
+        k, _, v = item.partition("=")
+        out[k.strip()] = v.strip()
+    return out
+
+
+def as_case(case, overrides=None) -> "Case":
+    """A :class:`Case` as given (with ``overrides`` applied), or loaded from a bundled name / path."""
+    if isinstance(case, Case):
+        return case.with_overrides(**overrides) if overrides else case
+    return load_case(case, **(overrides or {}))

@@ -11,8 +11,8 @@ import hashlib
 import sys
 from pathlib import Path
 
-from hsbearing import __version__
-from hsbearing.case import CaseError, DEFAULT_CASE, list_cases, load_case, parse_quantity
+from hsbearing._version import __version__
+from hsbearing.case import DEFAULT_CASE, CaseError, list_cases, load_case, parse_quantity, parse_sets
 from hsbearing.errors import SolverError
 
 
@@ -20,14 +20,7 @@ class _UsageError(Exception):
     pass
 
 
-def _parse_sets(items: list[str] | None, source: str = "--set") -> dict[str, str]:
-    out = {}
-    for item in items or []:
-        if "=" not in item:
-            raise CaseError(source, item, "expected key=value, e.g. --set operating.axial_load=\"2 kN\"")
-        k, _, v = item.partition("=")
-        out[k.strip()] = v.strip()
-    return out
+_parse_sets = parse_sets  # the older name (hsbearing.case.parse_sets)
 
 
 def _load(args) -> "object":
@@ -69,14 +62,11 @@ def _print_summary(ds, out: Path | None = None) -> None:
                 text += (f" (cage centre {(r - float(gc)) * 1e6:.2g} \u00b5m beyond the {float(gc) * 1e6:.0f} \u00b5m "
                          "guide clearance: elastic penetration of the cage-land rub contact)")
         print(f"{name}: {text}")
-    if "sfmc_ensemble" in ds:  # gyro start ensemble (simulation.start_positions > 1): mean +/- sd and each start
-        from hsbearing.models.friction import gyro
+    from hsbearing.systems import for_archive
 
-        print("\n".join(gyro.ensemble_lines(ds)))
-    if "drive_torque" in ds:  # dynamic run: drive torque and power loss by source (hsbearing.balances)
-        from hsbearing.balances import power_summary_lines
-
-        print("\n".join(power_summary_lines(ds)))
+    system = for_archive(ds)  # the system's own lines: gyro start ensemble; drive torque and power loss by source
+    for line in (system.summary_lines(ds) if system is not None else []):
+        print(line)
     if ds.attrs.get("warnings", "none") != "none":  # contact/film/cage limits (hsbearing.contact_state)
         for w in str(ds.attrs["warnings"]).split(" | "):
             print(f"warning: {w}")
@@ -148,7 +138,7 @@ def cmd_run(args) -> int:
     from hsbearing import simulate
     from hsbearing.case import check_output_samples
     from hsbearing.errors import Interrupted
-    from hsbearing.results import check_output_path, write_netcdf
+    from hsbearing.results import check_output_path
 
     if getattr(args, "continue_from", None):
         return _cmd_continue(args)
@@ -209,7 +199,7 @@ def _cmd_continue(args) -> int:
     """``hsbearing run --continue ARCHIVE.nc [--duration T] [-o OUT.nc]``: extend a run from its last state."""
     from hsbearing import dynamics
     from hsbearing.errors import Interrupted
-    from hsbearing.results import check_output_path, open_run, write_netcdf
+    from hsbearing.results import check_output_path, open_run
 
     src = Path(args.continue_from)
     if args.case or args.set:
@@ -247,7 +237,7 @@ def cmd_quasistatic(args) -> int:
         else:
             print(f"hsbearing: numerical failure: {exc}", file=sys.stderr)
         return 1
-    from hsbearing.solvers import quasistatic
+    from hsbearing import quasistatic
 
     quasistatic.print_summary(ds)
     from hsbearing.display import contact_pressure_warning
@@ -322,11 +312,15 @@ def _check_output_option(args) -> None:
 
 
 def cmd_friction(args) -> int:
-    from hsbearing import rating  # dispatch by [case] system: every ball-bearing case answers
+    from hsbearing import systems  # dispatch by [case] system: every ball-bearing case answers
 
     _check_output_option(args)
-
-    return rating.friction_cli(args)
+    case = load_case(args.case, **parse_sets(getattr(args, "set", None)))
+    out = getattr(args, "output", None)
+    system = systems.get(case)
+    if out and not str(out).endswith((".nc", ".nc4")) and system.friction_archive:
+        raise CaseError("-o", None, f"{out!r}: the archive must be a .nc file")
+    return system.friction(case, args)
 
 
 def cmd_life(args) -> int:
@@ -337,10 +331,10 @@ def cmd_life(args) -> int:
 
 
 def cmd_preload(args) -> int:
-    from hsbearing.models.friction import wire_race
+    from hsbearing.systems import wire_race
 
     _check_output_option(args)
-    return wire_race.cli_main(args)
+    return wire_race.preload_command(_load(args), args)
 
 
 def cmd_plot(args) -> int:

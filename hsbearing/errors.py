@@ -2,9 +2,18 @@
 
 from __future__ import annotations
 
-from hsbearing.case import CaseError
-
 __all__ = ["CaseError", "SolverError", "Interrupted"]
+
+
+class CaseError(ValueError):
+    """Bad input in a case file: carries the file and the key for a one-line message."""
+
+    def __init__(self, source: str, key: str | None, message: str):
+        self.source = str(source)
+        self.key = key
+        self.message = message
+        where = f"{self.source}: {key}: " if key else f"{self.source}: "
+        super().__init__(where + message)
 
 
 class SolverError(RuntimeError):

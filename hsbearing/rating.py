@@ -18,7 +18,7 @@ import numpy as np
 
 from hsbearing.results import make_dataset, register, standard_attrs
 
-__all__ = ["life", "life_lines", "quasi_static_power_loss", "friction_angular_contact", "friction_cli", "life_cli"]
+__all__ = ["life", "life_lines", "quasi_static_power_loss", "friction_angular_contact", "life_cli"]
 
 for _n, _d, _u, _l in [
     ("dynamic_load_rating", (), "N", "basic dynamic radial load rating C_r (ISO 281 5.1.1, or the case's catalogue value)"),
@@ -59,8 +59,8 @@ def life(case, *, quasistatic: bool = True):
     names above and attrs listing the inputs used (X, Y, e, nu, n) and any
     range notes (kappa outside 0.1..4 clipped).
     """
-    from hsbearing import _as_case
     from hsbearing.case import CaseError
+    from hsbearing.case import as_case as _as_case
     from hsbearing.models import geometry
     from hsbearing.models import life as L
 
@@ -100,7 +100,7 @@ def life(case, *, quasistatic: bool = True):
     warns = []
     if quasistatic:
         from hsbearing import contact_state
-        from hsbearing.solvers import quasistatic as qs
+        from hsbearing import quasistatic as qs
 
         inner_rot = abs(op.inner_speed) >= abs(op.outer_speed)  # the load is fixed in space (shaft/housing loads)
         out = {}
@@ -170,11 +170,10 @@ def life_lines(ds) -> list[str]:
 
 def life_cli(args) -> int:
     """``hsbearing life CASE [--set k=v] [-o OUT.nc]``: ISO 281 and ISO/TS 16281 lives (radial ball bearings)."""
-    from hsbearing.case import CaseError, load_case
-    from hsbearing.cli import _parse_sets
+    from hsbearing.case import CaseError, load_case, parse_sets
     from hsbearing.results import write_netcdf
 
-    case = load_case(args.case, **_parse_sets(getattr(args, "set", None)))
+    case = load_case(args.case, **parse_sets(getattr(args, "set", None)))
     out = getattr(args, "output", None)
     if out and not str(out).endswith((".nc", ".nc4")):
         raise CaseError("-o", None, f"{out!r}: the archive must be a .nc file")
@@ -275,99 +274,3 @@ def friction_angular_contact(case, speeds):
     attrs = standard_attrs(case, "ok", title="hsbearing friction: quasi-static power loss by source, SKF 2004 model",
                            note_quasi_static=_NOTE_QS, note_skf=_NOTE_SKF, warnings=" | ".join(warns) if warns else "none")
     return make_dataset(data, coords={"speed": w}, attrs=attrs)
-
-
-def friction_cli(args) -> int:
-    """``hsbearing friction CASE``: dispatch by ``[case] system`` (every ball-bearing system answers).
-
-    deep_groove: seed 003 sliding method + SKF 2004 (:func:`hsbearing.models.friction.cli_main`);
-    angular_contact: quasi-static power loss by source + SKF 2004 angular-contact model;
-    gyro_ribbon_cage: the five friction moments of seed 000 at the case thrust load (static part);
-    wire_race: seed 001 starting torque at the case preload.
-    """
-    import sys
-
-    from hsbearing.case import CaseError, load_case
-    from hsbearing.cli import _parse_sets
-    from hsbearing.models import friction
-    from hsbearing.results import write_netcdf
-
-    case = load_case(args.case, **_parse_sets(getattr(args, "set", None)))
-    out = getattr(args, "output", None)
-    if out and case.system == "gyro_ribbon_cage":
-        raise CaseError("-o", None, "the gyro friction summary writes no archive; use hsbearing run -o")
-    if out and not str(out).endswith((".nc", ".nc4")):
-        raise CaseError("-o", None, f"{out!r}: the archive must be a .nc file")
-    if case.system == "deep_groove":
-        rc = friction.cli_main(args)
-        print("note: seed 003 sliding method = spinning + differential sliding of the balls with the [friction] law "
-              "(no EHL rolling, no drag); SKF 2004 = catalogue model M_rr + M_sl (+ M_drag)")
-        return rc
-    if case.system == "gyro_ribbon_cage":
-        from hsbearing.models.friction import gyro
-
-        sf = gyro.static_friction(case)
-        print(f"case {case.name}: gyro bearing, Fa = {case.operating.axial_load:g} N, contact angle {math.degrees(sf.beta):.3g} deg")
-        print(f"  friction moments of the ball-race contacts (seed 000 Eqs. 1-2), N mm: M_E (hysteresis) = {sf.M_E * 1e3:.4g}, "
-              f"M_D (differential sliding) = {sf.M_D * 1e3:.4g}, M_S (spin) = {sf.M_S * 1e3:.4g}, M_L (viscous) = {sf.M_L * 1e3:.4g}, "
-              f"sum = {(sf.M_E + sf.M_D + sf.M_S + sf.M_L) * 1e3:.4g}")
-        print("note: cage moment M_C and the start/oscillation moments (SFMC, SFMO, RFMC) need the cage dynamics: hsbearing run "
-              f"{case.name}")
-        return 0
-    if case.system == "wire_race":
-        from hsbearing.models.friction import wire_race
-
-        delta = case.operating.preload
-        if delta is None:
-            raise CaseError(case.source, "operating.preload", "the starting torque needs the preload")
-        ds = wire_race.preload_sweep(case, np.array([delta]))
-        print(f"case {case.name}: wire-race bearing, starting torque at the case preload (seed 001 Eqs. 4, 11)")
-        for line in wire_race._format_table(ds):
-            print(line)
-        print(f"note: preload sweep and target window: hsbearing preload {case.name}")
-        from hsbearing.models.limits import ISO76_BALL_PRESSURE
-
-        top = max(float(np.nanmax(ds[f"p_max{j}"].values)) for j in range(1, 5) if f"p_max{j}" in ds)
-        if top > ISO76_BALL_PRESSURE:
-            w = (f"maximum contact pressure {top * 1e-9:.3g} GPa exceeds the {ISO76_BALL_PRESSURE * 1e-9:g} GPa of ISO 76:2006 "
-                 "(static load rating of ball bearings): the raceways deform permanently")
-            ds.attrs["warnings"] = w
-            print(f"warning: {w}")
-        if out:
-            write_netcdf(ds, out)
-            print(f"archive: {out}")
-        return 0
-    # angular contact
-    from hsbearing.models.friction import parse_speeds
-
-    speeds = parse_speeds(args.speeds) if args.speeds else np.array([abs(case.operating.inner_speed)])
-    ds = friction_angular_contact(case, speeds)
-    print(f"case {case.name}: Fa = {abs(case.operating.axial_load):g} N, Fr = {math.hypot(case.operating.radial_load, case.operating.radial_load_z):g} N, "
-          f"oil {case.lubricant.oil} at {case.lubricant.temperature - 273.15:.4g} degC")
-    from hsbearing.balances import SOURCES
-
-    srcs = [s for s in SOURCES if np.any(np.abs(ds[f"qs_power_loss_{s}"].values) > 1e-9)]
-    head = ["n [r/min]"] + [f"{s} [W]" for s in srcs] + ["total [W]", "M [N mm]", "SKF M_rr", "SKF M_sl", "SKF M [N mm]", "SKF P [W]"]
-    print("quasi-static power loss by source | SKF 2004 (72xx angular contact)")
-    print("  ".join(f"{h:>14s}" for h in head))
-    for i, wi in enumerate(ds["speed"].values):
-        row = [f"{_rpm(wi):14.0f}"] + [f"{ds[f'qs_power_loss_{s}'].values[i]:14.4g}" for s in srcs]
-        row += [f"{ds.qs_power_loss.values[i]:14.4g}", f"{ds.qs_friction_torque.values[i] * 1e3:14.4g}",
-                f"{ds.skf_rolling_torque.values[i] * 1e3:14.4g}", f"{ds.skf_sliding_torque.values[i] * 1e3:14.4g}",
-                f"{ds.skf_total_torque.values[i] * 1e3:14.4g}", f"{ds.skf_total_torque.values[i] * abs(wi):14.4g}"]
-        print("  ".join(row))
-    print("note: " + _NOTE_QS)
-    print("note: " + _NOTE_SKF)
-    if case.friction.law == "coulomb":
-        print("note: friction.law = coulomb selects the seed 003 deep-groove sliding method with a dry constant mu; it is not "
-              "used for angular-contact bearings (the traction law of the oil is)")
-    print("the dynamic run (hsbearing run) adds the pocket and whirling-cage losses: power_loss_<source> in its archive")
-    if ds.attrs.get("warnings", "none") != "none":
-        for x in str(ds.attrs["warnings"]).split(" | "):
-            print(f"warning: {x}")
-    if out:
-        write_netcdf(ds, out)
-        print(f"archive: {out}")
-    sys.stdout.flush()
-    return 0
-

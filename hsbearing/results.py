@@ -175,7 +175,7 @@ def _clean_attrs(attrs: Mapping[str, Any]) -> dict[str, Any]:
 
 def standard_attrs(case=None, status: str = "ok", **extra) -> dict[str, Any]:
     """Global attrs every archive carries: package version, case TOML text, status, creation time."""
-    from hsbearing import __version__
+    from hsbearing._version import __version__
 
     attrs: dict[str, Any] = {
         "Conventions": "CF-1.8",

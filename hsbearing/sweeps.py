@@ -66,8 +66,17 @@ from typing import Any, Callable, Iterable, Mapping, Sequence
 import numpy as np
 import xarray as xr
 
-from hsbearing.case import (DIMENSIONS, SCHEMA, Case, CaseError, check_output_samples, load_case, loads_case,
-                            parse_quantity, resolve_key)
+from hsbearing.case import (
+    DIMENSIONS,
+    SCHEMA,
+    Case,
+    CaseError,
+    check_output_samples,
+    load_case,
+    loads_case,
+    parse_quantity,
+    resolve_key,
+)
 from hsbearing.errors import SolverError
 from hsbearing.results import VARIABLES, check_output_path, register, standard_attrs, write_netcdf
 
@@ -362,18 +371,18 @@ def dynamic_summary(ds: xr.Dataset) -> dict[str, Any]:
     """Scalars of a dynamic run, by :func:`hsbearing.analysis.summary` (the analysis module's).
 
     A gyro ribbon-cage run (``attrs["model"] == "gyro_ribbon_cage"``) is summarised by
-    :func:`hsbearing.models.friction.gyro.summary` instead: SFMC/SFMO/RFMC and their statistics (with the
+    :func:`hsbearing.systems.gyro.model.summary` instead: SFMC/SFMO/RFMC and their statistics (with the
     start-ensemble SFMC mean and sd when ``simulation.start_positions`` > 1), none
     of the whirl / classification / contact-load fields, which do not apply to that model.
     """
-    if ds.attrs.get("model") == "gyro_ribbon_cage":
-        from hsbearing.models.friction import gyro
+    from hsbearing import systems
 
-        return gyro.summary(ds)
-    from hsbearing import analysis
-
-    s = analysis.summary(ds)
-    return {k: v for k, v in dict(s).items() if k != "status"}
+    system = systems.for_archive(ds)
+    if ds.attrs.get("model") == "gyro_ribbon_cage":  # a gyro run, also one whose attrs lost the case system
+        system = systems.get("gyro_ribbon_cage")
+    if system is None or system.run_summary is None:
+        system = systems.get("angular_contact")
+    return system.run_summary(ds)
 
 
 def _scalar(v: Any) -> Any:
@@ -399,11 +408,11 @@ def _compute_point(case: Case, kind: str, duration, point_fn) -> tuple[dict, xr.
         if point_fn is not None:
             ds = point_fn(case, duration)
         elif kind == "quasistatic":
-            from hsbearing import quasi_static
+            from hsbearing.quasistatic import solve_case
 
-            ds = quasi_static(case)
+            ds = solve_case(case)
         else:
-            from hsbearing import simulate
+            from hsbearing.systems import simulate
 
             ds = simulate(case, duration=duration)
         rec["status"] = str(ds.attrs.get("status", STATUS_OK))
@@ -621,7 +630,7 @@ class _LocalPool:
                     on_done(key, rec, ds)
                 if broken:
                     # every other in-flight point died with the pool: suspects too
-                    for f, (key, args) in futs.items():
+                    for _f, (key, args) in futs.items():
                         suspects.append((key, args))
                     futs.clear()
                     self.ex.shutdown(wait=True, cancel_futures=True)
@@ -969,8 +978,9 @@ def _summary_attrs(name: str) -> dict:
 def assemble(plan: SweepPlan, records: Sequence[dict], *, archive_prefix: str = "", attrs: Mapping | None = None) -> xr.Dataset:
     """The sweep Dataset: a dim per varied key (or ``point``), summaries + record variables."""
     shape, dims = plan.shape, plan.dims
-    if plan.base.system == "gyro_ribbon_cage":  # its summary variables are declared there (units, long_name)
-        import hsbearing.models.friction.gyro  # noqa: F401
+    from hsbearing import systems
+
+    systems.get(plan.base).register_outputs()  # its summary variables are declared there (units, long_name)
     # the run summaries are computed in the workers: declare their variables here too (units, long_name),
     # or a sweep with -j >= 2 or a scheduler writes them bare
     import hsbearing.analysis.orbit  # noqa: F401

@@ -29,7 +29,8 @@ _RPM = 60 / (2 * math.pi)
 
 @pytest.fixture
 def figures(monkeypatch):
-    """The Figure objects the code saves (plotting.save_figure and its alias _save), in order."""
+    """The Figure objects the code saves (plotting.save_figure, which every figure module calls as
+    hsbearing.plotting.common.save_figure), in order."""
     got = []
     real = plotting.save_figure
 
@@ -38,7 +39,7 @@ def figures(monkeypatch):
         return real(fig, path, *a, **k)
 
     monkeypatch.setattr(plotting, "save_figure", capture)
-    monkeypatch.setattr(plotting, "_save", capture)
+    monkeypatch.setattr(plotting.common, "save_figure", capture)
     return got
 
 
@@ -108,7 +109,7 @@ def _gyro_dataset(n=400):
     mc = np.where((t > 0.08) & (t < 0.09), 4e-6, 0.0) - np.where((t > 0.15) & (t < 0.16), 3e-6, 0.0)
     src = {"friction_moment_viscous": 0.05e-6, "friction_moment_hysteresis": 0.858e-6,
            "friction_moment_differential": 0.893e-6, "friction_moment_pivoting": 0.970e-6}
-    from hsbearing.models.friction import gyro  # noqa: F401  (registers the gyro variables)
+    from hsbearing.systems.gyro import model as gyro  # noqa: F401  (registers the gyro variables)
 
     data = {k: np.full(n, v) for k, v in src.items()}
     data["friction_moment_cage"] = mc
@@ -451,7 +452,7 @@ def test_compile_notice_comes_before_the_bar_and_compilation_before_integration(
 
 def test_start_ensemble_bars_say_which_start(monkeypatch):
     """A 5-start gyro run shows five progress bars: each is labelled "start k/5" (they were identical)."""
-    from hsbearing.models.friction import gyro
+    from hsbearing.systems.gyro import model as gyro
 
     descs = []
 

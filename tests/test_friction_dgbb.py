@@ -19,7 +19,8 @@ from scipy.integrate import quad
 
 from hsbearing import load_case
 from hsbearing.cli import main as cli
-from hsbearing.models.friction import friction_torque, parse_speeds, skf2004, sliding_prl as sp
+from hsbearing.models.friction import skf2004, sliding_prl as sp
+from hsbearing.systems.deep_groove.friction import friction_torque, parse_speeds
 from hsbearing.case import CaseError
 from hsbearing.results import open_run
 
@@ -195,7 +196,7 @@ def test_coulomb_law_is_speed_independent_and_scales_with_mu():
 
 
 def _ball_state(Fa, Fr):
-    from hsbearing.models.friction import contact_states
+    from hsbearing.systems.deep_groove.friction import contact_states
 
     case = _case(Fa, Fr)
     return contact_states(case)
@@ -345,7 +346,7 @@ def test_static_contacts_match_the_quasistatic_solver_without_inertia():
     """Independent cross-check: our static distribution = hsbearing.solvers.quasistatic with
     centrifugal and gyroscopic effects off (Fa = Fr = 1 kN, free tilt)."""
     from hsbearing.solvers import quasistatic  # part of the package: missing is an error, not a skip
-    from hsbearing.models.friction import contact_states
+    from hsbearing.systems.deep_groove.friction import contact_states
 
     case = _case(1000, 1000)
     psi, Q, al, _ = contact_states(case)

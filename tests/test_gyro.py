@@ -16,7 +16,7 @@ import pytest
 
 import hsbearing
 from hsbearing.case import CaseError
-from hsbearing.models.friction import gyro
+from hsbearing.systems.gyro import model as gyro  # the gyro system (physics: hsbearing.models.friction.gyro)
 
 DATA = Path(__file__).parent / "data"
 

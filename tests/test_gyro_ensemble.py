@@ -16,7 +16,7 @@ import hsbearing
 from hsbearing import cli
 from hsbearing.case import CaseError
 from hsbearing.errors import SolverError
-from hsbearing.models.friction import gyro
+from hsbearing.systems.gyro import model as gyro
 from hsbearing.results import open_run, write_netcdf
 
 T = 0.3  # short starts: one "oscillation_period" of 0.3 s each (the impacts of a start are over by then)

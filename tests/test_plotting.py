@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import sys
-import types
 
 import numpy as np
 import pytest
@@ -84,13 +83,11 @@ def test_quasi_static_figure(case, tmp_path):
 
 
 def test_gyro_dispatch(monkeypatch, tmp_path):
-    calls = []
-    fake = types.ModuleType("hsbearing.models.friction.gyro")
-    fake.plot_run = lambda ds, path: calls.append(path) or path
-    monkeypatch.setitem(sys.modules, "hsbearing.models.friction.gyro", fake)
-    import hsbearing.models.friction as fr
+    """A gyro archive is drawn by the gyro system's figure (hsbearing.systems.gyro.figures.plot_gyro)."""
+    import hsbearing.systems.gyro.figures as gyro_figures
 
-    monkeypatch.setattr(fr, "gyro", fake, raising=False)
+    calls = []
+    monkeypatch.setattr(gyro_figures, "plot_gyro", lambda ds, path: calls.append(path) or path)
     ds = make_dataset({}, attrs={"model": "gyro_ribbon_cage"})
     assert plotting.plot_run(ds, tmp_path / "g.png") == tmp_path / "g.png"
     assert calls == [tmp_path / "g.png"]

@@ -15,7 +15,8 @@ import xarray as xr
 
 import hsbearing
 from hsbearing import cli, sweeps
-from hsbearing.models.friction import gyro
+from hsbearing.systems.gyro import model as gyro
+from hsbearing.systems.gyro import studies
 from hsbearing.results import open_run
 
 # Fields of the rolling-element dynamics summary (hsbearing.analysis.summary) that are meaningless for the gyro model.
@@ -88,7 +89,7 @@ def test_study_goes_through_the_sweep_and_matches_simulate(tmp_path):
     """gyro.study runs its points through hsbearing.sweeps (archives in out_dir) and gives exactly the run of
     simulate(override(case, key=value)) -- same case text, so the same (chaotic) trajectory."""
     c = hsbearing.load_case("jiang2014_gyro")
-    res = gyro.study(c, "pocket_clearance", [0.02e-3], duration=0.03, out_dir=tmp_path)
+    res = studies.study(c, "pocket_clearance", [0.02e-3], duration=0.03, out_dir=tmp_path)
     assert (tmp_path / "sweep.nc").exists() and len(list(tmp_path.glob("jiang2014_gyro-*.nc"))) == 1
     # A = 0.02 mm is k = 0.67 mm, written as in the case file (bit-identical k, hence the same trajectory)
     direct = gyro.simulate(gyro.override(c, **{"cage.pocket_depth": "0.67 mm"}), duration=0.03)

@@ -19,7 +19,7 @@ import pytest
 
 from hsbearing import load_case
 from hsbearing.case import CaseError
-from hsbearing.models.friction import wire_race as wr
+from hsbearing.systems.wire_race import model as wr  # the wire-race system (closed forms: hsbearing.models.friction.wire_race)
 from hsbearing.models.hertz import reduced_modulus
 from hsbearing.results import open_run
 

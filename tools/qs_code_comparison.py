@@ -19,7 +19,7 @@ import numpy as np
 from hsbearing import load_case
 from hsbearing.models import hertz
 from hsbearing.models import quasistatic_physics as qp
-from hsbearing.solvers import quasistatic as qs
+from hsbearing import quasistatic as qs
 
 RPM = math.pi / 30.0
 # the 7206-type bearing of issue 3 (also tests/test_quasistatic.py B7206)

@@ -12,9 +12,9 @@ Note: ``hsbearing.analysis.classify`` is the *function* (the module is
 
 from __future__ import annotations
 
-from hsbearing.analysis.slip import cage_slip_ratio, theoretical_cage_speed
-from hsbearing.analysis.poincare import poincare_points
 from hsbearing.analysis.classify import classify
 from hsbearing.analysis.orbit import annotate, summary
+from hsbearing.analysis.poincare import poincare_points
+from hsbearing.analysis.slip import cage_slip_ratio, theoretical_cage_speed
 
 __all__ = ["theoretical_cage_speed", "cage_slip_ratio", "annotate", "summary", "poincare_points", "classify"]

@@ -515,7 +515,7 @@ def classification_detail(label: str, t, y, z, cage_speed, clearance: float, *,
                   "whirl_cage_ratio": None, "harmonic": None, "reason": ""}
     if label != "1 period":
         return "", info
-    from hsbearing.analysis.orbit import whirl_frequency
+    from hsbearing.analysis.spectrum import whirl_frequency
 
     t = np.asarray(t, float)
     y = np.asarray(y, float)

@@ -33,6 +33,7 @@ from hsbearing.analysis.classify import cage_instability_index as _instability
 from hsbearing.analysis.classify import classification_detail as _detail
 from hsbearing.analysis.classify import classify as _classify
 from hsbearing.analysis.slip import cage_slip_ratio, raceway_control_cage_speed, theoretical_cage_speed
+from hsbearing.analysis.spectrum import whirl_frequency  # noqa: F401 - public here as before
 from hsbearing.results import VARIABLES, register
 
 _trapz = getattr(np, "trapezoid", None) or np.trapz  # numpy < 2 has only trapz
@@ -88,36 +89,6 @@ def _case_from_attrs(ds):
     from hsbearing.case import loads_case
 
     return loads_case(text, source=str(ds.attrs.get("case_source", "<archive case_toml>")))
-
-
-def whirl_frequency(t, y, z) -> float:
-    """Dominant (signed) frequency [Hz] of the planar motion (y, z) sampled at times ``t`` [s].
-
-    Resamples to a uniform grid if needed, removes the mean, applies a Hann
-    window and refines the largest non-zero FFT peak of y + i z by a parabola
-    through the log magnitudes.  NaN if fewer than 16 samples.
-    """
-    t = np.asarray(t, float)
-    if len(t) < 16 or not np.all(np.isfinite(y)) or not np.all(np.isfinite(z)):
-        return float("nan")
-    dt = np.diff(t)
-    if np.ptp(dt) > 1e-6 * np.mean(dt):
-        tu = np.linspace(t[0], t[-1], len(t))
-        y, z, t = np.interp(tu, t, y), np.interp(tu, t, z), tu
-    h = (t[-1] - t[0]) / (len(t) - 1)
-    s = (np.asarray(y) - np.mean(y)) + 1j * (np.asarray(z) - np.mean(z))
-    n = len(s)
-    X = np.abs(np.fft.fft(s * np.hanning(n)))
-    f = np.fft.fftfreq(n, h)
-    X[0] = 0.0
-    k = int(np.argmax(X))
-    if X[k] == 0.0:
-        return 0.0
-    km, kp = (k - 1) % n, (k + 1) % n
-    a, b, c = np.log(X[km] + 1e-300), np.log(X[k] + 1e-300), np.log(X[kp] + 1e-300)
-    den = a - 2 * b + c
-    delta = 0.5 * (a - c) / den if den < 0 else 0.0
-    return float(f[k] + delta / (n * h))
 
 
 def whirl_metrics(ds, transient=None) -> dict[str, float]:

@@ -195,7 +195,7 @@ def guide_lands(case) -> GuideLands:
     g = derive(case)
     notes = []
     if guidance == "outer_ring":
-        dkey, d_land, surf, surf_key = "bearing.outer_land_diameter", b.outer_land_diameter, c.outside_diameter, "cage.outside_diameter"
+        dkey, d_land, surf, _surf_key = "bearing.outer_land_diameter", b.outer_land_diameter, c.outside_diameter, "cage.outside_diameter"
         if d_land is not None and surf is not None and d_land <= surf:
             raise GuideLandError(dkey, f"outer-ring land diameter {d_land*1e3:g} mm is not larger than the cage outside "
                                        f"diameter {surf*1e3:g} mm (land inside the cage)")
@@ -204,7 +204,7 @@ def guide_lands(case) -> GuideLands:
                                        f"diameter {g.do*1e3:.4g} mm")
         rho, r_g = 0.5 * g.do - g.ro, g.ro
     else:
-        dkey, d_land, surf, surf_key = "bearing.inner_land_diameter", b.inner_land_diameter, c.bore_diameter, "cage.bore_diameter"
+        dkey, d_land, surf, _surf_key = "bearing.inner_land_diameter", b.inner_land_diameter, c.bore_diameter, "cage.bore_diameter"
         if d_land is not None and surf is not None and d_land >= surf:
             raise GuideLandError(dkey, f"inner-ring land diameter {d_land*1e3:g} mm is not smaller than the cage bore "
                                        f"{surf*1e3:g} mm (land inside the cage)")

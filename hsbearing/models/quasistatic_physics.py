@@ -1,7 +1,7 @@
 """Physics of the high-speed quasi-static ball bearing model (Jones 1960, Harris & Kotzalas).
 
 Pure, vectorised functions (arrays over balls) used by
-:mod:`hsbearing.solvers.quasistatic`: the groove curvature-centre geometry of a
+:mod:`hsbearing.quasistatic`: the groove curvature-centre geometry of a
 loaded ball, Hertz loads, ball centrifugal force and gyroscopic moment,
 race-control kinematics, the ball equilibrium residual and the reaction of the
 balls on the inner ring.

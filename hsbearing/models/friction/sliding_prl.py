@@ -497,7 +497,7 @@ def solve_ball(state: ContactState, D: float, dm: float, outer_speed_ratio: floa
         ws = float(np.dot(omega_B - Omega, n))
         wBt = omega_B - np.dot(omega_B, n) * n
         Omt = Omega - np.dot(Omega, n) * n
-        tang = lambda v: v - np.sum(v * c["normals"], axis=1)[:, None] * c["normals"]
+        tang = lambda v: v - np.sum(v * c["normals"], axis=1)[:, None] * c["normals"]  # noqa: B023 - used in this iteration
         v_c = np.cross(omega_B, cpt) - np.cross(Omega, cpt - A0)
         v_spin = tang(ws * np.cross(n, r))  # spinning about the contact normal
         v_rot = tang(np.broadcast_to(v_c, r.shape))  # rigid slip of the ball at the contact centre

@@ -1,0 +1,118 @@
+"""The angular-contact ball bearing (seed 004, Zhang et al. 2016): the 6-DOF dynamic model with cage
+(:mod:`hsbearing.dynamics`, wrapped here), its quasi-static start (:mod:`hsbearing.quasistatic`), the
+quasi-static power loss by source with the SKF 2004 cross-check (``hsbearing friction``) and the run
+figures (:mod:`hsbearing.systems.angular_contact.figures`)."""
+
+from __future__ import annotations
+
+import math
+import sys
+
+import numpy as np
+
+from hsbearing.systems.base import System
+
+__all__ = ["SYSTEM", "simulate", "build_model", "summary_lines", "run_summary", "friction_command", "archive_kind"]
+
+
+def simulate(case, duration=None, progress: bool = False, **kwargs):
+    """The dynamic run (:func:`hsbearing.dynamics.simulate`)."""
+    from hsbearing import dynamics
+
+    return dynamics.simulate(case, duration=duration, progress=progress, **kwargs)
+
+
+def build_model(case, **kwargs):
+    """The dynamic model object (:func:`hsbearing.dynamics.build_model`)."""
+    from hsbearing import dynamics
+
+    return dynamics.build_model(case, **kwargs)
+
+
+def summary_lines(ds) -> list[str]:
+    """Drive torque and power loss by source of a dynamic run (:func:`hsbearing.balances.power_summary_lines`)."""
+    if "drive_torque" not in ds:
+        return []
+    from hsbearing.balances import power_summary_lines
+
+    return list(power_summary_lines(ds))
+
+
+def run_summary(ds) -> dict:
+    """Scalars of a dynamic run for a sweep table (:func:`hsbearing.analysis.summary`, without ``status``)."""
+    from hsbearing import analysis
+
+    return {k: v for k, v in dict(analysis.summary(ds)).items() if k != "status"}
+
+
+def friction_command(case, args) -> int:
+    """``hsbearing friction CASE``: quasi-static power loss by source and the SKF 2004 angular-contact model."""
+    from hsbearing.rating import _NOTE_QS, _NOTE_SKF, _rpm, friction_angular_contact
+    from hsbearing.results import write_netcdf
+    from hsbearing.systems.deep_groove.friction import parse_speeds
+
+    out = getattr(args, "output", None)
+    speeds = parse_speeds(args.speeds) if args.speeds else np.array([abs(case.operating.inner_speed)])
+    ds = friction_angular_contact(case, speeds)
+    print(f"case {case.name}: Fa = {abs(case.operating.axial_load):g} N, Fr = {math.hypot(case.operating.radial_load, case.operating.radial_load_z):g} N, "
+          f"oil {case.lubricant.oil} at {case.lubricant.temperature - 273.15:.4g} degC")
+    from hsbearing.balances import SOURCES
+
+    srcs = [s for s in SOURCES if np.any(np.abs(ds[f"qs_power_loss_{s}"].values) > 1e-9)]
+    head = ["n [r/min]"] + [f"{s} [W]" for s in srcs] + ["total [W]", "M [N mm]", "SKF M_rr", "SKF M_sl", "SKF M [N mm]", "SKF P [W]"]
+    print("quasi-static power loss by source | SKF 2004 (72xx angular contact)")
+    print("  ".join(f"{h:>14s}" for h in head))
+    for i, wi in enumerate(ds["speed"].values):
+        row = [f"{_rpm(wi):14.0f}"] + [f"{ds[f'qs_power_loss_{s}'].values[i]:14.4g}" for s in srcs]
+        row += [f"{ds.qs_power_loss.values[i]:14.4g}", f"{ds.qs_friction_torque.values[i] * 1e3:14.4g}",
+                f"{ds.skf_rolling_torque.values[i] * 1e3:14.4g}", f"{ds.skf_sliding_torque.values[i] * 1e3:14.4g}",
+                f"{ds.skf_total_torque.values[i] * 1e3:14.4g}", f"{ds.skf_total_torque.values[i] * abs(wi):14.4g}"]
+        print("  ".join(row))
+    print("note: " + _NOTE_QS)
+    print("note: " + _NOTE_SKF)
+    if case.friction.law == "coulomb":
+        print("note: friction.law = coulomb selects the seed 003 deep-groove sliding method with a dry constant mu; it is not "
+              "used for angular-contact bearings (the traction law of the oil is)")
+    print("the dynamic run (hsbearing run) adds the pocket and whirling-cage losses: power_loss_<source> in its archive")
+    if ds.attrs.get("warnings", "none") != "none":
+        for x in str(ds.attrs["warnings"]).split(" | "):
+            print(f"warning: {x}")
+    if out:
+        write_netcdf(ds, out)
+        print(f"archive: {out}")
+    sys.stdout.flush()
+    return 0
+
+
+def archive_kind(ds) -> str | None:
+    """``"run"`` (a time series) or ``"quasistatic"`` (per-ball contact loads): the fallback kinds, asked last."""
+    if "time" in ds.dims:
+        return "run"
+    if "inner_contact_load" in ds or "outer_contact_load" in ds:
+        return "quasistatic"
+    return None
+
+
+def _plot_dynamic(ds, path):
+    from hsbearing.systems.angular_contact.figures import plot_dynamic
+
+    return plot_dynamic(ds, path)
+
+
+def _plot_quasistatic(ds, path):
+    from hsbearing.systems.angular_contact.figures import plot_quasistatic
+
+    return plot_quasistatic(ds, path)
+
+
+def _register_outputs():
+    import hsbearing.analysis.orbit  # noqa: F401 - the run summary variables
+
+
+SYSTEM = System(
+    name="angular_contact",
+    description="angular-contact ball bearing: 6-DOF dynamics with cage (seed 004), quasi-static equilibrium",
+    friction=friction_command, simulate=simulate, build_model=build_model, summary_lines=summary_lines,
+    run_summary=run_summary, archive_kind=archive_kind, fallback=True,
+    figures={"run": _plot_dynamic, "quasistatic": _plot_quasistatic}, register_outputs=_register_outputs,
+)
