@@ -159,7 +159,7 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
         raise TypeError(f"unknown model option(s): {', '.join(sorted(unknown))}")
     opt = dict(MODEL_DEFAULTS, **options)
     g = derive(case)
-    b, cg = case.bearing, case.cage
+    cg = case.cage
     for key, val in (("cage.outside_diameter", cg.outside_diameter), ("cage.width", cg.width),
                      ("cage.bore_diameter", cg.bore_diameter)):
         if val is None:

@@ -50,9 +50,9 @@ from typing import Any, Callable
 import numpy as np
 import xarray as xr
 
-from hsbearing.case import DIMENSIONS, CaseError, load_case, parse_quantity
-from hsbearing.results import open_run, write_netcdf, atomic_write, register
 from hsbearing import sweeps
+from hsbearing.case import DIMENSIONS, CaseError, load_case, parse_quantity
+from hsbearing.results import atomic_write, open_run, register, write_netcdf
 
 __all__ = ["list_studies", "study_help", "load_study", "run_study", "normalise_label", "write_report", "cli_main",
            "BandSample", "band_samples", "latin_hypercube", "band_cell_stats", "write_band_report",

@@ -64,13 +64,20 @@ def _invalidate_stale_cache() -> None:
 _invalidate_stale_cache()
 
 from hsbearing.models.ball import ball_equations_of_motion, ehl_rolling_force, groove_contact, hertz_normal_load
-from hsbearing.models.cage import (cage_equations_of_motion, cage_generalised_moments, cage_orientation, guide_land_forces, guide_land_power,
-                                   guide_land_torque, pocket_friction_factor, smooth_eccentricity)
+from hsbearing.models.cage import (
+    cage_equations_of_motion,
+    cage_generalised_moments,
+    cage_orientation,
+    guide_land_forces,
+    guide_land_power,
+    guide_land_torque,
+    pocket_friction_factor,
+    smooth_eccentricity,
+)
 from hsbearing.models.drag import ball_drag_force
 from hsbearing.models.pocket import pocket_wrench
 from hsbearing.models.power import couple_power, elastic_energy_hertz, normal_damping_power, sliding_power
-from hsbearing.models.ring import (inner_groove_centre, ring_equations_of_motion, tilt_generalised_moments,
-                                   tilt_rotation)
+from hsbearing.models.ring import inner_groove_centre, ring_equations_of_motion, tilt_generalised_moments, tilt_rotation
 from hsbearing.models.traction.zhang2016 import coefficients_nb, mu_nb
 
 # ---------------------------------------------------------------------------- parameter indices
@@ -559,7 +566,7 @@ def global_rows(y, P, csum, ydot, gaux):
     cg = 9 * Z
     rg = cg + 12
     yc, zc = y[cg + 1], y[cg + 2]
-    vyc, vzc, phd, psyd, pszd = y[cg + 7], y[cg + 8], y[cg + 9], y[cg + 10], y[cg + 11]
+    phd, psyd, pszd = y[cg + 9], y[cg + 10], y[cg + 11]
     Rc, (wcx, wcy, wcz), Jc = cage_orientation(y[cg + 3], y[cg + 4], y[cg + 5], phd, psyd, pszd)
     Fly, Flz, Mlx, Mtx, Mty, Mtz, Mring, Pland, Uland = guide_land_loads(y, P, Rc, wcx, wcy, wcz)
     inner_guided = P[P_GUIDE] == 2.0

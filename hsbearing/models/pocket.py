@@ -368,7 +368,7 @@ def pocket_film_wrench(ex, et, s0, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, 
     # half-angles tau/2 = -pi/2 + (i + 1/2) dtau/2 by a rotation recurrence (no tan per station)
     ch, sh = math.sin(0.25 * dtau), -math.cos(0.25 * dtau)
     cd, sd = math.cos(0.5 * dtau), math.sin(0.5 * dtau)
-    for i in range(n_st):
+    for _i in range(n_st):
         # station_angle in rational form: T = k tan(tau/2), cos = (1 - T^2)/(1 + T^2), sin = 2 T/(1 + T^2)
         tq = sh / ch
         ch, sh = ch * cd - sh * sd, sh * cd + ch * sd

@@ -64,8 +64,8 @@ __all__ = [
     "coefficients",
     "dimensionless_groups",
     "traction_coefficient",
-    "coefficients_nb",
-    "mu_nb",
+    "coefficients_nb",  # noqa: F822 (module __getattr__, lazy numba import)
+    "mu_nb",  # noqa: F822 (module __getattr__, lazy numba import)
 ]
 
 #: Slip scale [-] of the tanh regularisation of a nonzero mu(0+) (printed Eq. 4 only).
