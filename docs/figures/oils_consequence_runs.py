@@ -72,6 +72,47 @@ def one(oil, T_C, reading, duration):
     return rec
 
 
+def from_archive(oil, T_C, reading, duration, nc, over=None):
+    """The record of :func:`one` computed from an existing run archive (e.g. a study point) instead of a new run."""
+    from hsbearing.results import open_run
+
+    over = over or {"lubricant.oil": oil, "lubricant.temperature": f"{T_C:g} degC"}
+    case = hsbearing.load_case("zhang2016", **over)
+    ds = open_run(nc)
+    rec = {"oil": oil, "T_C": T_C, "reading": reading, "duration": duration, "overrides": over, "archive": str(nc),
+           "status": ds.attrs.get("status"), "solver_steps": int(ds.attrs.get("solver_steps", -1))}
+    s = orbit.summary(ds, case)
+    for k in ("classification", "whirl_frequency_ratio", "mean_cage_slip_ratio", "whirl_amplitude",
+              "whirl_radius_max", "n_poincare_points", "transient_discarded"):
+        rec[k] = s.get(k)
+    mask, _ = pc.after_transient(ds)
+    idx = np.nonzero(mask)[0]
+    b = pitch_deg(ds["ball_angular_velocity_x"].values[idx].astype(float),
+                  ds["ball_angular_velocity_y"].values[idx].astype(float))
+    rec["pitch_deg"], rec["pitch_deg_std"] = float(np.mean(b)), float(np.std(b))
+    v = "inner_slide_roll_ratio"
+    if v in ds:
+        rec["inner_srr_rms"] = float(np.sqrt(np.mean(ds[v].values[idx].astype(float) ** 2)))
+    return rec
+
+
+def chosen_from_study(study_dir, out):
+    """Append the "chosen" records of Table 3 from a nominal `hsbearing study zhang2016 -o STUDY_DIR`."""
+    import pathlib
+
+    import xarray as xr
+
+    d = pathlib.Path(study_dir)
+    t3 = xr.open_dataset(d / "table3.nc")
+    for oil in t3.oil.values:
+        for i, T in enumerate(t3.temperature.values):
+            nc = d / str(t3["archive"].sel(oil=oil).values[i])
+            rec = from_archive(str(oil), round(float(T) - 273.15, 2), "chosen", 1.2, nc)
+            with open(out, "a") as fh:
+                fh.write(json.dumps(rec) + "\n")
+            print(json.dumps(rec), flush=True)
+
+
 def table(path):
     """Markdown table: old vs chosen side by side per (oil, T)."""
     recs = {}
@@ -102,6 +143,9 @@ def table(path):
 
 
 def main(argv):
+    if argv[1] == "--chosen-from-study":  # --chosen-from-study STUDY_DIR OUT.jsonl
+        chosen_from_study(argv[2], argv[3])
+        return
     if argv[1] == "--table":
         print(table(argv[2]))
         return
