@@ -28,6 +28,8 @@ from hsbearing.solvers.state import StateLayout
 
 __all__ = ["DynamicModel", "build_model", "simulate", "MODEL_DEFAULTS", "mechanical_energy"]
 
+from hsbearing.balances import mechanical_energy  # noqa: E402  (issue 19: defined there; no import circle)
+
 #: Model constants not in the case file (documented in docs/dynamics.md, overridable by build_model kwargs).
 MODEL_DEFAULTS = {
     "quadrature_points": 5,  # Gauss-Legendre strips across the contact ellipse
@@ -148,7 +150,7 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
         switches off the dissipative EHL rolling force, whatever ``ehl_rolling`` says)
     ehl_rolling : EHL rolling force F_R (and F_H)
     drag : air-oil drag F_D on the balls
-    initial : "quasistatic" (initial state from :func:`hsbearing.solvers.quasistatic.solve_case`)
+    initial : "quasistatic" (initial state from :func:`hsbearing.quasistatic.solve_case`)
         or "nominal" (balls on the pitch circle at the free contact angle, cage at the epicyclic speed)
     **options : overrides of :data:`MODEL_DEFAULTS`
     """
@@ -283,7 +285,7 @@ def initial_state(case, layout: StateLayout, g, kind: str = "quasistatic"):
     Z = layout.Z
     info = {"initial": kind}
     if kind == "quasistatic":
-        from hsbearing.solvers import quasistatic
+        from hsbearing import quasistatic
 
         qs = quasistatic.solve_case(case)
         # all balls start at the cage speed: the quasi-static race-control orbit speeds of lightly
@@ -321,37 +323,6 @@ def initial_state(case, layout: StateLayout, g, kind: str = "quasistatic"):
         raise ValueError(f"unknown initial state kind {kind!r} (quasistatic, nominal)")
     cage = {"phi_c": 0.0, "phidot_c": wc, **cage_fit}
     return layout.pack(ball, cage, ring), info
-
-
-def mechanical_energy(model: DynamicModel, y) -> np.ndarray:
-    """Total mechanical energy [J] at states ``y`` (..., N): kinetic + Hertz + pocket and land elastic - work of the loads.
-
-    For the energy test with ``friction=False, damping=False`` (then this is
-    a constant of motion).  The inner ring's prescribed spin does no work on
-    frictionless contacts; its spin kinetic energy is constant and omitted.
-    """
-    y = np.atleast_2d(y)
-    L = model.layout
-    P = model.P
-    u = L.unpack(y)
-    rb, th = L.ball_radius(y, P[K.P_DM]), L.ball_azimuth(y)
-    mb, Ib = P[K.P_MB], P[K.P_IB]
-    E = 0.5 * mb * (u["xdot_b"] ** 2 + u["udot_b"] ** 2 + (rb * u["thetadot_b"]) ** 2).sum(-1)
-    E += 0.5 * Ib * (u["omega_x"] ** 2 + u["omega_y"] ** 2 + u["omega_z"] ** 2).sum(-1)
-    E += 0.5 * P[K.P_MC] * (u["xdot_c"] ** 2 + u["ydot_c"] ** 2 + u["zdot_c"] ** 2)
-    E += 0.5 * P[K.P_IPC] * u["phidot_c"] ** 2 + 0.5 * P[K.P_IDC] * (u["tiltdot_y_c"] ** 2 + u["tiltdot_z_c"] ** 2)
-    E += 0.5 * P[K.P_MI] * (u["xdot_i"] ** 2 + u["ydot_i"] ** 2 + u["zdot_i"] ** 2)
-    E += 0.5 * P[K.P_IDI] * (u["tiltdot_y_i"] ** 2 + u["tiltdot_z_i"] ** 2)
-    E -= P[K.P_FX] * u["x_i"] + P[K.P_FY] * u["y_i"] + P[K.P_FZ] * u["z_i"]
-    E -= P[K.P_MY] * u["tilt_y_i"] + P[K.P_MZ] * u["tilt_z_i"]
-    gr = P[K.P_GRAV]  # potential of gravity along -Y
-    E += gr * (mb * (rb * np.cos(th)).sum(-1) + P[K.P_MC] * u["y_c"] + P[K.P_MI] * u["y_i"])
-    # elastic energies 2/5 K delta^2.5 of the race and pocket contacts and of the cage rubbing the land,
-    # from the kernel's own approaches (aux U_el, gaux U_land: valid with damping on as well)
-    for k in range(y.shape[0]):
-        aux, gaux = model.outputs(y[k])
-        E[k] += aux[:, K.AUX_INDEX["U_el"]].sum() + gaux[K.GAUX_INDEX["U_land"]]
-    return E
 
 
 def _time_grid(duration, dt):
@@ -595,7 +566,7 @@ def to_dataset(model: DynamicModel, t, Y, stats, status="ok", annotate: bool = T
     for name, arr in data.items():
         if name not in keep64 and np.ndim(arr) == 2:
             data[name] = np.asarray(arr, dtype=np.float32)
-    import hsbearing.solvers.quasistatic  # noqa: F401  (registers the shared ball/ring names)
+    import hsbearing.quasistatic  # noqa: F401  (registers the shared ball/ring names)
     attrs = results.standard_attrs(
         case, status, model="zhang2016_dynamics", guide_clearance=geom.guide_clearance,
         pocket_clearance=geom.pocket_clearance, theoretical_cage_speed_nominal=wth,

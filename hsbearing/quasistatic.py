@@ -798,7 +798,7 @@ def to_dataset(sol: QuasiStaticSolution, case=None, status: str = "ok") -> xr.Da
         if hc is not None:
             data["inner_film_thickness_central"], data["outer_film_thickness_central"] = hc
     attrs = dict(
-        model="quasi-static Jones-Harris (hsbearing.solvers.quasistatic)",
+        model="quasi-static Jones-Harris (hsbearing.quasistatic)",
         kinematics=P.control,
         lambda_inner=float(_split(P)[0].mean()),
         lambda_outer=float(_split(P)[1].mean()),

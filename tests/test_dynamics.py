@@ -355,7 +355,7 @@ def test_pure_axial_steady_state_matches_quasistatic(case, steady_run):
     between 3 and 15 deg); loads, angles and cage speed still agree with the
     couple-free solution within 2 % / 1 %.
     """
-    from hsbearing.solvers import quasistatic
+    from hsbearing import quasistatic
 
     qs = quasistatic.solve_case(case, gyroscopic=False)
     ds = steady_run
@@ -425,7 +425,7 @@ def test_combined_load_ring_position_matches_quasistatic():
     solution (without gyroscopic couple, see test (a)) within 3 %, and the largest ball loads
     (ball passing the load line) within 3 %.  Measured: x_i -0.7 %, y_i +1.2 %, tilt 2.7e-3 rad +1.5 %,
     Q_i,max +0.9 %, Q_o,max +1.0 %."""
-    from hsbearing.solvers import quasistatic
+    from hsbearing import quasistatic
 
     case = h.load_case("zhang2016", **{"operating.radial_load": "500 N"})
     ds = dy.simulate(case, duration=0.06, annotate=False, gravity=0.0)

@@ -343,9 +343,9 @@ def test_static_load_distribution_equilibrium(Fa, Fr):
 
 
 def test_static_contacts_match_the_quasistatic_solver_without_inertia():
-    """Independent cross-check: our static distribution = hsbearing.solvers.quasistatic with
+    """Independent cross-check: our static distribution = hsbearing.quasistatic with
     centrifugal and gyroscopic effects off (Fa = Fr = 1 kN, free tilt)."""
-    from hsbearing.solvers import quasistatic  # part of the package: missing is an error, not a skip
+    from hsbearing import quasistatic  # part of the package: missing is an error, not a skip
     from hsbearing.systems.deep_groove.friction import contact_states
 
     case = _case(1000, 1000)
@@ -421,7 +421,7 @@ def test_axial_load_sign_mirrors():
 def test_quasistatic_contacts_centrifugal_raises_high_speed_torque():
     """With the project's quasi-static solver (centrifugal force on) the outer contacts load up at
     15000 r/min and M_sl rises above the static value; at 500 r/min the two agree (< 0.5 %)."""
-    from hsbearing.solvers import quasistatic  # part of the package: missing is an error, not a skip
+    from hsbearing import quasistatic  # part of the package: missing is an error, not a skip
     case = _case(500, 0, **{"friction.law": "coulomb"})
     qs = friction_torque(case, "500,15000rpm", contacts="quasistatic")["sliding_torque"].values
     st = friction_torque(case, "500,15000rpm")["sliding_torque"].values

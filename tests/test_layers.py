@@ -27,21 +27,7 @@ LAYER_RULES = {
 }
 
 # (importer, imported) -> reason.  Each must be a real edge today (test_exceptions_still_needed).
-ALLOWED: dict[tuple[str, str], str] = {
-    ("hsbearing.models.friction.skf2004", "hsbearing.case"):
-        "issue 19: CaseError now lives in hsbearing.errors; skf2004.py is edited by another branch this "
-        "session (lit), so its import line changes after that merge",
-    ("hsbearing.models.traction.zhang2016", "hsbearing.models.traction._kernels"):
-        "issue 19: import circle (zhang2016 compiles _kernels lazily, _kernels reads zhang2016's constants); "
-        "models/traction/ is edited by another branch this session (lit)",
-    ("hsbearing.solvers.quasistatic", "hsbearing.quasistatic"):
-        "issue 19: backwards-compatible path of the quasi-static equilibrium (now hsbearing.quasistatic); "
-        "dynamics.py (edited by another branch this session, perf2) and users' scripts import the old path",
-    ("hsbearing.balances", "hsbearing.dynamics"):
-        "issue 19: import circle (balances reads dynamics.mechanical_energy, dynamics registers balances' "
-        "variables); dynamics.py is edited by another branch this session (perf2): move mechanical_energy "
-        "to balances or models/ after that merge",
-}
+ALLOWED: dict[tuple[str, str], str] = {}  # issue 19: zero exceptions (the last four removed in session 4)
 
 
 def _modules() -> dict[str, Path]:
@@ -160,11 +146,3 @@ def test_no_import_cycles():
 def test_exceptions_still_needed(edge):
     a, b = edge
     assert b in GRAPH.get(a, set()), f"{a} no longer imports {b}: remove the exception from ALLOWED"
-
-
-def test_old_quasistatic_path_is_the_same_module():
-    """``hsbearing.solvers.quasistatic`` (the path before issue 19) is the very module ``hsbearing.quasistatic``."""
-    import hsbearing.quasistatic as new
-    from hsbearing.solvers import quasistatic as old
-
-    assert old is new and old.solve_case is new.solve_case

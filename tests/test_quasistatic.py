@@ -26,7 +26,7 @@ from hsbearing.errors import SolverError
 from hsbearing.models import hertz
 from hsbearing.models import quasistatic_physics as qp
 from hsbearing.models.geometry import curvature_radii
-from hsbearing.solvers import quasistatic as qs
+from hsbearing import quasistatic as qs
 
 RPM = math.pi / 30.0
 DEG = math.pi / 180.0

@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 
 from hsbearing.models import traction
+from hsbearing.models.traction import _kernels
 from hsbearing.models.geometry import curvature_radii
 from hsbearing.models.hertz import reduced_modulus
 from hsbearing.models.traction import zhang2016
@@ -523,9 +524,9 @@ def test_numba_kernel_matches_numpy(lid):
     A, B, C, D = zhang2016.coefficients(lid, W, U, T, EP, R)
     ref = zhang2016.traction_coefficient(A, B, C, D, S)
     for i in range(len(W)):
-        c = zhang2016.coefficients_nb(lid, W[i], U[i], T[i], EP, R[i])
+        c = _kernels.coefficients_nb(lid, W[i], U[i], T[i], EP, R[i])
         np.testing.assert_allclose(c, (A[i], B[i], C[i], D[i]), rtol=1e-12, atol=0)
-        assert zhang2016.mu_nb(*c, S[i]) == pytest.approx(ref[i], rel=1e-12, abs=1e-300)
+        assert _kernels.mu_nb(*c, S[i]) == pytest.approx(ref[i], rel=1e-12, abs=1e-300)
 
 
 def test_numba_kernel_callable_from_nopython_code():
@@ -535,8 +536,8 @@ def test_numba_kernel_callable_from_nopython_code():
     def total(n):
         acc = 0.0
         for j in range(n):
-            A, B, C, D = zhang2016.coefficients_nb(lid, 100.0 + j, 15.0, 403.15, EP, RX)
-            acc += zhang2016.mu_nb(A, B, C, D, 0.01 * (j % 7 - 3))
+            A, B, C, D = _kernels.coefficients_nb(lid, 100.0 + j, 15.0, 403.15, EP, RX)
+            acc += _kernels.mu_nb(A, B, C, D, 0.01 * (j % 7 - 3))
         return acc
 
     val = total(1000)
@@ -545,10 +546,10 @@ def test_numba_kernel_callable_from_nopython_code():
 
 def test_numba_kernel_survives_zero_load_and_speed():
     for lid in range(len(zhang2016.PARAMS)):
-        c = zhang2016.coefficients_nb(lid, 0.0, 0.0, 403.15, EP, RX)
+        c = _kernels.coefficients_nb(lid, 0.0, 0.0, 403.15, EP, RX)
         if traction.law_id("4050", "printed") != lid:
             assert all(math.isfinite(x) for x in c)
-            assert math.isfinite(zhang2016.mu_nb(*c, 0.1))
+            assert math.isfinite(_kernels.mu_nb(*c, 0.1))
 
 
 # ----------------------------------------------------------------------------
@@ -624,5 +625,5 @@ def test_property_default_laws_odd_bounded_and_kernel_equal(oil, S, W, U, T, R):
     assert abs(m) < 0.2
     assert float(mu(-S, W, U, T, EP, R)) == -m
     assert m * S >= 0.0  # traction has the sign of the slip
-    c = zhang2016.coefficients_nb(traction.law_id(oil), W, U, T, EP, R)
-    assert zhang2016.mu_nb(*c, S) == pytest.approx(m, rel=1e-12, abs=1e-15)
+    c = _kernels.coefficients_nb(traction.law_id(oil), W, U, T, EP, R)
+    assert _kernels.mu_nb(*c, S) == pytest.approx(m, rel=1e-12, abs=1e-15)

@@ -78,7 +78,7 @@ from hsbearing.models.drag import ball_drag_force
 from hsbearing.models.pocket import pocket_wrench
 from hsbearing.models.power import couple_power, elastic_energy_hertz, normal_damping_power, sliding_power
 from hsbearing.models.ring import inner_groove_centre, ring_equations_of_motion, tilt_generalised_moments, tilt_rotation
-from hsbearing.models.traction.zhang2016 import coefficients_nb, mu_nb
+from hsbearing.models.traction._kernels import coefficients_nb, mu_nb
 
 # ---------------------------------------------------------------------------- parameter indices
 _names = """Z D m_b I_b rho_i g_i off_i rho_o g_o off_o K_i K_o cd_i cd_o acoef_i acoef_o

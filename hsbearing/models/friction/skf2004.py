@@ -71,7 +71,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from hsbearing.case import CaseError
+from hsbearing.errors import CaseError
 
 __all__ = [
     "SeriesConstants",

@@ -3,7 +3,7 @@
 ``get(oil, law="default")`` returns a callable ``mu(S, W, U, T, E, R)`` (SI; T in
 kelvin; E = reduced modulus E', R = Rx); ``contact_mu`` evaluates it from the
 physical contact quantities; ``law_id`` gives the integer id used by the numba
-kernels ``zhang2016.coefficients_nb`` / ``zhang2016.mu_nb`` of the dynamics hot
+kernels ``_kernels.coefficients_nb`` / ``_kernels.mu_nb`` of the dynamics hot
 path.  Conventions and the decision per oil: docs/traction.md.
 ``OILS`` maps the closed vocabulary of oil names to their Table 1 data
 (seed 004): eta0 [Pa s], alpha [1/Pa], beta [1/degC], K [N/(s degC)].
@@ -55,7 +55,7 @@ def _resolve(oil, law: str = "default") -> tuple[str, str]:
 
 
 def law_id(oil, law: str = "default") -> int:
-    """Integer id of a law for the numba kernels ``zhang2016.coefficients_nb(law_id, ...)``."""
+    """Integer id of a law for the numba kernels ``_kernels.coefficients_nb(law_id, ...)``."""
     return zhang2016.LAWS[_resolve(oil, law)]
 
 

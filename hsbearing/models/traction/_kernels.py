@@ -2,7 +2,7 @@
 
 Twins of :func:`hsbearing.models.traction.zhang2016.coefficients` and
 :func:`~hsbearing.models.traction.zhang2016.traction_coefficient`; reached as
-``zhang2016.coefficients_nb`` / ``zhang2016.mu_nb`` (lazy, so that importing the
+``hsbearing.models.traction._kernels`` (a module of its own, so that importing the
 registry does not import numba).  Equations and references: see zhang2016.
 """
 

@@ -64,8 +64,6 @@ __all__ = [
     "coefficients",
     "dimensionless_groups",
     "traction_coefficient",
-    "coefficients_nb",  # noqa: F822 (module __getattr__, lazy numba import)
-    "mu_nb",  # noqa: F822 (module __getattr__, lazy numba import)
 ]
 
 #: Slip scale [-] of the tanh regularisation of a nonzero mu(0+) (printed Eq. 4 only).
@@ -332,12 +330,7 @@ def traction_coefficient(A, B, C, D, S):
 
 
 # ----------------------------------------------------------------------------
-# numba kernels (defined in _kernels.py, imported lazily so that loading a case does not import numba)
+# numba kernels: hsbearing.models.traction._kernels (coefficients_nb, mu_nb), a separate module so that
+# loading a case does not import numba and this module imports nothing back (no import circle)
 
 
-def __getattr__(name):
-    if name in ("coefficients_nb", "mu_nb"):
-        from hsbearing.models.traction import _kernels
-
-        return getattr(_kernels, name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

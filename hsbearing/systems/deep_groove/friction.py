@@ -98,7 +98,7 @@ def contact_states(case, speed=None, source: str = "static", tilt: bool = True, 
     ``tilt=True`` lets the inner ring tilt under the given moment
     (``operating.moment_z``, about the axis normal to the radial load F_y),
     the seed's 5-DOF loading {F_x, F_y, F_z, M_x, M_y}; False holds it square.
-    ``source="quasistatic"``: :func:`hsbearing.solvers.quasistatic.solve_case`
+    ``source="quasistatic"``: :func:`hsbearing.quasistatic.solve_case`
     at ``speed`` with (``centrifugal=True``) or without ball inertia effects.
 
     Returns (psi, Q, alpha, [ContactState per ball]).
