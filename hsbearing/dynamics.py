@@ -6,7 +6,7 @@ initial state from the quasi-static solution, compiled ``rhs`` and arrowhead
 and returns the run Dataset over ``time`` and ``ball``.
 
 The model, every term with its source and every regularisation: docs/dynamics.md.
-State layout: :mod:`hsbearing.solvers.state`.
+State layout: :mod:`hsbearing.models.state`.
 """
 
 from __future__ import annotations
@@ -24,7 +24,7 @@ from hsbearing.models import kernel as K
 from hsbearing.models.ball import strip_load_weights
 from hsbearing.models.drag import mixture_density
 from hsbearing.models.geometry import curvature_radii, derive
-from hsbearing.solvers.state import StateLayout
+from hsbearing.models.state import StateLayout
 
 __all__ = ["DynamicModel", "build_model", "simulate", "MODEL_DEFAULTS", "mechanical_energy"]
 
@@ -401,7 +401,7 @@ def simulate(case, duration=None, progress: bool = False, *, model: DynamicModel
 
 results.register("final_state", ("state",), "SI",
                  "state vector at the last output time, SI unit of each component (restart point of run --continue)")
-results.register("state", ("state",), "1", "state-vector component (hsbearing.solvers.state layout)")
+results.register("state", ("state",), "1", "state-vector component (hsbearing.models.state layout)")
 
 
 def _is_interrupt(status: str) -> bool:
@@ -572,7 +572,7 @@ def to_dataset(model: DynamicModel, t, Y, stats, status="ok", annotate: bool = T
         pocket_clearance=geom.pocket_clearance, theoretical_cage_speed_nominal=wth,
         initial_state=model.info.get("initial"), friction=int(model.info["friction"]),
         damping=int(model.info["damping"]), model_options=model.info["options"],
-        state_layout="hsbearing.solvers.state (state-major, 9 Z + 22)",
+        state_layout="hsbearing.models.state (state-major, 9 Z + 22)",
         precision="per-ball forces, speeds, angles and ratios float32; positions and cage/ring variables float64",
     )
     attrs.update(results.solver_attrs(stats))

@@ -83,7 +83,7 @@ ATTR_UNITS: dict[str, str] = {
     "transient_discarded": "s", "cage_slip_contact_angle": "rad",
     # solver statistics
     "solver_wall_time": "s", "solver_total_wall_time": "s", "solver_wall_time_s": "s", "solver_rtol": "1",
-    "solver_atol": "SI unit of each state times its scale (hsbearing.solvers.state.ATOL_SCALE)",
+    "solver_atol": "SI unit of each state times its scale (hsbearing.models.state.ATOL_SCALE)",
     # quasi-static equilibrium
     "inner_speed": "rad/s", "outer_speed": "rad/s", "applied_loads": "N, N, N, N m, N m (F_x, F_y, F_z, M_y, M_z)",
     # gyro bearing (seed 000 model)

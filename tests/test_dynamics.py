@@ -13,7 +13,7 @@ import pytest
 import hsbearing as h
 from hsbearing import dynamics as dy
 from hsbearing.models import ball, cage, drag, ring
-from hsbearing.solvers.state import StateLayout
+from hsbearing.models.state import StateLayout
 
 
 @pytest.fixture(scope="module")
@@ -291,7 +291,12 @@ def test_rings_turning_together_carry_balls_and_cage_rigidly():
     m = dy.build_model(case, initial="nominal", drag=False, gravity=0.0)
     ds = dy.simulate(case, duration=2e-3, model=m, annotate=False)
     assert np.allclose(ds.cage_speed.values / w, 1.0, atol=1e-4)
-    assert np.allclose(ds.ball_orbit_speed.values / w, 1.0, atol=1e-4)
+    # The balls settle from the nominal start: with the limiting-shear floor of the traction law at zero rolling
+    # speed (issue 15; mu <= Lambda instead of the old blow-up that locked them at once) the orbit speed deviates
+    # by up to 1.9e-4 in the first 0.2 ms (measured), then by < 2e-5 and 1e-7 at the end.
+    late = ds.time.values >= 0.5 * float(ds.time[-1])
+    assert np.allclose(ds.ball_orbit_speed.values / w, 1.0, atol=5e-4)
+    assert np.allclose(ds.ball_orbit_speed.values[late] / w, 1.0, atol=1e-5)
     assert np.allclose(ds.ball_angular_velocity_x.values[-1] / w, 1.0, atol=1e-4)
     for race in ("inner", "outer"):
         slip = ds[f"{race}_slide_roll_ratio"].values * ds[f"{race}_rolling_speed"].values

@@ -33,7 +33,7 @@ from hsbearing import dynamics as dy
 
 RPM = math.pi / 30.0
 
-# ball-state signs under Z -> -Z, in hsbearing.solvers.state.BALL_STATES order:
+# ball-state signs under Z -> -Z, in hsbearing.models.state.BALL_STATES order:
 # x_b, u_b, theta_rel_b, xdot_b, udot_b, thetadot_b, omega_x, omega_y, omega_z (ball frame: x axial, y radial,
 # z along increasing theta -- a reflected ball's z axis is the reflection of -z, so omega_z keeps its sign)
 _BALL_MIRROR = (1, 1, -1, 1, 1, -1, -1, -1, 1)

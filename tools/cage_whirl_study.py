@@ -405,7 +405,7 @@ def linear_modes(t_settle=0.04, n_snap=3, **opts):
     import hsbearing
     from hsbearing.dynamics import build_model
     from hsbearing.solvers.cvode import integrate
-    from hsbearing.solvers.state import BALL_STATES, CAGE_STATES
+    from hsbearing.models.state import BALL_STATES, CAGE_STATES
 
     case = hsbearing.load_case("zhang2016")
     model = build_model(case, gravity=0.0, **opts)

@@ -5,7 +5,7 @@ lives in the named functions of :mod:`hsbearing.models.ball`,
 :mod:`~hsbearing.models.cage`, :mod:`~hsbearing.models.ring`,
 :mod:`~hsbearing.models.drag` and the traction law of
 :mod:`hsbearing.models.traction.zhang2016`; this module only assembles them
-over the balls.  State layout: :mod:`hsbearing.solvers.state`.  Parameter
+over the balls.  State layout: :mod:`hsbearing.models.state`.  Parameter
 vector: the ``P_*`` indices below, filled by :func:`hsbearing.dynamics.build_model`.
 
 Structure (used by the Jacobian): :func:`ball_loop` computes, for each ball
