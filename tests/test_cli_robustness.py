@@ -366,8 +366,12 @@ def _progress(buf: bytes) -> float:
 
 def test_ctrl_c_keeps_partial_run_and_continue_extends_it(tmp_path, capsys):
     out = tmp_path / "int.nc"
+    # SIGINT restored to its default in the child: a pytest-xdist worker may run with SIGINT ignored, which a
+    # child inherits (Python then installs no KeyboardInterrupt handler); a user's shell does not do that.  Seen
+    # in CI on 2026-11-24 (the run went to the end, exit 0); tests/test_sweeps.py does the same.
     p = subprocess.Popen([HSBEARING, "run", "zhang2016", "--duration", "0.5s", "-o", str(out), "--no-plot"],
-                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=tmp_path)
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=tmp_path,
+                         preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     os.set_blocking(p.stderr.fileno(), False)
     buf, t0 = b"", time.time()
     while _progress(buf) <= 0 and time.time() - t0 < 400 and p.poll() is None:  # wait for integration (after the JIT)
