@@ -188,8 +188,8 @@ def _finish_run(ds, out: Path, args) -> int:
 
 
 def _power_figure(ds, run_png: Path) -> None:
-    """Second figure of a dynamic run: power loss by source and drive torque (hsbearing.plotting_power)."""
-    from hsbearing import plotting_power
+    """Second figure of a dynamic run: power loss by source and drive torque (hsbearing.systems.angular_contact.power_figure)."""
+    from hsbearing.systems.angular_contact import power_figure as plotting_power
 
     if plotting_power.has_power(ds):
         print(f"figure: {plotting_power.plot_power(ds, plotting_power.power_figure_path(run_png))}")

@@ -145,7 +145,7 @@ def _power_run(case):
 
 
 def test_power_figure(case, tmp_path):
-    from hsbearing import plotting_power
+    from hsbearing.systems.angular_contact import power_figure as plotting_power
 
     ds = _power_run(case)
     assert plotting_power.has_power(ds) and not plotting_power.has_power(cage_run("k", case, n_rev=5))
@@ -159,7 +159,7 @@ def test_power_figure(case, tmp_path):
 
 def test_power_figure_moving_mean_against_convolution():
     """The smoothing of panels (a)-(b): a centred moving mean, checked against numpy's convolution inside."""
-    from hsbearing.plotting_power import _moving_mean
+    from hsbearing.systems.angular_contact.power_figure import _moving_mean
 
     t = np.arange(200) * 1e-5
     y = np.random.default_rng(0).standard_normal(200)
