@@ -9,7 +9,8 @@ one run:
 - microseconds per right-hand-side call (Python wrapper as CVODE calls it, and the bare kernel) and per
   compiled arrowhead Jacobian;
 - for every span (default 20 ms and 100 ms simulated):
-  * CVODE BDF in normal mode (one C call per output interval; the default of ``simulate``): steps, rhs and
+  * CVODE BDF in normal mode (one C call per output interval) with ``dynamics.SOLVER_SETTINGS`` (what
+    ``simulate`` runs), and the same with CVODE's own defaults ("defaults"): steps, rhs and
     Jacobian evaluations, error-test and convergence failures, LU setups, wall and CPU seconds, microseconds
     per step, simulated ms per wall second, and the per-step cost beyond rhs + Jacobian as a fraction of
     their cost;
@@ -72,8 +73,9 @@ def main(argv=None) -> int:
     import hsbearing as h
     from hsbearing import dynamics as dy
     from hsbearing.models import kernel as K
-    from hsbearing.solvers.cvode import integrate
+    from hsbearing.solvers.cvode import counters_available, integrate
 
+    settings = dict(dy.SOLVER_SETTINGS) if counters_available() else {}
     print(f"load average at start: {_load()} ({os.cpu_count()} cores); {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}")
     t0 = time.perf_counter()
     case = h.load_case(args.case)
@@ -105,6 +107,7 @@ def main(argv=None) -> int:
     if not args.no_scipy:
         for jj in (None, jac):
             solve_ivp(f, (0.0, 2e-6), m.y0, method="BDF", rtol=rtol, atol=atol, **({"jac": jj} if jj else {}))
+    print(f"CVODE settings of simulate(): {settings or 'CVODE defaults'}; 'defaults' rows: CVODE's own")
     print(f"case {case.name}: {L.Z} balls, {y.size} states, rtol {rtol:g}, output every {dt * 1e6:g} us; "
           f"build + compile/cache load + warm-up {time.perf_counter() - t0:.1f} s")
 
@@ -116,13 +119,13 @@ def main(argv=None) -> int:
           f"Jacobian: {t_jac[0] * 1e6:.0f} / {t_jac[1] * 1e6:.0f} us per call ({t_jac[1] / t_ker[1]:.0f} kernel-equivalents)")
     rhs_us, jac_us = t_rhs[1] * 1e6, t_jac[1] * 1e6  # CPU per call, the least load-sensitive figure
 
-    def cvode_run(span, stepping):
+    def cvode_run(span, stepping, settings):
         t_eval = dy._time_grid(span, min(dt, span))
 
         def go():
             c0, w0 = time.process_time(), time.perf_counter()
             r = integrate(m.rhs, m.y0, t_eval, rtol=rtol, atol=atol, jacfn=m.jac, stepping=stepping,
-                          linsolver=args.linsolver)
+                          linsolver=args.linsolver, cvode_settings=settings)
             return r, time.perf_counter() - w0, time.process_time() - c0
 
         return _best(go, args.repeat)
@@ -142,10 +145,14 @@ def main(argv=None) -> int:
     summary = []
     for span in spans:
         print(f"\n== {span * 1e3:g} ms simulated (load {_load()})")
-        modes = ["normal"] + ([] if args.no_onestep else ["onestep"])
+        # "normal": what simulate() runs (normal mode + dynamics.SOLVER_SETTINGS); "defaults": the same with
+        # CVODE's own msbp/msbj; "onestep": the previous path with simulate's settings (bit-identical check)
+        modes = {"normal": ("normal", settings), "defaults": ("normal", {})}
+        if not args.no_onestep:
+            modes["onestep"] = ("onestep", settings)
         cv = {}
-        for mode in modes:
-            r, wall, cpu = cvode_run(span, mode)
+        for mode, (stepping, sets) in modes.items():
+            r, wall, cpu = cvode_run(span, stepping, sets)
             cv[mode] = (r, wall, cpu)
             st = r.stats
             n = max(st["steps"], 1)
@@ -158,6 +165,8 @@ def main(argv=None) -> int:
                   f"({span / cpu * 1e3:.1f} per CPU second); {wall / n * 1e6:.1f} us wall / {cpu / n * 1e6:.1f} us CPU "
                   f"per step, of which rhs + Jacobian {work_us:.1f} us -> overhead {over / work_us * 100:.0f} % of "
                   f"their cost; mean cage speed {mean_cage_speed(r.t, r.y):.2f} rad/s")
+        print(f"    simulate()'s settings vs CVODE defaults: {cv['defaults'][2] / cv['normal'][2]:.2f}x CPU "
+              f"(one trajectory each: the step count moves +-15 % with the last bit, see solver_settings_ensemble.py)")
         if "onestep" in cv:
             a, b = cv["onestep"][0], cv["normal"][0]
             same = a.y.shape == b.y.shape and np.array_equal(a.y, b.y)

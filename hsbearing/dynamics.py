@@ -26,7 +26,7 @@ from hsbearing.models.drag import mixture_density
 from hsbearing.models.geometry import curvature_radii, derive
 from hsbearing.models.state import StateLayout
 
-__all__ = ["DynamicModel", "build_model", "simulate", "MODEL_DEFAULTS", "mechanical_energy"]
+__all__ = ["DynamicModel", "build_model", "simulate", "MODEL_DEFAULTS", "SOLVER_SETTINGS", "mechanical_energy"]
 
 from hsbearing.balances import mechanical_energy  # noqa: E402  (issue 19: defined there; no import circle)
 
@@ -47,6 +47,14 @@ MODEL_DEFAULTS = {
     "land_contact_K": 6e9,  # N/m^1.5, elastic rub of the cage on the land beyond the clearance
     "gravity": 9.81,  # m/s^2 along -Y (horizontal shaft); 0 switches it off
 }
+
+#: CVODE optional inputs used by :func:`simulate` (docs/dynamics.md, "Newton matrix reuse"; issue 18):
+#: rebuild the Newton matrix I - gamma J (one dense LU) at most every 50 steps instead of CVODE's 20, and
+#: re-evaluate the Jacobian at most every 200 steps instead of 51.  Neither changes what a step must satisfy
+#: (the same local error test, the same Newton convergence test): the corrector converges in ~1.1 iterations
+#: per step with either, and CVODE still refreshes both at once on a convergence failure or a large change
+#: of gamma.  Applied when CVODE's solver memory can be reached (``counters_available``), else CVODE's defaults.
+SOLVER_SETTINGS = {"LSetupFrequency": 50, "JacEvalFrequency": 200}
 
 for _n, _d, _u, _l in [
     ("cage_center_x", ("time",), "m", "cage mass-centre axial displacement along X"),
@@ -333,7 +341,7 @@ def _time_grid(duration, dt):
 
 def simulate(case, duration=None, progress: bool = False, *, model: DynamicModel | None = None,
              rtol=None, atol=None, jacobian: str = "arrowhead", wall_limit=None, annotate: bool = True,
-             y0=None, t0: float = 0.0, **model_kwargs):
+             y0=None, t0: float = 0.0, cvode_settings: dict | None = None, **model_kwargs):
     """Integrate the dynamic model of ``case`` and return the run Dataset over ``time`` and ``ball``.
 
     Parameters
@@ -347,6 +355,8 @@ def simulate(case, duration=None, progress: bool = False, *, model: DynamicModel
     wall_limit : stop with a SolverError after this many wall seconds
     y0, t0 : start state and time [s] (default: the model's initial state at 0); used by
         :func:`continue_run` to extend an archived run from its ``final_state``
+    cvode_settings : CVODE optional inputs (:data:`hsbearing.solvers.cvode.CVODE_SETTINGS`); None =
+        :data:`SOLVER_SETTINGS` when reachable, ``{}`` = CVODE's own defaults
 
     Raises
     ------
@@ -354,8 +364,10 @@ def simulate(case, duration=None, progress: bool = False, *, model: DynamicModel
     hsbearing.errors.Interrupted (a KeyboardInterrupt) on Ctrl-C, with ``partial`` = the Dataset up to
     the last output (status "interrupted at t = ...").
     """
-    from hsbearing.solvers.cvode import integrate
+    from hsbearing.solvers.cvode import counters_available, integrate
 
+    if cvode_settings is None:
+        cvode_settings = dict(SOLVER_SETTINGS) if counters_available() else {}
     if isinstance(duration, str):
         from hsbearing.case import parse_quantity
 
@@ -379,7 +391,7 @@ def simulate(case, duration=None, progress: bool = False, *, model: DynamicModel
     try:
         res = integrate(m.rhs, m.y0 if y0 is None else np.asarray(y0, dtype=float), t_eval, rtol=rtol, atol=atol_v,
                         jacfn=m.jac if jacobian == "arrowhead" else None, progress=progress,
-                        progress_desc=f"{case.name}", wall_limit=wall_limit)
+                        progress_desc=f"{case.name}", wall_limit=wall_limit, cvode_settings=cvode_settings)
     except KeyboardInterrupt:  # an integrator that lets Ctrl-C through: nothing to keep
         raise Interrupted("interrupted before the first output") from None
     stats = dict(res.stats)

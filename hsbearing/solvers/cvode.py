@@ -40,6 +40,7 @@ normal mode the wall-time limit is checked after each output interval.
 from __future__ import annotations
 
 import ctypes
+import functools
 import glob
 import math
 import os
@@ -191,8 +192,9 @@ def _apply_settings(counters: "_CvodeCounters | None", settings: dict | None) ->
             raise ValueError(f"CVodeSet{name}({value!r}) failed with flag {flag}")
 
 
+@functools.lru_cache(maxsize=1)
 def counters_available() -> bool:
-    """True if CVODE's own counters can be read (normal-mode stepping available)."""
+    """True if CVODE's own counters (and ``cvode_settings``) can be reached (normal-mode stepping available)."""
     solver = sun.cvode.CVODE(lambda t, y, yp: None)
     solver.init_step(0.0, np.zeros(1))
     return _CvodeCounters.locate(solver) is not None
