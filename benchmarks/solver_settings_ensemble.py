@@ -1,6 +1,6 @@
 """Do the solver settings of ``simulate`` change what a user reads?  Ensemble statistics, two settings (issue 18).
 
-    .venv/bin/python benchmarks/solver_settings_ensemble.py [--span 0.1] [--members 4] [--cases default,radial]
+    .venv/bin/python benchmarks/solver_settings_ensemble.py [--span 0.1] [--members 4] [--cases default,radial,axial100,axial6k]
 
 The cage motion is chaotic in phase: any change of the arithmetic -- a CVODE setting, the LU pivoting, the
 last bit of the start -- moves one trajectory beyond the tolerance within about a millisecond.  A solver setting
@@ -20,7 +20,9 @@ import time
 
 import numpy as np
 
-CASES = {"default": {}, "radial": {"operating.radial_load": "1000 N", "lubricant.oil": "4106"}}
+CASES = {"default": {}, "radial": {"operating.radial_load": "1000 N", "lubricant.oil": "4106"},
+         "axial100": {"operating.axial_load": "100 N"},
+         "axial6k": {"operating.axial_load": "6000 N", "lubricant.oil": "4050"}}
 
 
 def statistics(ds) -> dict[str, float]:
@@ -52,7 +54,8 @@ def ensemble(case, span, members, settings, model):
         c0 = time.process_time()
         ds = simulate(case, span, model=model, y0=y0, cvode_settings=settings, annotate=False)
         info.append({"cpu": time.process_time() - c0, "steps": int(ds.attrs["solver_steps"]),
-                     "jac": int(ds.attrs["solver_jac_evals"]), "lu": int(ds.attrs["solver_linear_solver_setups"])})
+                     "jac": int(ds.attrs["solver_jac_evals"]), "lu": int(ds.attrs["solver_linear_solver_setups"]),
+                     "ncf": int(ds.attrs["solver_nonlinear_convergence_failures"])})
         out.append(statistics(ds))
     return out, info
 
@@ -90,7 +93,7 @@ def main(argv=None) -> int:
         for lab, info in (("CVODE defaults", ia), (f"SOLVER_SETTINGS {SOLVER_SETTINGS}", ib)):
             print(f"  {lab}: CPU {np.mean([i['cpu'] for i in info]):.2f} s per member, steps "
                   f"{np.mean([i['steps'] for i in info]):.0f}, Jacobians {np.mean([i['jac'] for i in info]):.0f}, "
-                  f"LU {np.mean([i['lu'] for i in info]):.0f}")
+                  f"LU {np.mean([i['lu'] for i in info]):.0f}, convergence failures {np.mean([i['ncf'] for i in info]):.1f}")
         print(f"  {'statistic':40s} {'defaults':>12s} {'settings':>12s} {'z':>6s}")
         for key, (ma, mb, z) in compare(sa, sb).items():
             print(f"  {key:40s} {ma:12.5g} {mb:12.5g} {z:6.2f}")
