@@ -74,10 +74,27 @@ def coefficients_nb(law_id, W, U, T_K, E, R):
     return A, B * s, C * s, D
 
 
+# |x| beyond which tanh(x) rounds to +-1 in double precision: 1 - tanh(x) = 2/(e^(2x) + 1) < 2^-54 for x > 19.1
+_TANH_ONE = 20.0
+
+
 @numba.njit(cache=True, nogil=True)
 def mu_nb(A, B, C, D, S):
-    """Scalar numba twin of :func:`traction_coefficient` (odd in S) [-]."""
+    """Scalar numba twin of :func:`traction_coefficient` (odd in S) [-].
+
+    Two libm calls at most (issue 18): e^(-C|S|) is taken as 1 + expm1(-C|S|) (absolute error <= 2^-53, so
+    the term B |S| e^(-C|S|) moves by at most B |S| 2^-53: round-off of mu), and tanh(S/S_EPS) is +-1
+    exactly (rounded) beyond |S/S_EPS| = 20, where it is not called.
+    """
     s = abs(S)
     mu0 = A + D
     sg = 1.0 if S > 0.0 else (-1.0 if S < 0.0 else 0.0)
-    return sg * (A * math.expm1(-C * s) + B * s * math.exp(-C * s)) + mu0 * math.tanh(S / S_EPS)
+    em1 = math.expm1(-C * s)
+    x = S / S_EPS
+    if x > _TANH_ONE:
+        th = 1.0
+    elif x < -_TANH_ONE:
+        th = -1.0
+    else:
+        th = math.tanh(x)
+    return sg * (A * em1 + B * s * (1.0 + em1)) + mu0 * th
