@@ -194,6 +194,7 @@ def _race_contact(P, qu, qw, Q, nx, nr, nt, x, r, vx, vr, thd, wx, wy, wz,
     if fric > 0.0:
         A, B, C, Dd = coefficients_nb(int(P[P_LAW]), Q, U, P[P_TK], P[P_EP], Rx)
         a = acoef * np.cbrt(Q)  # semi-major axis, constant ellipticity
+        iU = 1.0 / U
         seps = P[P_SEPS]
         # symmetric nodes (qu[n-1-k] = -qu[k], Gauss-Legendre): phi of the mirror node is exactly -phi, so its
         # cos is the same and its sin changes sign -- half the cos/sin calls (issue 18); the nodes are visited
@@ -224,10 +225,10 @@ def _race_contact(P, qu, qw, Q, nx, nr, nt, x, r, vx, vr, thd, wx, wy, wz,
                 dvx, dvr, dvt = bx - gx, br - gr, bt - gt
                 s1 = dvx * t1x + dvr * t1r + dvt * t1t
                 s2 = dvx * ux + dvr * ur + dvt * ut
-                Sreg = math.sqrt(s1 * s1 + s2 * s2 + seps * seps) / U
-                mu = mu_nb(A, B, C, Dd, Sreg)
+                sreg = math.sqrt(s1 * s1 + s2 * s2 + seps * seps)  # regularised slip speed [m/s]
+                mu = mu_nb(A, B, C, Dd, sreg * iU)  # S = sreg / U
                 q = Q * qw[k]
-                f = -q * mu / (Sreg * U)  # traction opposes the local slip  [5] of models.ball
+                f = -q * mu / sreg  # traction opposes the local slip  [5] of models.ball
                 f1 = f * s1
                 f2 = f * s2
                 Fx_ = f1 * t1x + f2 * ux
