@@ -266,9 +266,9 @@ def test_tabulated_rupture_start_station_level():
     sign, gaps 0.2-50 um, edges 0.1-20 contact widths on both sides.  The rupture position and the pressure
     integrals equal the reference start's to the closed form's own round-off: scale W_M = Martin's load
     4.896 eta (|U|/2) R_b L / a (Hamrock et al. Ch. 17); measured worst 1.5e-8 W_M (W), 1.8e-5 W_M L (Wx,
-    whose lever arm reaches 20 L), 5e-7 (1 + |x|/L) L (rupture).  Beyond ~20 contact widths the closed form
-    loses digits by cancellation when the source sign change sits within ~1e-3 L of an edge (both starts
-    alike; the station carries no load there): docs/pocket.md "Cost"."""
+    whose lever arm reaches 20 L), 5e-7 (1 + |x|/L) L (rupture).  (The closed form's cancellation when the
+    source sign change sits within ~1e-3 L of an edge is handled by the short-interval form since issue 18
+    session 5: test_station_closed_form_against_quadrature.)"""
     from hsbearing.models.pocket import _station
 
     rng = np.random.default_rng(7)
