@@ -266,9 +266,9 @@ def test_tabulated_rupture_start_station_level():
     sign, gaps 0.2-50 um, edges 0.1-20 contact widths on both sides.  The rupture position and the pressure
     integrals equal the reference start's to the closed form's own round-off: scale W_M = Martin's load
     4.896 eta (|U|/2) R_b L / a (Hamrock et al. Ch. 17); measured worst 1.5e-8 W_M (W), 1.8e-5 W_M L (Wx,
-    whose lever arm reaches 20 L), 5e-7 (1 + |x|/L) L (rupture).  Beyond ~20 contact widths the closed form
-    loses digits by cancellation when the source sign change sits within ~1e-3 L of an edge (both starts
-    alike; the station carries no load there): docs/pocket.md "Cost"."""
+    whose lever arm reaches 20 L), 5e-7 (1 + |x|/L) L (rupture).  (The closed form's cancellation when the
+    source sign change sits within ~1e-3 L of an edge is handled by the short-interval form since issue 18
+    session 5: test_station_closed_form_against_quadrature.)"""
     from hsbearing.models.pocket import _station
 
     rng = np.random.default_rng(7)
@@ -279,7 +279,7 @@ def test_tabulated_rupture_start_station_level():
         lo, hi = -10 ** rng.uniform(-1, 1.3), 10 ** rng.uniform(-1, 1.3)
         U = rng.choice([-1, 1]) * 10 ** rng.uniform(-3, 1.5)
         F0 = rng.choice([-1, 1]) * 10 ** rng.uniform(-3, 3) * 6 * ETA * abs(U) * L / a
-        args = (a, U, F0, lo, hi, math.atan(lo), math.atan(hi), L, ETA)
+        args = (a, U, F0, lo, hi, math.atan(hi) - math.atan(lo), L, ETA)
         r = np.array(_station(*args, False))
         t = np.array(_station(*args, True))
         WM = max(4.896 * ETA * 0.5 * abs(U) * Rb * L / a, abs(r[0]))
@@ -298,7 +298,7 @@ def test_rupture_guess_extreme_arguments():
         assert math.isfinite(_rupture_guess(xs, lo)) or abs(xs) > 1e300 or abs(lo) > 1e300
     a, L = 5e-6, math.sqrt(2 * Rb * 5e-6)
     for U in (5e-320, -5e-320, 1e-300, 1e-30):
-        args = (a, U, -0.3, -4.0, 6.0, math.atan(-4.0), math.atan(6.0), L, ETA)
+        args = (a, U, -0.3, -4.0, 6.0, math.atan(6.0) - math.atan(-4.0), L, ETA)
         r, t = _station(*args, False), _station(*args, True)
         assert np.allclose(r, t, rtol=1e-9, atol=0, equal_nan=True), (U, r, t)
 
@@ -334,3 +334,84 @@ def test_jacobian_reuses_pocket_wrench_for_ring_columns_exactly():
         yp = y.copy()
         yp[col] += h
         assert np.array_equal(J[:, col], (f(yp) - f0) / (yp[col] - y[col])), col
+
+
+# ----------------------------------------------------------------------------- station closed form vs quadrature (issue 18)
+def _station_reference(A, beta, lo, hi, n=2000):
+    """:func:`_station_trapezoid` on n and 2n intervals, Richardson-extrapolated (error O(h^4), ~1e-10 relative)."""
+    r1 = np.array(_station_trapezoid(A, beta, lo, hi, n))
+    r2 = np.array(_station_trapezoid(A, beta, lo, hi, 2 * n))
+    return tuple((4.0 * r2 - r1) / 3.0)
+
+
+def _station_trapezoid(A, beta, lo, hi, n):
+    """Independent reference for one dimensionless station (A > 0): the rupture x2 by bisection on P(x2) = 0 and
+    IP = int P, IPxi = int P xi, with P accumulated by the trapezoidal rule on n intervals in long double from
+    P' = A/H^2 + beta xi/H^3 + gamma/H^3, gamma = -(A H2 + beta x2) (Reynolds exit condition), H = 1 + xi^2, on a
+    grid uniform in atan(xi).  No closed form, no cancellation-prone antiderivative."""
+    ld = np.longdouble
+    A, beta, lo = ld(A), ld(beta), ld(lo)
+
+    def integrals(x2):
+        # uniform in th = atan(xi) (dxi = H dth): fine where the film is thin, coarse far out
+        th = np.linspace(np.arctan(lo), np.arctan(x2), n + 1)
+        t = np.tan(th)
+        t[0], t[-1] = lo, x2
+        H = 1 + t * t
+        gamma = -(A * (1 + x2 * x2) + beta * x2)
+        dp = (A * H + beta * t + gamma) / H**2  # dP/dth
+        h = th[1] - th[0]
+        P = np.concatenate([[ld(0)], np.cumsum((dp[1:] + dp[:-1]) * h / 2)])
+        f, g = P * H, P * H * t
+        return P[-1], np.sum((f[1:] + f[:-1]) * h / 2), np.sum((g[1:] + g[:-1]) * h / 2)
+
+    xs = -beta / (2 * A)
+    a_, b_ = xs, ld(hi)
+    for _ in range(64):
+        x2 = (a_ + b_) / 2
+        if integrals(x2)[0] > 0:
+            a_ = x2
+        else:
+            b_ = x2
+    _, IP, IPxi = integrals(x2)
+    return float(x2), float(IP), float(IPxi)
+
+
+@pytest.mark.parametrize("lo", [-46.0, -5.0, -1.2, 2.0])
+def test_station_closed_form_against_quadrature(lo):
+    """_station_dimless (closed form, and its Gauss form for a short pressurised interval) against the independent
+    long-double quadrature: the rupture, int P and int P xi for sources of both signs and for the source sign change
+    xs from 3 local widths down to 1e-6 of a width from the inlet edge (the old closed form's cancellation corner,
+    where it returned up to 1e-4 A for a station that carries ~1e-30 A).  Scale: A (Martin's IP is 0.16 A)."""
+    from hsbearing.models.pocket import _station_dimless
+
+    A = 1.0
+    w = math.sqrt(1.0 + lo * lo)  # local width
+    hi = lo + 60.0 * w
+    worst = np.zeros(3)
+    for f in (3.0, 1.0, 0.3, 0.1, 0.06, 0.05, 0.045, 0.03, 0.01, 1e-3, 1e-6):
+        xs = lo + f * w
+        beta = -2.0 * A * xs
+        x2r, IPr, IPxr = _station_reference(A, beta, lo, hi)
+        x2, IP, IPxi = _station_dimless(A, beta, lo, hi, math.atan(hi) - math.atan(lo))
+        # x2: 1e-9 of the interval; IP, IPxi: 1e-6 relative (the reference's trapezoid) or 1e-13 A absolute
+        e = [abs(x2 - x2r) / (x2r - lo), abs(IP - IPr) / (1e-6 * abs(IPr) + 1e-13 * A),
+             abs(IPxi - IPxr) / (1e-6 * abs(IPxr) + 1e-13 * A * w)]
+        worst = np.maximum(worst, e)
+        assert e[0] < 1e-6 and e[1] < 1 and e[2] < 1, (f, x2, x2r, IP, IPr, IPxi, IPxr)
+        # short-interval limit: IP -> 0.140625 A S^4 / H_lo^3 (S = xs - lo): no jolt
+        if f <= 1e-3:
+            assert abs(IP / (0.140625 * A * (f * w) ** 4 / w**6) - 1.0) < 1e-2, (f, IP)
+
+
+def test_station_first_moment_with_source():
+    """int P xi with a source (beta != 0): the closed form's beta term is int xi^3/H^3 = [int xi/H^2] -
+    [int xi/H^3] (it had a sign error, (d1 + d2), until issue 18's review: int P xi wrong by up to 20x, e.g.
+    lo = -3, xs = -1: +0.229 instead of -0.018).  Independent reference: long-double quadrature."""
+    from hsbearing.models.pocket import _station_dimless
+
+    for lo, xs in ((-3.0, 1.0), (-3.0, -1.0), (-10.0, 0.5), (-1.0, -0.5), (-3.0, 0.0)):
+        A, beta, hi = 1.0, -2.0 * xs, 40.0
+        x2r, IPr, IPxr = _station_reference(A, beta, lo, hi)
+        x2, IP, IPxi = _station_dimless(A, beta, lo, hi, math.atan(hi) - math.atan(lo))
+        assert abs(IP - IPr) < 1e-6 * abs(IPr) and abs(IPxi - IPxr) < 1e-6 * abs(IPxr) + 1e-12, (lo, xs, IPxi, IPxr)

@@ -186,49 +186,66 @@ def _race_contact(P, qu, qw, Q, nx, nr, nt, x, r, vx, vr, thd, wx, wy, wz,
                                                         rvx, rvr, rvt, ox, orr, ot, Wx, Wr, Wt)
     vcx, vcr, vct = vx, vr, (r + r0r) * thd
     Ut = 0.5 * ((vbx + vrx) * t1x + (vbr + vrr) * t1r + (vbt + vrt) * t1t) - (vcx * t1x + vcr * t1r + vct * t1t)
-    U = math.sqrt(Ut * Ut + P[P_UEPS] ** 2)
+    ueps = P[P_UEPS]
+    U = math.sqrt(Ut * Ut + ueps * ueps)
     # spin-to-roll ratio (relative angular velocity along the normal / rolling speed)
     spin_roll = -((wx - Wx) * nx + (wy - Wr) * nr + (wz - Wt) * nt) * D2 / U
     fric = P[P_FRIC]
     if fric > 0.0:
         A, B, C, Dd = coefficients_nb(int(P[P_LAW]), Q, U, P[P_TK], P[P_EP], Rx)
-        a = acoef * Q ** (1.0 / 3.0)  # semi-major axis, constant ellipticity
+        a = acoef * np.cbrt(Q)  # semi-major axis, constant ellipticity
+        iU = 1.0 / U
         seps = P[P_SEPS]
-        for k in range(qu.size):
-            phi = a * qu[k] / D2
-            cp, sp = math.cos(phi), math.sin(phi)
-            # node on the ball surface, and the local transverse tangent
-            rx_ = D2 * (-cp * nx + sp * t2x)
-            rr_ = D2 * (-cp * nr + sp * t2r)
-            rt_ = D2 * (-cp * nt)
-            ux, ur, ut = sp * nx + cp * t2x, sp * nr + cp * t2r, sp * nt
-            # ball and race surface velocities at the node
-            bx, br, bt, gx, gr, gt = _surface_velocities(rx_, rr_, rt_, x, r, vx, vr, thd, wx, wy, wz,
-                                                         rvx, rvr, rvt, ox, orr, ot, Wx, Wr, Wt)
-            dvx, dvr, dvt = bx - gx, br - gr, bt - gt
-            s1 = dvx * t1x + dvr * t1r + dvt * t1t
-            s2 = dvx * ux + dvr * ur + dvt * ut
-            Sreg = math.sqrt(s1 * s1 + s2 * s2 + seps * seps) / U
-            mu = mu_nb(A, B, C, Dd, Sreg)
-            q = Q * qw[k]
-            f = -q * mu / (Sreg * U)  # traction opposes the local slip  [5] of models.ball
-            f1 = f * s1
-            f2 = f * s2
-            Fx_ = f1 * t1x + f2 * ux
-            Fr_ = f1 * t1r + f2 * ur
-            Ft_ = f1 * t1t + f2 * ut
-            fx += Fx_
-            fr += Fr_
-            ft += Ft_
-            cx, cr, ct = _cross(rx_, rr_, rt_, Fx_, Fr_, Ft_)
-            mx += cx
-            mr += cr
-            mt += ct
-            T1 += f1
-            T2 += f2
-            PT += sliding_power(Fx_, Fr_, Ft_, dvx, dvr, dvt)
-            if k == qu.size // 2:
-                S0 = s1 / U
+        # symmetric nodes (qu[n-1-k] = -qu[k], Gauss-Legendre): phi of the mirror node is exactly -phi, so its
+        # cos is the same and its sin changes sign -- half the cos/sin calls (issue 18); the nodes are visited
+        # in the order 0, n-1, 1, n-2, ... (the sums change by round-off only)
+        n = qu.size
+        sym = True
+        for k in range(n // 2):
+            if qu[n - 1 - k] != -qu[k]:
+                sym = False
+        nk = (n + 1) // 2 if sym else n
+        for kk in range(nk):
+            phi0 = a * qu[kk] / D2
+            c0, s0 = math.cos(phi0), math.sin(phi0)
+            for side in range(2 if sym else 1):
+                k = kk if side == 0 else n - 1 - kk
+                if side == 1 and k == kk:
+                    break
+                cp = c0
+                sp = s0 if side == 0 else -s0
+                # node on the ball surface, and the local transverse tangent
+                rx_ = D2 * (-cp * nx + sp * t2x)
+                rr_ = D2 * (-cp * nr + sp * t2r)
+                rt_ = D2 * (-cp * nt)
+                ux, ur, ut = sp * nx + cp * t2x, sp * nr + cp * t2r, sp * nt
+                # ball and race surface velocities at the node
+                bx, br, bt, gx, gr, gt = _surface_velocities(rx_, rr_, rt_, x, r, vx, vr, thd, wx, wy, wz,
+                                                             rvx, rvr, rvt, ox, orr, ot, Wx, Wr, Wt)
+                dvx, dvr, dvt = bx - gx, br - gr, bt - gt
+                s1 = dvx * t1x + dvr * t1r + dvt * t1t
+                s2 = dvx * ux + dvr * ur + dvt * ut
+                sreg = math.sqrt(s1 * s1 + s2 * s2 + seps * seps)  # regularised slip speed [m/s]
+                mu = mu_nb(A, B, C, Dd, sreg * iU)  # S = sreg / U
+                q = Q * qw[k]
+                f = -q * mu / sreg  # traction opposes the local slip  [5] of models.ball
+                f1 = f * s1
+                f2 = f * s2
+                Fx_ = f1 * t1x + f2 * ux
+                Fr_ = f1 * t1r + f2 * ur
+                Ft_ = f1 * t1t + f2 * ut
+                fx += Fx_
+                fr += Fr_
+                ft += Ft_
+                cx, cr, ct = _cross(rx_, rr_, rt_, Fx_, Fr_, Ft_)
+                mx += cx
+                mr += cr
+                mt += ct
+                T1 += f1
+                T2 += f2
+                PT += sliding_power(Fx_, Fr_, Ft_, dvx, dvr, dvt)
+                if k == qu.size // 2:
+                    S0 = s1 / U
     if P[P_EHL] > 0.0:
         FR = ehl_rolling_force(U, Q, Rx, ke, P[P_EP], P[P_ETAIN], P[P_ALPHA])
         sg = Ut / U
@@ -259,14 +276,17 @@ def reaction_moment(ax, ay, az, fx, fy, fz, mx, my, mz):
 @njit(cache=True)
 def ball_loop(y, P, qu, qw, ydot, contrib, aux, want_aux):
     """Ball rows of ydot and per-ball contributions to the ring and cage loads (see module doc)."""
-    ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, 0, contrib)  # pmode 0: pcache unused
+    ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, 0, contrib, 0, contrib)  # modes 0: caches unused
 
 
 @njit(cache=True)
-def ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, pmode, pcache):
+def ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, pmode, pcache, rmode, rcache):
     """:func:`ball_loop` with the pocket wrench of each ball stored (``pmode`` 1) or reused (``pmode`` 2)
     in ``pcache`` (Z x 11): for Jacobian columns of states the pocket wrench does not depend on (the ring
-    states); ``pmode`` 0 computes it as :func:`ball_loop`.  Cost only: the arithmetic is unchanged."""
+    states); ``pmode`` 0 computes it as :func:`ball_loop`.  Likewise ``rmode``/``rcache`` (Z x 12) for gravity
+    and the two race contacts (the ball's force and moment before the pocket, and its ring contribution),
+    which depend on ball and ring states and on the cage angle only: reused for the other 11 cage columns
+    (reuse needs ``want_aux`` False).  Cost only: the arithmetic is unchanged."""
     Z = int(P[P_Z])
     D2 = 0.5 * P[P_D]
     m, I = P[P_MB], P[P_IB]
@@ -295,56 +315,70 @@ def ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, pmode, pcache):
         Fr = -m * P[P_GRAV] * c
         Ft = m * P[P_GRAV] * s
         Mx = Mr = Mt = 0.0
-        # ---------------- inner race contact (Eqs. 5-10, Q_i, T_i, F_R,i)
-        dX, dR, dT, vcX, vcR, vcT = inner_groove_centre(x, r, th, P[P_RHOI], P[P_GI], xi, yi, zi, Rm,
-                                                        vxi, vyi, vzi, wtx, wty, wtz)
-        dlt, nxi, nri, nti = groove_contact(dX, dR, dT, P[P_OFFI])
-        dltd = nxi * (vcX - vx) + nri * (vcR - vr) + nti * (vcT - r * thd)
-        Qi = hertz_normal_load(dlt, dltd, P[P_KI], P[P_CDI] * damp)
-        # inner ring kinematics in the ball frame
-        rvx, rvr, rvt = vxi, vyi * c + vzi * s, -vyi * s + vzi * c
-        ox, orr, ot = xi, yi * c + zi * s, -yi * s + zi * c
-        # ring angular velocity: spin about its own (tilted) axis R e_x plus the tilting rate
-        Wsx, Wsy, Wsz = wi * Rm[0] + wtx, wi * Rm[3] + wty, wi * Rm[6] + wtz
-        Wx, Wr, Wt = Wsx, Wsy * c + Wsz * s, -Wsy * s + Wsz * c
-        (tfx, tfr, tft, tmx, tmr, tmt, Ti1, Ti2, Si, Ui, FRi, sri, PTi, PEi) = _race_contact(
-            P, qu, qw, Qi, nxi, nri, nti, x, r, vx, vr, thd, wx, wy, wz,
-            rvx, rvr, rvt, ox, orr, ot, Wx, Wr, Wt, P[P_RXI], P[P_KEI], P[P_ACI])
-        fbx = Qi * nxi + tfx  # force of the inner race on the ball (ball frame)
-        fbr = Qi * nri + tfr
-        fbt = Qi * nti + tft
-        Fx += fbx
-        Fr += fbr
-        Ft += fbt
-        Mx += tmx
-        Mr += tmr
-        Mt += tmt
-        # reaction on the inner ring: the opposite of the whole force system on the ball (normal load,
-        # traction with its spin couple, EHL rolling couple), inertial frame, moment about the ring centre
-        gx, gy, gz = -fbx, -(fbr * c - fbt * s), -(fbr * s + fbt * c)
-        mrx, mry, mrz = reaction_moment(x - xi, r * c - yi, r * s - zi, -gx, -gy, -gz,
-                                        tmx, tmr * c - tmt * s, tmr * s + tmt * c)
-        contrib[j, C_RFX] = gx
-        contrib[j, C_RFY] = gy
-        contrib[j, C_RFZ] = gz
-        contrib[j, C_RMY] = mry
-        contrib[j, C_RMZ] = mrz
-        contrib[j, C_RMX] = mrx
-        # ---------------- outer race contact (fixed outer ring, speed wo about X)
-        dlt_o, nxo, nro, nto = groove_contact(P[P_GO] - x, P[P_RHOO] - r, 0.0, P[P_OFFO])
-        dltd_o = -nxo * vx - nro * vr
-        Qo = hertz_normal_load(dlt_o, dltd_o, P[P_KO], P[P_CDO] * damp)
-        (tfx, tfr, tft, tmx, tmr, tmt, To1, To2, So, Uo, FRo, sro, PTo, PEo) = _race_contact(
-            P, qu, qw, Qo, nxo, nro, nto, x, r, vx, vr, thd, wx, wy, wz,
-            0.0, 0.0, 0.0, 0.0, 0.0, 0.0, wo, 0.0, 0.0, P[P_RXO], P[P_KEO], P[P_ACO])
-        Fx += Qo * nxo + tfx
-        Fr += Qo * nro + tfr
-        Ft += tft
-        Mx += tmx
-        Mr += tmr
-        Mt += tmt
-        # moment about X through the origin of the outer-race actions on the ball: (b x F)_X = r F_t, plus M_x
-        tau_o = r * tft + tmx
+        if rmode == 2 and not want_aux:
+            # reuse: gravity and the race contacts depend on ball and ring states and on the cage angle only
+            Fx, Fr, Ft = rcache[j, 0], rcache[j, 1], rcache[j, 2]
+            Mx, Mr, Mt = rcache[j, 3], rcache[j, 4], rcache[j, 5]
+            contrib[j, C_RFX], contrib[j, C_RFY], contrib[j, C_RFZ] = rcache[j, 6], rcache[j, 7], rcache[j, 8]
+            contrib[j, C_RMY], contrib[j, C_RMZ], contrib[j, C_RMX] = rcache[j, 9], rcache[j, 10], rcache[j, 11]
+            Qi = Qo = dlt = dltd = dlt_o = dltd_o = nxi = nri = nxo = nro = 0.0  # (auxiliary outputs only)
+            Ti1 = Ti2 = To1 = To2 = Si = So = Ui = Uo = FRi = FRo = sri = sro = 0.0
+            PTi = PTo = PEi = PEo = tau_o = 0.0
+        else:
+            # ---------------- inner race contact (Eqs. 5-10, Q_i, T_i, F_R,i)
+            dX, dR, dT, vcX, vcR, vcT = inner_groove_centre(x, r, th, P[P_RHOI], P[P_GI], xi, yi, zi, Rm,
+                                                            vxi, vyi, vzi, wtx, wty, wtz)
+            dlt, nxi, nri, nti = groove_contact(dX, dR, dT, P[P_OFFI])
+            dltd = nxi * (vcX - vx) + nri * (vcR - vr) + nti * (vcT - r * thd)
+            Qi = hertz_normal_load(dlt, dltd, P[P_KI], P[P_CDI] * damp)
+            # inner ring kinematics in the ball frame
+            rvx, rvr, rvt = vxi, vyi * c + vzi * s, -vyi * s + vzi * c
+            ox, orr, ot = xi, yi * c + zi * s, -yi * s + zi * c
+            # ring angular velocity: spin about its own (tilted) axis R e_x plus the tilting rate
+            Wsx, Wsy, Wsz = wi * Rm[0] + wtx, wi * Rm[3] + wty, wi * Rm[6] + wtz
+            Wx, Wr, Wt = Wsx, Wsy * c + Wsz * s, -Wsy * s + Wsz * c
+            (tfx, tfr, tft, tmx, tmr, tmt, Ti1, Ti2, Si, Ui, FRi, sri, PTi, PEi) = _race_contact(
+                P, qu, qw, Qi, nxi, nri, nti, x, r, vx, vr, thd, wx, wy, wz,
+                rvx, rvr, rvt, ox, orr, ot, Wx, Wr, Wt, P[P_RXI], P[P_KEI], P[P_ACI])
+            fbx = Qi * nxi + tfx  # force of the inner race on the ball (ball frame)
+            fbr = Qi * nri + tfr
+            fbt = Qi * nti + tft
+            Fx += fbx
+            Fr += fbr
+            Ft += fbt
+            Mx += tmx
+            Mr += tmr
+            Mt += tmt
+            # reaction on the inner ring: the opposite of the whole force system on the ball (normal load,
+            # traction with its spin couple, EHL rolling couple), inertial frame, moment about the ring centre
+            gx, gy, gz = -fbx, -(fbr * c - fbt * s), -(fbr * s + fbt * c)
+            mrx, mry, mrz = reaction_moment(x - xi, r * c - yi, r * s - zi, -gx, -gy, -gz,
+                                            tmx, tmr * c - tmt * s, tmr * s + tmt * c)
+            contrib[j, C_RFX] = gx
+            contrib[j, C_RFY] = gy
+            contrib[j, C_RFZ] = gz
+            contrib[j, C_RMY] = mry
+            contrib[j, C_RMZ] = mrz
+            contrib[j, C_RMX] = mrx
+            # ---------------- outer race contact (fixed outer ring, speed wo about X)
+            dlt_o, nxo, nro, nto = groove_contact(P[P_GO] - x, P[P_RHOO] - r, 0.0, P[P_OFFO])
+            dltd_o = -nxo * vx - nro * vr
+            Qo = hertz_normal_load(dlt_o, dltd_o, P[P_KO], P[P_CDO] * damp)
+            (tfx, tfr, tft, tmx, tmr, tmt, To1, To2, So, Uo, FRo, sro, PTo, PEo) = _race_contact(
+                P, qu, qw, Qo, nxo, nro, nto, x, r, vx, vr, thd, wx, wy, wz,
+                0.0, 0.0, 0.0, 0.0, 0.0, 0.0, wo, 0.0, 0.0, P[P_RXO], P[P_KEO], P[P_ACO])
+            Fx += Qo * nxo + tfx
+            Fr += Qo * nro + tfr
+            Ft += tft
+            Mx += tmx
+            Mr += tmr
+            Mt += tmt
+            # moment about X through the origin of the outer-race actions on the ball: (b x F)_X = r F_t, plus M_x
+            tau_o = r * tft + tmx
+            if rmode == 1:
+                rcache[j, 0], rcache[j, 1], rcache[j, 2], rcache[j, 3], rcache[j, 4], rcache[j, 5] = Fx, Fr, Ft, Mx, Mr, Mt
+                rcache[j, 6], rcache[j, 7], rcache[j, 8] = contrib[j, C_RFX], contrib[j, C_RFY], contrib[j, C_RFZ]
+                rcache[j, 9], rcache[j, 10], rcache[j, 11] = contrib[j, C_RMY], contrib[j, C_RMZ], contrib[j, C_RMX]
         # ---------------- cage pocket (Q_c, P_S), inertial vectors; pocket axes turn and tilt with the cage
         phj = 2.0 * math.pi * j / Z
         cph, sph = math.cos(phj), math.sin(phj)
@@ -635,9 +669,12 @@ def jac_kernel(y, P, qu, qw, J, hscale, work):
     evaluation of :func:`ball_loop` gives the Z columns of that quantity, and
     the change of ball j's contribution to the ring and cage loads gives
     those rows (the ring/cage accelerations are linear in the summed
-    contributions).  The 22 cage/ring states are perturbed one by one (a full
+    contributions).  The 22 cage/ring states are perturbed one by one (an
     evaluation each; the 10 ring columns reuse the pocket wrenches of the unperturbed
-    evaluation, which do not depend on ring states).  31 evaluations instead of 9 Z + 22.
+    evaluation, which do not depend on ring states, and the cage columns but the cage
+    angle reuse gravity and the race contacts, which do not depend on cage states
+    other than the angle: bit-identical to the full evaluation).  31 evaluations
+    instead of 9 Z + 22.
 
     hscale : per-state typical magnitudes (the perturbation is
     sqrt(eps) max(|y|, hscale)); work : scratch array of length >= 4 N.
@@ -661,7 +698,8 @@ def jac_kernel(y, P, qu, qw, J, hscale, work):
     for i in range(N):
         h[i] = sq * max(abs(y[i]), hscale[i])
     pc = np.empty((Z, 11))  # pocket wrench at y, reused for the ring columns (it does not depend on them)
-    ball_loop_cached(y, P, qu, qw, f0, c0, aux, False, 1, pc)
+    rc = np.empty((Z, 12))  # gravity + race contacts at y, reused for the cage columns but the cage angle
+    ball_loop_cached(y, P, qu, qw, f0, c0, aux, False, 1, pc, 1, rc)
     summed_global_rows(y, P, c0, csum, f0, gaux)
     cg = nb
     rg = nb + 12
@@ -702,7 +740,8 @@ def jac_kernel(y, P, qu, qw, J, hscale, work):
             yp[i] = y[i]
         yp[col] += h[col]
         hj = yp[col] - y[col]
-        ball_loop_cached(yp, P, qu, qw, f1, c1, aux, False, 2 if col >= rg else 0, pc)
+        rmode = 2 if (col < rg and col != cg + 3) else 0  # cage columns except the angle phi_c
+        ball_loop_cached(yp, P, qu, qw, f1, c1, aux, False, 2 if col >= rg else 0, pc, rmode, rc)
         summed_global_rows(yp, P, c1, csum, f1, gaux)
         for i in range(N):
             J[i, col] = (f1[i] - f0[i]) / hj

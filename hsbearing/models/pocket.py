@@ -64,9 +64,12 @@ __all__ = ["station_film", "station_angle", "pocket_edges", "pocket_film_wrench"
 # ---------------------------------------------------------------- 1-D line-contact integrals
 @njit(cache=True, fastmath=True, inline="always")
 def _kk(xi, at):
-    """int_0^xi dxi/H^2, int_0^xi dxi/H^3 and an antiderivative of xi/H^3, H = 1 + xi^2 (at = atan(xi))."""
-    H = 1.0 + xi * xi
-    return 0.5 * (xi / H + at), xi / (4.0 * H * H) + 3.0 * xi / (8.0 * H) + 0.375 * at, -0.25 / (H * H)
+    """int_0^xi dxi/H^2, int_0^xi dxi/H^3, an antiderivative of xi/H^3 (H = 1 + xi^2, at = atan(xi)) and 1/H.
+
+    One division (issue 18: divisions are a large part of a station's cost)."""
+    iH = 1.0 / (1.0 + xi * xi)
+    xh = xi * iH
+    return 0.5 * (xh + at), xh * (0.25 * iH + 0.375) + 0.375 * at, -0.25 * (iH * iH), iH
 
 
 # ---------------------------------------------------------------- rupture: tabulated start for the Newton solve
@@ -87,18 +90,18 @@ def _rupture_exact(xs, lo):
 
     Bracketing + Newton to 1e-14 (table construction only)."""
     b = -2.0 * xs
-    k2l, k3l, m3l = _kk(lo, math.atan(lo))
+    k2l, k3l, m3l, _ = _kk(lo, math.atan(lo))
     a_ = xs
     b_ = xs + 0.5 + math.sqrt(1.0 + xs * xs)
     for _ in range(200):  # bracket: G < 0 at b_
-        k2x, k3x, m3x = _kk(b_, math.atan(b_))
+        k2x, k3x, m3x, _ = _kk(b_, math.atan(b_))
         if (k2x - k2l) + b * (m3x - m3l) - ((1.0 + b_ * b_) + b * b_) * (k3x - k3l) < 0.0:
             break
         a_ = b_
         b_ = xs + 2.0 * (b_ - xs)
     x = 0.5 * (a_ + b_)
     for _ in range(200):
-        k2x, k3x, m3x = _kk(x, math.atan(x))
+        k2x, k3x, m3x, _ = _kk(x, math.atan(x))
         dk3 = k3x - k3l
         G = (k2x - k2l) + b * (m3x - m3l) - ((1.0 + x * x) + b * x) * dk3
         if G > 0.0:
@@ -157,11 +160,27 @@ def _rupture_guess(xs, lo):
 
 
 @njit(cache=True, fastmath=True, inline="always")
-def _atan_near(x, xp, atp):
-    """atan(x) from atp = atan(xp) for a nearby xp (the previous Newton iterate) without a libm call.
+def _atan_diff(x, lo):
+    """atan(x) - atan(lo) with one libm call: atan((x - lo)/(1 + x lo)), shifted by +-pi where 1 + x lo < 0.
+
+    Exact identity (the difference lies in (-pi, pi)); it is also free of the cancellation of two nearly equal
+    atans when x is close to lo.  All station integrals use only such differences (issue 18, docs/pocket.md).
+    """
+    num = x - lo
+    den = 1.0 + x * lo
+    if den > 0.0:
+        return math.atan(num / den)
+    if den < 0.0:
+        return math.atan(num / den) + (math.pi if num > 0.0 else -math.pi)
+    return math.copysign(0.5 * math.pi, num)
+
+
+@njit(cache=True, fastmath=True, inline="always")
+def _atan_near(x, xp, atp, lo):
+    """atan(x) - atan(lo) from atp = atan(xp) - atan(lo) for a nearby xp (the previous Newton iterate), no libm call.
 
     atan(x) = atan(xp) + atan(u), u = (x - xp)/(1 + x xp) (valid for x xp > -1); for |u| < 0.02 the odd
-    series of atan(u) to u^9 is exact to |u|^11/11 < 2e-20; otherwise (or if x xp <= -1) math.atan(x).
+    series of atan(u) to u^9 is exact to |u|^11/11 < 2e-20; otherwise (or if x xp <= -1) :func:`_atan_diff`.
     """
     den = 1.0 + x * xp
     if den > 0.0:
@@ -169,16 +188,69 @@ def _atan_near(x, xp, atp):
         if abs(u) < 0.02:
             u2 = u * u
             return atp + u * (1.0 - u2 * (1.0 / 3.0 - u2 * (0.2 - u2 * (1.0 / 7.0 - u2 * (1.0 / 9.0)))))
-    return math.atan(x)
+    return _atan_diff(x, lo)
+
+
+# short pressurised interval (the source sign change xs within _SHORT sqrt(1 + lo^2) of the inlet edge lo): the
+# closed form's integrals are differences of O(1) antiderivatives for a result of order (xs - lo)^4, so they lose
+# all digits there (docs/pocket.md "Short pressurised interval"); Gauss-Legendre quadrature of the factored
+# integrands is used instead (5 nodes on an interval of at most 1.6 _SHORT local widths: relative error < 1e-13)
+_SHORT = 0.05
+_GL5_X = np.array([-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831, 0.9061798459386640])
+_GL5_W = np.array([0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
+                   0.2369268850561891])
 
 
 @njit(cache=True, fastmath=True)
-def _station_dimless(A, beta, lo, hi, at_lo, at_hi, tabulated=True):
-    """Dimensionless line contact with A >= 0: returns (xi_2, IP, IPxi, pressurised).
+def _station_short(A, beta, lo, xs):
+    """:func:`_station_dimless` for a short pressurised interval (A > 0, 0 < xs - lo <= _SHORT sqrt(1 + lo^2)).
+
+    With gamma = -(A H2 + beta x2) the pressure gradient factors as P'(t) = (t - x2)(A (t + x2) + beta)/H(t)^3,
+    so the rupture residual G(x2) = P(x2) = int_lo^x2 (t - x2)(A (t + x2) + beta)/H^3 dt, its derivative
+    -(2 A x2 + beta) int dt/H^3, IP = int P dt = -int (x2 - t)^2 (A (t + x2) + beta)/H^3 dt and
+    IPxi = int P t dt = int (x2^2 - t^2)/2 P'(t) dt are integrals of smooth, cancellation-free integrands over
+    [lo, x2]: 5-point Gauss-Legendre, Newton from the short-interval limit x2 = lo + 1.5 (xs - lo) (G ~ A X^2
+    (S - 2 X/3)/H^3 with X = x2 - lo, S = xs - lo).  Returns (xi_2, IP, IPxi); the far edge is beyond 2 S.
+    """
+    X = 1.5 * (xs - lo)
+    for _ in range(30):
+        x = lo + X
+        G = 0.0
+        I3 = 0.0
+        for i in range(5):
+            t = lo + 0.5 * X * (1.0 + _GL5_X[i])
+            iH = 1.0 / (1.0 + t * t)
+            w3 = _GL5_W[i] * iH * iH * iH
+            G += w3 * (t - x) * (A * (t + x) + beta)
+            I3 += w3
+        G *= 0.5 * X
+        dG = -(2.0 * A * x + beta) * 0.5 * X * I3
+        if not dG < 0.0:
+            break
+        dX = -G / dG
+        X += dX
+        if abs(dX) <= 1e-14 * X:
+            break
+    x2 = lo + X
+    IP = 0.0
+    IPxi = 0.0
+    for i in range(5):
+        t = lo + 0.5 * X * (1.0 + _GL5_X[i])
+        iH = 1.0 / (1.0 + t * t)
+        q = _GL5_W[i] * iH * iH * iH * (x2 - t) * (A * (t + x2) + beta)  # -(t - x2)(...)/H^3 w
+        IP -= q * (x2 - t)
+        IPxi -= q * 0.5 * (x2 + t) * (x2 - t)
+    return x2, 0.5 * X * IP, 0.5 * X * IPxi
+
+
+@njit(cache=True, fastmath=True)
+def _station_dimless(A, beta, lo, hi, dat_hi, tabulated=True):
+    """Dimensionless line contact with A >= 0: returns (xi_2, IP, IPxi).
 
     dP/dxi = A / H^2 + beta xi / H^3 + gamma / H^3, H = 1 + xi^2, P(lo) = P(xi_2) = 0, P > 0
     inside, p >= 0 complementarity (Reynolds exit condition P = P' = 0 at a free xi_2 < hi).
-    IP = int P dxi, IPxi = int P xi dxi over [lo, xi_2]; at_lo, at_hi = atan(lo), atan(hi).
+    IP = int P dxi, IPxi = int P xi dxi over [lo, xi_2]; dat_hi = atan(hi) - atan(lo) (:func:`_atan_diff`).
+    Every atan enters as a difference from atan(lo), so atan(lo) is taken as the origin (at_lo = 0).
     ``tabulated``: start the rupture Newton solve from :func:`_rupture_guess` (default) instead of
     Martin's infinite-inlet exit and take atan of the later iterates from the previous one
     (:func:`_atan_near`, exact to round-off); ``False`` is the reference (kept for the tests); both
@@ -186,6 +258,8 @@ def _station_dimless(A, beta, lo, hi, at_lo, at_hi, tabulated=True):
     """
     if not hi > lo:  # no wall left at this station (the pocket edges meet): no film
         return lo, 0.0, 0.0
+    at_lo = 0.0  # atans relative to atan(lo)
+    at_hi = dat_hi
     if A <= 0.0:
         if beta >= 0.0:
             return lo, 0.0, 0.0
@@ -195,9 +269,12 @@ def _station_dimless(A, beta, lo, hi, at_lo, at_hi, tabulated=True):
         xs = -beta / (2.0 * A)  # source 2 A xi + beta < 0 for xi < xs: pressure builds there
         if xs <= lo:
             return lo, 0.0, 0.0
-        k2l, k3l, m3l = _kk(lo, at_lo)
+        S = xs - lo
+        if S * S <= (_SHORT * _SHORT) * (1.0 + lo * lo) and hi - lo >= 2.0 * S:
+            return _station_short(A, beta, lo, xs)  # cancellation-free form for a short interval
+        k2l, k3l, m3l, _ = _kk(lo, at_lo)
         # free boundary G(x2) = P(x2) with gamma = -(A H2 + beta x2); G > 0 on (lo, xs], concave, decreasing after
-        k2h, k3h, m3h = _kk(hi, at_hi)
+        k2h, k3h, m3h, _ = _kk(hi, at_hi)
         Ghi = A * (k2h - k2l) + beta * (m3h - m3l) - (A * (1.0 + hi * hi) + beta * hi) * (k3h - k3l)
         if Ghi >= 0.0:
             x2 = hi
@@ -220,12 +297,12 @@ def _station_dimless(A, beta, lo, hi, at_lo, at_hi, tabulated=True):
             atp = 0.0
             for it in range(60):
                 if tabulated and it > 0:
-                    at2 = _atan_near(x, xp, atp)
+                    at2 = _atan_near(x, xp, atp, lo)
                 else:
-                    at2 = math.atan(x)
+                    at2 = _atan_diff(x, lo)
                 xp = x
                 atp = at2
-                k2x, k3x, m3x = _kk(x, at2)
+                k2x, k3x, m3x, iHx = _kk(x, at2)
                 dk3 = k3x - k3l
                 G = A * (k2x - k2l) + beta * (m3x - m3l) - (A * (1.0 + x * x) + beta * x) * dk3
                 if G > 0.0:
@@ -240,13 +317,13 @@ def _station_dimless(A, beta, lo, hi, at_lo, at_hi, tabulated=True):
                     xn = b_ if G > 0.0 else 0.5 * (a_ + b_)
                 elif abs(xn - x) <= 1e-6 * (1.0 + abs(x)):
                     # quadratic convergence: xn is exact to ~1e-12; atan(xn) to first order (error ~ step^2)
-                    at2 += (xn - x) / (1.0 + x * x)
+                    at2 += (xn - x) * iHx
                     x = xn
                     break
                 x = xn
             x2 = x
-    k2l, k3l, m3l = _kk(lo, at_lo)
-    k2x, k3x, m3x = _kk(x2, at2)
+    k2l, k3l, m3l, iHl = _kk(lo, at_lo)
+    k2x, k3x, m3x, iH2 = _kk(x2, at2)
     H2 = 1.0 + x2 * x2
     dk2 = k2x - k2l
     dk3 = k3x - k3l
@@ -255,29 +332,30 @@ def _station_dimless(A, beta, lo, hi, at_lo, at_hi, tabulated=True):
         gamma = -(A * H2 + beta * x2)
     else:  # full film to the far edge: P(hi) = 0
         gamma = -(A * dk2 + beta * dm3) / dk3
-    Hl = 1.0 + lo * lo
-    d1 = -0.5 / H2 + 0.5 / Hl  # [int xi/H^2]
-    d2 = -0.25 / (H2 * H2) + 0.25 / (Hl * Hl)  # [int xi/H^3]
+    d1 = 0.5 * (iHl - iH2)  # [int xi/H^2]
+    d2 = dm3  # [int xi/H^3] = [-1/(4 H^2)]
     dat = at2 - at_lo
     # int P = -int xi P' ; int P xi = -(1/2) int xi^2 P'   (P = 0 at both ends)
     IP = -(A * d1 + beta * (dk2 - dk3) + gamma * d2)
-    IPxi = -0.5 * (A * (dat - dk2) + beta * (d1 + d2) + gamma * (dk2 - dk3))
+    IPxi = -0.5 * (A * (dat - dk2) + beta * (d1 - d2) + gamma * (dk2 - dk3))  # int xi^3/H^3 = [int xi/H^2] - [int xi/H^3]
     return x2, IP, IPxi
 
 
 @njit(cache=True, fastmath=True, inline="always")
-def _station(a, U_e, F0, lo, hi, at_lo, at_hi, L, eta, tabulated=True):
-    """:func:`station_film` on the dimensionless edges (lo, hi) = x/L with their atans given: (W, Wx, x1, x2) / L."""
+def _station(a, U_e, F0, lo, hi, dat, L, eta, tabulated=True):
+    """:func:`station_film` on the dimensionless edges (lo, hi) = x/L, dat = atan(hi) - atan(lo): (W, Wx, x1, x2) / L."""
     A = 6.0 * eta * U_e
-    beta = F0 * L / a
+    ia = 1.0 / a
+    beta = F0 * L * ia
     if A >= 0.0:
-        x2, IP, IPxi = _station_dimless(A, beta, lo, hi, at_lo, at_hi, tabulated)
+        x2, IP, IPxi = _station_dimless(A, beta, lo, hi, dat, tabulated)
         x1 = lo
     else:  # mirror xi -> -xi: (A, beta, gamma) -> (-A, beta, -gamma)
-        x2m, IP, IPxi = _station_dimless(-A, beta, -hi, -lo, -at_hi, -at_lo, tabulated)
+        x2m, IP, IPxi = _station_dimless(-A, beta, -hi, -lo, dat, tabulated)  # atan(-lo) - atan(-hi) = dat
         x1, x2 = -x2m, hi
         IPxi = -IPxi
-    return (L * L / (a * a)) * IP, (L * L * L / (a * a)) * IPxi, x1, x2  # p = (L/a^2) P, dx = L dxi
+    s = L * L * ia * ia
+    return s * IP, (s * L) * IPxi, x1, x2  # p = (L/a^2) P, dx = L dxi
 
 
 @njit(cache=True)
@@ -301,8 +379,14 @@ def station_film(a, U_e, F0, x_lo, x_hi, R, eta):
     """
     L = math.sqrt(2.0 * R * a)
     lo, hi = x_lo / L, x_hi / L
-    W, Wx, x1, x2 = _station(a, U_e, F0, lo, hi, math.atan(lo), math.atan(hi), L, eta)
+    W, Wx, x1, x2 = _station(a, U_e, F0, lo, hi, _atan_diff(hi, lo), L, eta)
     return W, Wx, x1 * L, x2 * L
+
+
+_TQ_N = 16  # the kernel's station count (MODEL_DEFAULTS pocket_stations)
+# tan(tau_i / 2) of the station nodes tau_i = -pi + (i + 1/2) 2 pi / n for n = _TQ_N, tabulated once (issue 18:
+# saves the per-station division of the rotation recurrence in :func:`pocket_film_wrench`; other n use it)
+_TQ_TABLE = np.tan(0.5 * (-np.pi + (np.arange(_TQ_N) + 0.5) * 2.0 * np.pi / _TQ_N))
 
 
 @njit(cache=True, inline="always")
@@ -368,10 +452,14 @@ def pocket_film_wrench(ex, et, s0, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, 
     # half-angles tau/2 = -pi/2 + (i + 1/2) dtau/2 by a rotation recurrence (no tan per station)
     ch, sh = math.sin(0.25 * dtau), -math.cos(0.25 * dtau)
     cd, sd = math.cos(0.5 * dtau), math.sin(0.5 * dtau)
+    tab = n_st == _TQ_N
     for _i in range(n_st):
         # station_angle in rational form: T = k tan(tau/2), cos = (1 - T^2)/(1 + T^2), sin = 2 T/(1 + T^2)
-        tq = sh / ch
-        ch, sh = ch * cd - sh * sd, sh * cd + ch * sd
+        if tab:
+            tq = _TQ_TABLE[_i]
+        else:
+            tq = sh / ch
+            ch, sh = ch * cd - sh * sd, sh * cd + ch * sd
         T = k * tq
         den = 1.0 / (1.0 + T * T)
         cp, sp = (1.0 - T * T) * den, 2.0 * T * den
@@ -392,11 +480,12 @@ def pocket_film_wrench(ex, et, s0, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, 
         F0 = 6.0 * eta * dUs * hs - 12.0 * eta * vn
         xlo, xhi = pocket_edges(sth, Rp, R_bore, R_out, hdm)
         L = math.sqrt(2.0 * Rb * a)
-        lo, hi = (xlo - s0) / L, (xhi - s0) / L
-        at_lo, at_hi = math.atan(lo), math.atan(hi)
-        W, Wx, x1, x2 = _station(a, Ue, F0, lo, hi, at_lo, at_hi, L, eta, tabulated)
+        iL = 1.0 / L
+        lo, hi = (xlo - s0) * iL, (xhi - s0) * iL
+        dat = _atan_diff(hi, lo)  # atan(hi) - atan(lo): one libm atan per station
+        W, Wx, x1, x2 = _station(a, Ue, F0, lo, hi, dat, L, eta, tabulated)
         # Couette integrals over the wetted wall: int dx/h, int x dx/h
-        I1 = (L / a) * (at_hi - at_lo)
+        I1 = L * dat / a
         I1x = Rb * math.log((1.0 + hi * hi) / (1.0 + lo * lo))
         Tu = -eta * dUu * I1 + 0.5 * Wx / Rb  # shear on the ball along e_r: Couette + Poiseuille
         Ts = -eta * dUs * I1  # along theta_hat

@@ -28,6 +28,20 @@ __all__ = ["coefficients_nb", "mu_nb"]
 _P = PARAMS  # captured as a compile-time constant array
 
 
+@numba.njit(cache=True, nogil=True, inline="always")
+def _pnorm(a, b, m):
+    """(a^m + b^m)^(1/m) for a, b >= 0 [-]; m = 4 or 8 by products and square roots (issue 18: no libm pow, the
+    result within a few ulp of the pow form), any other m by pow."""
+    if m == 4.0:
+        a2, b2 = a * a, b * b
+        return math.sqrt(math.sqrt(a2 * a2 + b2 * b2))
+    if m == 8.0:
+        a2, b2 = a * a, b * b
+        a4, b4 = a2 * a2, b2 * b2
+        return math.sqrt(math.sqrt(math.sqrt(a4 * a4 + b4 * b4)))
+    return (a**m + b**m) ** (1.0 / m)
+
+
 @numba.njit(cache=True, nogil=True)
 def coefficients_nb(law_id, W, U, T_K, E, R):
     """Scalar numba twin of :func:`coefficients`: returns (A, B, C, D) [-] (SI, T in K)."""
@@ -49,23 +63,23 @@ def coefficients_nb(law_id, W, U, T_K, E, R):
         f = abs(Wc / Wb - 1.0)
         f0 = p[26]
         if f0 > 0.0:  # smooth floor of the critical-load notch (zhang2016.notch_floor)
-            f = (f**NOTCH_SHARPNESS + f0**NOTCH_SHARPNESS) ** (1.0 / NOTCH_SHARPNESS)
+            f = _pnorm(f, f0, NOTCH_SHARPNESS)
         fmax = p[8]
         if fmax > 0.0:
             r = f / fmax
             if r > 1e6:
                 f = fmax
             else:
-                f = f / (1.0 + r**LOAD_FACTOR_SHARPNESS) ** (1.0 / LOAD_FACTOR_SHARPNESS)
+                f = f / _pnorm(1.0, r, LOAD_FACTOR_SHARPNESS)
     lam = p[27]
+    lW, lT = math.log(Wb), math.log(Tb)
     if lam > 0.0:  # low-speed floor at the limiting shear (zhang2016.limiting_shear_speed_floor)
-        Dn = abs(p[21]) * f * math.exp(p[22] * math.log(Wb) + p[24] * math.log(Tb))
+        Dn = abs(p[21]) * f * math.exp(p[22] * lW + p[24] * lT)
         if Dn > 0.0:
-            m = SPEED_FLOOR_SHARPNESS
             Ub_star = math.exp(math.log(lam / Dn) / p[23])
             hi, lo = max(Ub, Ub_star), min(Ub, Ub_star)
-            Ub = hi * (1.0 + (lo / hi) ** m) ** (1.0 / m)  # (Ub^m + Ub*^m)^(1/m) without over/underflow
-    lW, lU, lT = math.log(Wb), math.log(Ub), math.log(Tb)
+            Ub = hi * _pnorm(1.0, lo / hi, SPEED_FLOOR_SHARPNESS)  # (Ub^m + Ub*^m)^(1/m) without over/underflow
+    lU = math.log(Ub)
     A = p[9] * f * math.exp(p[10] * lW + p[11] * lU + p[12] * lT)
     B = p[13] * f * math.exp(p[14] * lW + p[15] * lU + p[16] * lT)
     C = p[17] * f * math.exp(p[18] * lW + p[19] * lU + p[20] * lT)
@@ -74,10 +88,27 @@ def coefficients_nb(law_id, W, U, T_K, E, R):
     return A, B * s, C * s, D
 
 
+# |x| beyond which tanh(x) rounds to +-1 in double precision: 1 - tanh(x) = 2/(e^(2x) + 1) < 2^-54 for x > 19.1
+_TANH_ONE = 20.0
+
+
 @numba.njit(cache=True, nogil=True)
 def mu_nb(A, B, C, D, S):
-    """Scalar numba twin of :func:`traction_coefficient` (odd in S) [-]."""
+    """Scalar numba twin of :func:`traction_coefficient` (odd in S) [-].
+
+    Two libm calls at most (issue 18): e^(-C|S|) is taken as 1 + expm1(-C|S|) (absolute error <= 2^-53, so
+    the term B |S| e^(-C|S|) moves by at most B |S| 2^-53: round-off of mu), and tanh(S/S_EPS) is +-1
+    exactly (rounded) beyond |S/S_EPS| = 20, where it is not called.
+    """
     s = abs(S)
     mu0 = A + D
     sg = 1.0 if S > 0.0 else (-1.0 if S < 0.0 else 0.0)
-    return sg * (A * math.expm1(-C * s) + B * s * math.exp(-C * s)) + mu0 * math.tanh(S / S_EPS)
+    em1 = math.expm1(-C * s)
+    x = S / S_EPS
+    if x > _TANH_ONE:
+        th = 1.0
+    elif x < -_TANH_ONE:
+        th = -1.0
+    else:
+        th = math.tanh(x)
+    return sg * (A * em1 + B * s * (1.0 + em1)) + mu0 * th
