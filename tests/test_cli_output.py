@@ -326,7 +326,7 @@ def test_study_help_lists_studies_runtime_and_backends(capsys):
     with pytest.raises(SystemExit):
         cli.main(["study", "--help"])
     text = capsys.readouterr().out
-    assert "zhang2016:" in text and "runtime: ~5 min with -j 2" in text
+    assert "zhang2016:" in text and "runtime: ~10 min with -j 2" in text
     assert "dask.distributed" in text and "worker processes" in text
     with pytest.raises(SystemExit):
         cli.main(["sweep", "--help"])
