@@ -70,6 +70,14 @@ __all__ = [
     "DETAILS",
     "classification_detail",
     "cage_instability_index",
+    "circle_centre",
+    "rotation",
+    "false_nearest_neighbours",
+    "embedding_dimension",
+    "whirl_growth",
+    "whirl_lock",
+    "classify_motion",
+    "MOTION_DEFAULTS",
 ]
 
 #: Closed vocabulary of the labels (``"k periods"`` stands for any k >= 2).
@@ -81,11 +89,15 @@ DEFAULTS = dict(
     kmax=16,  # largest period searched
     n_min=6,  # fewest section points for any label
     n_min_aperiodic=40,  # fewest points to separate quasi-periodic from chaos
-    lyap_threshold=0.15,  # largest Lyapunov exponent per section > 0.15: chaos
+    separation=4.0,  # k >= 2 clusters: class medians at least 4 spreads apart
+    min_turns=1.0,  # quasi-periodic: at least one full turn round the invariant curve over the window
+    same_sense=0.9,  # invariant curve: at least 90 % of the steps turn the same way
+    max_gap=0.25,  # closed curve: no angular gap larger than a quarter turn between the sorted points
     thickness_threshold=0.45,  # median local thickness above which the section is a cloud, not curves
-    d2_cloud=1.6,  # correlation dimension above which a cloud is called area-filling (confidence only)
-    n_01=400,  # fewest points for the 0-1 test to count (false "chaos" below, see docs/analysis.md)
-    k01_threshold=0.5,  # 0-1 test: K > 0.5 chaotic
+    lyap_threshold=0.1,  # chaos needs a divergence rate > 0.1 per section (in the FNN embedding) ...
+    k01_threshold=0.5,  # ... and the 0-1 test K > 0.5
+    fnn_threshold=0.1,  # embedding dimension: false-nearest-neighbour fraction < 10 %
+    m_max=5,  # largest embedding dimension tried
 )
 
 
@@ -118,29 +130,43 @@ def _normalise(points, signal=None, scale=None) -> np.ndarray:
     return (P - P.mean(axis=0)) / scale
 
 
+#: Quantile of the point-to-median distances taken as a cluster's spread (robust to a few noisy crossings).
+SPREAD_QUANTILE = 0.95
+
+
 def _class_spread(Q, k: int) -> tuple[float, np.ndarray]:
-    """Largest distance of a point from the median of its residue class mod k, and the k class medians."""
+    """Spread of the residue classes mod k (the 95th percentile of the point-to-class-median distances), and
+    the k class medians."""
     meds = np.array([np.median(Q[r::k], axis=0) for r in range(k)])
-    spread = max(float(np.max(np.linalg.norm(Q[r::k] - meds[r], axis=1))) for r in range(k))
-    return spread, meds
+    d = np.concatenate([np.linalg.norm(Q[r::k] - meds[r], axis=1) for r in range(k)])
+    return float(np.quantile(d, SPREAD_QUANTILE)), meds
 
 
-def periodicity(Q, tol: float = DEFAULTS["tol"], kmax: int = DEFAULTS["kmax"], min_per_cluster: int = 4):
+def periodicity(Q, tol: float = DEFAULTS["tol"], kmax: int = DEFAULTS["kmax"], min_per_cluster: int = 4,
+                separation: float = DEFAULTS["separation"]):
     """Smallest period k of normalised section points ``Q`` (cluster test), or None.
 
-    Returns ``(k, spread)`` where ``spread`` is the largest distance of a point
-    from the median of its residue class (points r, r+k, r+2k, ...), or
-    ``(None, best_spread)`` with the smallest such spread over the k tried.
+    k passes when every point lies within ``tol`` of the median of its residue class (points r, r+k, r+2k,
+    ...) and, for k >= 2, the k class medians are at least ``separation`` times the largest class spread
+    apart (k clusters, not one smeared cluster cut into k interleaved pieces).  Returns ``(k, spread,
+    sep)`` with ``sep`` the smallest median distance / spread (inf for k = 1), or ``(None, best_spread,
+    None)`` with the smallest spread over the k tried.
     """
     Q = np.asarray(Q, dtype=float)
     n = len(Q)
     best = np.inf
     for k in range(1, min(kmax, n // min_per_cluster) + 1):
-        spread, _ = _class_spread(Q, k)
+        spread, meds = _class_spread(Q, k)
         best = min(best, spread)
-        if spread <= tol:
-            return k, spread
-    return None, best
+        if spread > tol:
+            continue
+        if k == 1:
+            return 1, spread, float("inf")
+        d = np.linalg.norm(meds[:, None, :] - meds[None, :, :], axis=-1)[np.triu_indices(k, 1)]
+        sep = float(d.min() / spread) if spread > 0 else float("inf")
+        if sep >= separation:
+            return k, spread, sep
+    return None, best, None
 
 
 def scattered_groups(Q, kmax: int = DEFAULTS["kmax"], separation: float = 3.0, min_per_cluster: int = 3):
@@ -315,30 +341,138 @@ def closed_curve_ratio(Q) -> float:
     return L / hull.area if hull.area > 0 else float("nan")  # 2-D hull: .area is the perimeter
 
 
-def rotation_number(Q) -> float:
-    """Mean rotation per section of points circling their centroid, folded to [0, 0.5] [turns].
+def circle_centre(Q) -> np.ndarray:
+    """Centre of the least-squares circle through 2-D points (Kasa's algebraic fit), or their centroid.
 
-    The angle of each point about the centroid is unwrapped along the
-    sequence; the mean increment / 2 pi, taken modulo 1 and folded (rho and
-    1 - rho are the same rotation seen from the other side), is the rotation
-    number of a quasi-periodic section -- for the cage-revolution section of
-    a circular whirl, the whirl/cage speed ratio modulo 1, folded.
+    Kasa I. D., "A circle fitting procedure and its error analysis", IEEE Trans. Instrum. Meas. 25 (1976)
+    8-14: minimise sum (x^2 + y^2 + D x + E y + F)^2, linear in (D, E, F).  For points on an arc the
+    centre is the arc's centre of curvature, not the centroid of the points (which lies on the chord side
+    and makes an arc look like a whole turn); for points on a closed curve both are inside the curve.
     """
     Q = np.asarray(Q, dtype=float)
-    if len(Q) < 3:
+    c0 = Q.mean(axis=0)
+    if len(Q) < 3 or Q.shape[1] != 2:
+        return c0
+    X = Q - c0
+    A = np.column_stack([X, np.ones(len(X))])
+    b = -np.sum(X * X, axis=1)
+    sol, *_ = np.linalg.lstsq(A, b, rcond=None)
+    c = -0.5 * sol[:2]
+    size = float(np.max(np.ptp(X, axis=0))) or 1.0
+    if not np.all(np.isfinite(c)) or np.hypot(*c) > 50.0 * size:  # (nearly) collinear points: no circle
+        return c0
+    return c0 + c
+
+
+def rotation(Q, centre=None) -> dict:
+    """Rotation of a sequence of 2-D points about a centre: total turns, mean turn per step, order, coverage.
+
+    The angle of each point about ``centre`` (default :func:`circle_centre`) is differenced along the
+    sequence, each step wrapped to (-1/2, 1/2] turn, and summed (the unwrapped phase).  Returns
+    ``turns`` (|total| [turns]), ``rho`` (signed mean turn per step), ``rho_sd`` (its standard error from
+    the scatter of the steps [turns]), ``same_sense`` (fraction of the steps turning the majority way),
+    ``largest_gap`` (largest angular gap between the sorted angles [turns]; small for points all around a
+    closed curve, large for an arc).  For an invariant circle of a quasi-periodic section the steps all turn
+    the same way (a circle homeomorphism, Arnold 1983, Sec. 11) and ``rho`` is its rotation number.
+    """
+    Q = np.asarray(Q, dtype=float)
+    out = {"turns": float("nan"), "rho": float("nan"), "rho_sd": float("nan"), "same_sense": float("nan"),
+           "largest_gap": float("nan")}
+    if len(Q) < 3 or Q.shape[1] != 2:
+        return out
+    c = circle_centre(Q) if centre is None else np.asarray(centre, float)
+    ang = np.arctan2(Q[:, 1] - c[1], Q[:, 0] - c[0]) / (2 * np.pi)
+    d = np.diff(ang)
+    d = d - np.round(d)  # each step wrapped to (-1/2, 1/2] turn
+    tot = float(np.sum(d))
+    sgn = 1.0 if tot >= 0 else -1.0
+    srt = np.sort(ang % 1.0)
+    gaps = np.diff(np.concatenate([srt, srt[:1] + 1.0]))
+    out.update(turns=abs(tot), rho=float(np.mean(d)), rho_sd=float(np.std(d) / math.sqrt(len(d))),
+               same_sense=float(np.mean(sgn * d > 0)), largest_gap=float(np.max(gaps)))
+    return out
+
+
+def rotation_number(Q) -> float:
+    """Mean rotation per section of points circling their curve's centre, folded to [0, 0.5] [turns].
+
+    The centre is the least-squares circle centre (:func:`circle_centre`), not the centroid of the points
+    (on an arc the centroid lies near the chord and the rotation read about it is several times too large);
+    the angle is unwrapped along the sequence (:func:`rotation`) and the mean increment, taken modulo 1 and
+    folded (rho and 1 - rho are the same rotation seen from the other side), is the rotation number.  For
+    the cage-revolution section of a circular whirl it is the whirl/cage speed ratio modulo 1, folded.
+    """
+    r = rotation(Q)
+    if not math.isfinite(r["rho"]):
         return float("nan")
-    c = Q.mean(axis=0)
-    ang = np.unwrap(np.arctan2(Q[:, 1] - c[1], Q[:, 0] - c[0]))
-    rho = (np.mean(np.diff(ang)) / (2 * np.pi)) % 1.0
+    rho = r["rho"] % 1.0
     return float(min(rho, 1.0 - rho))
+
+
+def false_nearest_neighbours(x, m_max: int = 5, r_tol: float = 10.0, a_tol: float = 2.0) -> np.ndarray:
+    """Fraction of false nearest neighbours of a scalar series in delay embeddings of dimension 1..m_max.
+
+    Kennel M. B., Brown R., Abarbanel H. D. I., "Determining embedding dimension for phase-space
+    reconstruction using a geometrical construction", Phys. Rev. A 45 (1992) 3403-3411, Eqs. 4-5: the
+    nearest neighbour of a point in dimension m is false when adding the (m+1)-th delay coordinate moves it
+    away by more than ``r_tol`` times their distance, or by more than ``a_tol`` times the attractor size
+    (standard deviation of x).  Deterministic low-dimensional data reach a small fraction at the embedding
+    dimension; noise does not.
+    """
+    x = np.asarray(x, dtype=float)
+    x = x[np.isfinite(x)]
+    RA = float(np.std(x)) or 1.0
+    out = np.full(m_max, np.nan)
+    for m in range(1, m_max + 1):
+        n = len(x) - m
+        if n < 10:
+            break
+        X = np.column_stack([x[i : i + n] for i in range(m)])
+        nxt = x[m : m + n]
+        d2 = np.sum((X[:, None, :] - X[None, :, :]) ** 2, axis=-1)
+        np.fill_diagonal(d2, np.inf)
+        j = np.argmin(d2, axis=1)
+        dm = np.sqrt(d2[np.arange(n), j])
+        dx = np.abs(nxt - nxt[j])
+        with np.errstate(divide="ignore", invalid="ignore"):
+            false = (dx > r_tol * dm) | (np.sqrt(dm**2 + dx**2) > a_tol * RA)
+        out[m - 1] = float(np.mean(false))
+    return out
+
+
+def embedding_dimension(x, m_max: int = 5, threshold: float = 0.1) -> int | None:
+    """Smallest delay-embedding dimension whose false-nearest-neighbour fraction is below ``threshold``."""
+    f = false_nearest_neighbours(x, m_max)
+    ok = np.nonzero(np.isfinite(f) & (f < threshold))[0]
+    return int(ok[0]) + 1 if ok.size else None
+
+
+def _delay_lyapunov(x, m: int, steps: int = 4, n_max: int = 1500) -> float:
+    """Largest Lyapunov exponent [1/section] of a scalar series in an m-dimensional delay embedding [2]."""
+    x = np.asarray(x, dtype=float)[-n_max:]
+    return lyapunov_exponent(x[:, None], m=m, steps=steps, n_max=n_max)
+
+
+def _is_curve_rotation(Q, min_turns, same_sense, max_gap, thickness_threshold) -> tuple[bool, dict]:
+    """Points on one closed curve visited in a consistent rotation (an invariant circle) -- and how far round."""
+    r = rotation(Q)
+    tau = local_thickness(Q) if len(Q) >= 8 else float("nan")
+    r["local_thickness"] = tau
+    curve = (math.isfinite(tau) and tau <= thickness_threshold and math.isfinite(r["same_sense"])
+             and r["same_sense"] >= same_sense)
+    r["curve"] = bool(curve)
+    r["closed"] = bool(curve and r["turns"] >= min_turns and r["largest_gap"] <= max_gap)
+    return r["closed"], r
 
 
 def classify(points, signal=None, *, scale=None, tol=DEFAULTS["tol"], kmax=DEFAULTS["kmax"],
              n_min=DEFAULTS["n_min"], n_min_aperiodic=DEFAULTS["n_min_aperiodic"],
+             separation=DEFAULTS["separation"], min_turns=DEFAULTS["min_turns"],
+             same_sense=DEFAULTS["same_sense"], max_gap=DEFAULTS["max_gap"],
              lyap_threshold=DEFAULTS["lyap_threshold"], thickness_threshold=DEFAULTS["thickness_threshold"],
-             d2_cloud=DEFAULTS["d2_cloud"], n_01=DEFAULTS["n_01"],
+             fnn_threshold=DEFAULTS["fnn_threshold"], m_max=DEFAULTS["m_max"],
              k01_threshold=DEFAULTS["k01_threshold"], seed=0):
-    """Classify a Poincare section (criteria in the module docstring).
+    """Classify a Poincare section (criteria in the module docstring and docs/analysis.md).
 
     Parameters
     ----------
@@ -362,79 +496,337 @@ def classify(points, signal=None, *, scale=None, tol=DEFAULTS["tol"], kmax=DEFAU
     confidence : float
         In [0, 1] (0 for "undetermined").
     details : dict
-        Indicators: ``n_points``, ``period``, ``spread``, ``k01``,
-        ``lyapunov``, ``correlation_dimension``, ``closed_curve_ratio``,
-        ``reason``.
+        Indicators: ``n_points``, ``period``, ``spread``, ``separation``, ``turns``, ``rotation_number``,
+        ``same_sense``, ``largest_gap``, ``k01``, ``embedding_dimension``, ``lyapunov``,
+        ``correlation_dimension``, ``local_thickness``, ``closed_curve_ratio``, ``sections_per_turn``,
+        ``kind`` (a one-word reading: periodic, converging, invariant-curve, drifting-arc, chaotic,
+        irregular, too-few-points) and ``reason``.
     """
     Q = _normalise(points, signal, scale)
     n = len(Q)
-    det: dict = {"n_points": n, "tol": tol, "period": None, "spread": None, "k01": None, "lyapunov": None,
-                 "correlation_dimension": None, "local_thickness": None, "closed_curve_ratio": None, "groups": None,
-                 "rotation_number": None,
-                 "reason": ""}
+    det: dict = {"n_points": n, "tol": tol, "period": None, "spread": None, "separation": None, "k01": None,
+                 "lyapunov": None, "embedding_dimension": None, "correlation_dimension": None,
+                 "local_thickness": None, "closed_curve_ratio": None, "groups": None, "rotation_number": None,
+                 "turns": None, "same_sense": None, "largest_gap": None, "sections_per_turn": None, "islands": None,
+                 "kind": "", "reason": ""}
     if n < n_min:
+        det["kind"] = "too-few-points"
         det["reason"] = f"only {n} Poincare section points (need >= {n_min}); simulate longer"
         return "undetermined", 0.0, det
-    k, spread = periodicity(Q, tol, kmax)
+    # --- 1. periodic: k clusters repeated in order, each within tol, separated by >= `separation` spreads
+    k, spread, sep = periodicity(Q, tol, kmax, separation=separation)
     converging = False
     if k is None and n >= 2 * n_min:
-        k2, spread2 = periodicity(Q[n // 2 :], tol, kmax)
+        k2, spread2, sep2 = periodicity(Q[n // 2 :], tol, kmax, separation=separation)
         if k2 is not None:
-            k, spread, converging = k2, spread2, True
+            k, spread, sep, converging = k2, spread2, sep2, True
     if k is not None:
         n_used = n - n // 2 if converging else n
-        det.update(period=k, spread=spread)
+        det.update(period=k, spread=spread, separation=sep)
         conf = (1.0 - 0.5 * spread / tol) * min(1.0, np.sqrt((n_used / k) / 10.0))
         if converging:
             conf *= 0.8
+            det["kind"] = "converging"
             det["reason"] = "periodic on the last half of the section only (transient still decaying)"
         else:
+            det["kind"] = "periodic"
             det["reason"] = f"all points within {spread:.3g} (tol {tol}) of {k} cluster(s) repeated in order"
+            if k > 1:
+                det["reason"] += f", clusters {sep:.1f} spreads apart"
         return period_label(k), float(round(conf, 3)), det
     det["spread"] = spread
     det["closed_curve_ratio"] = closed_curve_ratio(Q) if Q.shape[1] == 2 else None
     if n < n_min_aperiodic:
+        det["kind"] = "too-few-points"
         det["reason"] = (f"not periodic (k <= {kmax}), but only {n} section points: need >= {n_min_aperiodic} "
                          "to tell quasi-periodic from chaos; simulate longer")
         return "undetermined", 0.0, det
-    lam = lyapunov_exponent(Q)
+    # --- 2. an invariant closed curve (or k islands of curves) visited in a consistent rotation: quasi-periodic
+    if Q.shape[1] == 2:
+        best = None
+        for kk in range(1, 5):
+            if n // kk < n_min_aperiodic // 2:
+                break
+            rots = [_is_curve_rotation(Q[r::kk], min_turns, same_sense, max_gap, thickness_threshold) for r in range(kk)]
+            if all(ok for ok, _ in rots):
+                best = (kk, rots)
+                break
+            if kk == 1:
+                first = rots[0][1]
+        r1 = first if best is None else best[1][0][1]
+        det.update(turns=r1["turns"], same_sense=r1["same_sense"], largest_gap=r1["largest_gap"],
+                   local_thickness=r1["local_thickness"])
+        if best is not None:
+            kk, rots = best
+            r = rots[0][1]
+            rho = r["rho"] % 1.0
+            det.update(rotation_number=float(min(rho, 1.0 - rho)), islands=kk,
+                       turns=min(rr["turns"] for _, rr in rots))
+            conf = 0.6 + 0.4 * min(1.0, det["turns"] / 5.0)
+            conf *= 1.0 - 0.5 * r["local_thickness"] / thickness_threshold
+            conf *= min(1.0, math.sqrt(n / 100.0))
+            det["kind"] = "invariant-curve"
+            where = "one closed curve" if kk == 1 else f"{kk} closed curves visited in turn"
+            det["reason"] = (f"aperiodic, points on {where} (local thickness {r['local_thickness']:.2f}), "
+                             f"{100 * r['same_sense']:.0f} % of the steps turning the same way, "
+                             f"{det['turns']:.1f} turns over the window; rotation number {det['rotation_number']:.3f}")
+            return "quasi-periodic", float(round(min(max(conf, 0.0), 1.0), 3)), det
+        if r1["curve"] and r1["turns"] < min_turns:
+            # one curve, consistent rotation, but not yet round once: a drifting arc (slow drift / locking)
+            spt = (n - 1) / r1["turns"] if r1["turns"] > 0 else float("inf")
+            det.update(sections_per_turn=spt, kind="drifting-arc")
+            det["reason"] = (f"the points drift along an arc ({r1['turns']:.2f} turn of their curve over {n} "
+                             f"sections, all steps the same way): quasi-periodic or a slow transient cannot be told "
+                             f"apart before one full turn; run ~{max(spt - (n - 1), 0):.0f} more sections")
+            return "undetermined", 0.0, det
+    # --- 3. chaos only when two independent indicators agree
+    x = Q[:, 0]
+    K = zero_one_test(x, seed=seed)
+    m = embedding_dimension(x, m_max=m_max, threshold=fnn_threshold)
+    lam = _delay_lyapunov(x, m) if m is not None else float("nan")
     D2 = correlation_dimension(Q)
-    tau = local_thickness(Q)
-    K = zero_one_test(Q[:, 0], seed=seed) if n >= n_01 else float("nan")
-    det.update(k01=K, lyapunov=lam, correlation_dimension=D2, local_thickness=tau)
-    if not np.isfinite(lam) or not np.isfinite(tau):
-        det["reason"] = "aperiodic, but the Lyapunov exponent or the local thickness could not be estimated"
-        return "undetermined", 0.0, det
-    if lam > lyap_threshold:  # exponential divergence of neighbouring section points
-        label = "chaos"
-        conf = 0.5 + 0.5 * min(1.0, (lam - lyap_threshold) / 0.2)
-        det["reason"] = f"aperiodic, largest Lyapunov exponent {lam:.3g}/section > {lyap_threshold}"
-    elif tau > thickness_threshold:  # irregular scatter: neither points nor a curve (the seed's "disorderly" map)
-        label = "chaos"
-        conf = 0.4 + (0.1 if np.isfinite(D2) and D2 > d2_cloud else 0.0)
-        groups = scattered_groups(Q, kmax)
-        det["groups"] = groups[0] if groups else None
-        where = (f"around {groups[0]} separated groups (spread {100 * groups[1]:.1f} % of the orbit > tol "
-                 f"{100 * tol:g} %)") if groups else f"(spread {100 * spread:.1f} % of the orbit at best)"
-        det["reason"] = (f"aperiodic: irregular scatter {where}, local thickness {tau:.2f} > {thickness_threshold}, "
-                         f"Lyapunov {lam:.3g}/section (no measurable divergence)")
+    tau = det["local_thickness"] if det["local_thickness"] is not None else local_thickness(Q)
+    det.update(k01=K, embedding_dimension=m, lyapunov=lam, correlation_dimension=D2, local_thickness=tau)
+    chaotic_01 = math.isfinite(K) and K > k01_threshold
+    diverging = m is not None and math.isfinite(lam) and lam > lyap_threshold
+    if chaotic_01 and diverging:
+        det["kind"] = "chaotic"
+        conf = 0.5 + 0.25 * min(1.0, (K - k01_threshold) / 0.4) + 0.25 * min(1.0, (lam - lyap_threshold) / 0.3)
+        conf *= min(1.0, math.sqrt(n / 100.0))
+        det["reason"] = (f"aperiodic; 0-1 test K = {K:.2f} > {k01_threshold} and divergence rate {lam:.3g}/section "
+                         f"> {lyap_threshold} in a {m}-dimensional delay embedding (false nearest neighbours)")
+        return "chaos", float(round(min(max(conf, 0.0), 1.0), 3)), det
+    groups = scattered_groups(Q, kmax)
+    det["groups"] = groups[0] if groups else None
+    det["kind"] = "irregular"
+    why = []
+    why.append(f"0-1 test K = {K:.2f}" + (" (chaotic)" if chaotic_01 else " (regular)"))
+    if m is None:
+        why.append(f"no delay embedding up to {m_max} dimensions removes the false neighbours (noise-like)")
     else:
-        label = "quasi-periodic"
-        conf = 0.5 + 0.5 * (1.0 - min(max(lam, 0.0), lyap_threshold) / lyap_threshold)
-        conf *= 1.0 - 0.5 * tau / thickness_threshold
-        det["rotation_number"] = rotation_number(Q)
-        det["reason"] = (f"aperiodic, points on a curve (local thickness {tau:.2f}, correlation dimension {D2:.2f}), "
-                         f"no divergence (Lyapunov {lam:.3g}/section <= {lyap_threshold}); rotation number "
-                         f"{det['rotation_number']:.3f}")
-    conf *= min(1.0, math.sqrt(n / 100.0))  # fewer than 100 points: less confidence
-    if np.isfinite(K):
-        if (K > k01_threshold) == (label == "chaos"):
-            conf = min(1.0, conf + 0.1)
-            det["reason"] += f"; 0-1 test agrees (K = {K:.2f})"
-        else:
-            conf *= 0.6
-            det["reason"] += f"; 0-1 test disagrees (K = {K:.2f})"
-    return label, float(round(min(max(conf, 0.0), 1.0), 3)), det
+        why.append(f"divergence {lam:.3g}/section in {m} dimensions" + (" (diverging)" if diverging else ""))
+    where = f" around {groups[0]} separated groups" if groups else ""
+    det["reason"] = (f"aperiodic irregular section{where} (spread {100 * spread:.1f} % of the orbit), neither "
+                     f"periodic nor a curve, and the chaos indicators do not agree: " + "; ".join(why) + "; run longer")
+    return "undetermined", 0.0, det
+
+
+# ----------------------------------------------------------------------------- the whole motion: growth, still cage, section
+
+#: Thresholds of :func:`classify_motion` (decisions in docs/analysis.md, "Classification of a run").
+MOTION_DEFAULTS = dict(
+    growth_ratio=1.5,  # RMS whirl radius of the last quarter / first quarter >= 1.5 (monotone): growing
+    growth_floor=1e-4,  # ... unless the largest quarter is below 1e-4 x the guide clearance (numerical jitter)
+    still_fraction=0.01,  # RMS radius about the orbit centre < 1 % of the guide clearance: still cage
+    lock_turns=0.1,  # whirl-cage phase drifting less than 0.1 turn (and within 3 sigma of 0) over the window: locked
+)
+
+
+def whirl_growth(t, y, z, parts: int = 4) -> dict:
+    """Growth or decay of the whirl about the orbit's own centre over the window.
+
+    The window is cut into ``parts`` equal spans; ``radii`` are the RMS radii about the window's mean
+    centre in each.  ``ratio`` = last / first, ``monotone`` True when the radii rise (or fall) from span to
+    span, ``sigma`` = ln(ratio) / (time between the first and last span centres) [1/s] (growth rate of an
+    exponential spiral r ~ e^(sigma t)).
+    """
+    t = np.asarray(t, float)
+    y = np.asarray(y, float)
+    z = np.asarray(z, float)
+    ok = np.isfinite(t) & np.isfinite(y) & np.isfinite(z)
+    t, y, z = t[ok], y[ok], z[ok]
+    out = {"radii": [], "ratio": float("nan"), "monotone": False, "sigma": float("nan"), "direction": ""}
+    if t.size < 4 * parts:
+        return out
+    r2 = (y - y.mean()) ** 2 + (z - z.mean()) ** 2
+    edges = np.linspace(t[0], t[-1], parts + 1)
+    idx = np.clip(np.searchsorted(edges, t, side="right") - 1, 0, parts - 1)
+    radii = np.sqrt(np.bincount(idx, r2, minlength=parts) / np.maximum(np.bincount(idx, minlength=parts), 1))
+    out["radii"] = [float(v) for v in radii]
+    if radii[0] <= 0 or radii[-1] <= 0:
+        return out
+    ratio = float(radii[-1] / radii[0])
+    d = np.diff(radii)
+    out["ratio"] = ratio
+    out["monotone"] = bool(np.all(d > 0) or np.all(d < 0))
+    dt = (edges[-1] - edges[0]) * (parts - 1) / parts
+    out["sigma"] = float(math.log(ratio) / dt) if dt > 0 else float("nan")
+    return out
+
+
+def whirl_lock(t, y, z, cage_angle) -> dict:
+    """Is the whirl locked to the cage rotation?  The unwrapped whirl-cage phase and its drift.
+
+    The whirl phase theta(t) is the angle of the cage centre about the orbit's own centre, unwrapped; the
+    cage angle phi(t) its rotation about X.  n = round(d theta / d phi) is the nearest harmonic (1 for a
+    whirl at the cage speed) and psi = theta - n phi the whirl-cage phase.  Its least-squares slope against
+    phi / 2 pi is the drift ``rho`` in turns per cage revolution -- the signed rotation number of the
+    cage-revolution (stroboscopic) section -- with the standard error ``rho_sd`` from the residual scatter
+    (samples treated as independent after thinning to ~8 per cage revolution).  ``drift_turns`` is the drift
+    over the window; ``locked`` is True when it is below :data:`MOTION_DEFAULTS` ["lock_turns"] and within
+    three standard errors of zero.
+    """
+    t = np.asarray(t, float)
+    y = np.asarray(y, float)
+    z = np.asarray(z, float)
+    phi = np.asarray(cage_angle, float)
+    ok = np.isfinite(t) & np.isfinite(y) & np.isfinite(z) & np.isfinite(phi)
+    t, y, z, phi = t[ok], y[ok], z[ok], phi[ok]
+    out = {"harmonic": None, "ratio": float("nan"), "rho": float("nan"), "rho_sd": float("nan"),
+           "drift_turns": float("nan"), "locked": None, "cage_revolutions": float("nan")}
+    if t.size < 16:
+        return out
+    theta = np.unwrap(np.arctan2(z - z.mean(), y - y.mean()))
+    revs = (phi - phi[0]) / (2 * np.pi)
+    out["cage_revolutions"] = float(abs(revs[-1]))
+    if abs(revs[-1]) < 1.0:
+        return out
+    ratio = float((theta[-1] - theta[0]) / (phi[-1] - phi[0]))
+    n = int(round(ratio))
+    psi = (theta - n * phi) / (2 * np.pi)
+    step = max(1, int(len(t) / (8.0 * abs(revs[-1]))))
+    X, P = revs[::step], psi[::step]
+    A = np.column_stack([X, np.ones_like(X)])
+    coef, *_ = np.linalg.lstsq(A, P, rcond=None)
+    res = P - A @ coef
+    dof = max(len(X) - 2, 1)
+    sd = float(np.sqrt(np.sum(res**2) / dof / max(np.sum((X - X.mean()) ** 2), 1e-300)))
+    rho = float(coef[0])
+    drift = abs(rho * revs[-1])
+    out.update(harmonic=n, ratio=ratio, rho=rho, rho_sd=sd, drift_turns=float(drift),
+               locked=bool(drift < MOTION_DEFAULTS["lock_turns"] and abs(rho) <= 3 * sd + 1e-12))
+    return out
+
+
+def classify_motion(t, y, z, vy=None, vz=None, cage_angle=None, *, clearance: float | None = None,
+                    section: str = "transverse", scale=None,
+                    growth_ratio: float = MOTION_DEFAULTS["growth_ratio"],
+                    growth_floor: float = MOTION_DEFAULTS["growth_floor"],
+                    still_fraction: float = MOTION_DEFAULTS["still_fraction"], **classify_kw):
+    """Classify the cage-centre motion over an analysed window (after the transient).
+
+    Order (docs/analysis.md, "Classification of a run"):
+
+    1. **growth / decay** of the whirl about the orbit's own centre (:func:`whirl_growth`): the RMS radius
+       of the last quarter >= ``growth_ratio`` x the first (or <= 1/``growth_ratio``), rising (falling)
+       from quarter to quarter -> ``"undetermined"`` (kind "growing" / "decaying"), unless a decaying
+       whirl has already come to rest (then step 2 decides);
+    2. **still cage**: RMS radius about the orbit centre over the last half < ``still_fraction`` x the
+       guide ``clearance`` -> ``"1 period"`` (kind "still"); the section is not consulted (a cage pressed
+       on its land jitters at the ball-pass frequency through the section thousands of times);
+    3. **section** (:func:`hsbearing.analysis.poincare.transverse_crossings` by default) and
+       :func:`classify` of its points (D_Y, V_Y), scaled by the orbit's extent (floored at half the
+       clearance, and that radius swept at the mean whirl speed for V_Y).
+
+    Parameters
+    ----------
+    t, y, z : (n,) array_like
+        Time [s] and cage-centre displacements D_Y, D_Z [m].
+    vy, vz : (n,) array_like, optional
+        Cage-centre velocities [m/s] (central differences of y, z without them).
+    cage_angle : (n,) array_like, optional
+        Cage rotation angle about X [rad]; needed for ``section="cage_revolution"`` and the lock report.
+    clearance : float, optional
+        Radial guide clearance [m]: the scale of "still" and of the tolerance floor.
+    section : str
+        ``"transverse"`` (default), ``"cage_revolution"`` or ``"plane"``.
+    scale : (2,) array_like, optional
+        Attractor extent of (D_Y, V_Y) for the tolerance (default: from the orbit, floored as above).
+
+    Returns
+    -------
+    label, confidence, details : str, float, dict
+        As :func:`classify`, plus ``growth`` (:func:`whirl_growth`), ``lock`` (:func:`whirl_lock`),
+        ``orbit_rms_radius`` [m], ``modulation_y`` [m] / ``modulation_vy`` [m/s] (largest distance of a
+        section point from its cluster median, for periodic labels: the amplitude of what the section does
+        not resolve, e.g. a ball-pass ripple), ``section`` (definition) and the section ``times``/``points``.
+    """
+    from hsbearing.analysis import poincare as _pc
+
+    t = np.asarray(t, float)
+    y = np.asarray(y, float)
+    z = np.asarray(z, float)
+    ok = np.isfinite(t) & np.isfinite(y) & np.isfinite(z)
+    vy = np.gradient(y, t) if vy is None and t.size >= 3 else np.asarray(vy if vy is not None else y * np.nan, float)
+    vz = np.gradient(z, t) if vz is None and t.size >= 3 else np.asarray(vz if vz is not None else z * np.nan, float)
+    ok &= np.isfinite(vy) & np.isfinite(vz)
+    t, y, z, vy, vz = t[ok], y[ok], z[ok], vy[ok], vz[ok]
+    phi = None if cage_angle is None else np.asarray(cage_angle, float)[ok]
+    c = float(clearance) if clearance is not None and math.isfinite(clearance) and clearance > 0 else None
+    extra: dict = {"growth": whirl_growth(t, y, z),
+                   "lock": whirl_lock(t, y, z, phi) if phi is not None else None,
+                   "orbit_rms_radius": None, "modulation_y": None, "modulation_vy": None,
+                   "section": {"kind": section}, "times": np.zeros(0), "points": np.zeros((0, 2))}
+    if t.size < 16:
+        det = {"n_points": 0, "kind": "too-few-points", "reason": "fewer than 16 orbit samples after the transient"}
+        return "undetermined", 0.0, {**det, **extra}
+    half = t >= t[0] + 0.5 * (t[-1] - t[0])
+    yh, zh = y[half], z[half]
+    rho_half = float(np.sqrt(np.mean((yh - yh.mean()) ** 2 + (zh - zh.mean()) ** 2)))
+    extra["orbit_rms_radius"] = float(np.sqrt(np.mean((y - y.mean()) ** 2 + (z - z.mean()) ** 2)))
+    g = extra["growth"]
+    still = c is not None and rho_half < still_fraction * c
+    # 1. growth / decay
+    if g["monotone"] and math.isfinite(g["ratio"]) and (g["ratio"] >= growth_ratio or g["ratio"] <= 1 / growth_ratio):
+        big = max(g["radii"])
+        if c is None or big >= growth_floor * c:
+            growing = g["ratio"] > 1
+            if growing or not still:
+                kind = "growing" if growing else "decaying"
+                e_time = 1.0 / abs(g["sigma"]) if math.isfinite(g["sigma"]) and g["sigma"] != 0 else float("inf")
+                rs = " -> ".join(f"{v * 1e6:.3g}" for v in g["radii"])
+                what = ("the whirl is growing: the run has not reached its attractor" if growing else
+                        "the whirl is decaying: converging, not settled")
+                det = {"n_points": 0, "kind": kind,
+                       "reason": (f"{what} (RMS radius about the orbit centre per quarter of the window {rs} um, "
+                                  f"growth rate {g['sigma']:.3g} 1/s, e-folding time {e_time:.3g} s); run longer")}
+                return "undetermined", 0.0, {**det, **extra}
+    # 2. still cage
+    if still:
+        det = {"n_points": 0, "kind": "still", "period": 1,
+               "reason": (f"cage centre at rest: RMS radius about its mean position {rho_half:.3g} m < "
+                          f"{still_fraction:g} x guide clearance {c:.3g} m over the last half of the window "
+                          "(a fixed point; the section is not consulted)")}
+        return "1 period", 1.0, {**det, **extra}
+    # 3. the section
+    if section == "cage_revolution":
+        if phi is None:
+            raise ValueError("classify_motion: section 'cage_revolution' needs cage_angle")
+        ph = phi if np.nanmean(np.diff(phi)) >= 0 else -phi
+        tc = _pc.crossing_times(t, ph)
+        defn = {"kind": section}
+    elif section == "transverse":
+        tc, defn = _pc.transverse_crossings(t, y, z, vy, vz)
+        defn = {"kind": section, **defn}
+    elif section == "plane":
+        zc = z - np.mean(z)
+        up = np.nonzero((zc[:-1] < 0.0) & (zc[1:] >= 0.0))[0]
+        frac = -zc[up] / (zc[up + 1] - zc[up])
+        tc = t[up] + frac * (t[up + 1] - t[up])
+        defn = {"kind": section, "centre_z": float(np.mean(z)), "sense": 1}
+    else:
+        _pc.section_description(section)  # raises with the known names
+    pts = np.column_stack([np.interp(tc, t, y), np.interp(tc, t, vy)])
+    extra.update(section=defn, times=tc, points=pts)
+    orbit = np.column_stack([y, vy])
+    if scale is None:
+        scale = np.ptp(orbit, axis=0)
+        if c is not None:
+            w = float(np.nanmean(np.abs(np.gradient(np.unwrap(np.arctan2(z - z.mean(), y - y.mean())), t))))
+            scale = np.maximum(scale, [0.5 * c, 0.5 * c * max(w, 1e-12)])
+    label, conf, det = classify(pts, scale=scale, **classify_kw)
+    if det.get("period") and len(pts):
+        k = int(det["period"])
+        meds = np.array([np.median(pts[r::k], axis=0) for r in range(k)])
+        dev = np.abs(np.concatenate([pts[r::k] - meds[r] for r in range(k)]))
+        extra["modulation_y"] = float(dev[:, 0].max())
+        extra["modulation_vy"] = float(dev[:, 1].max())
+    if det.get("kind") == "drifting-arc" and len(tc) > 1 and math.isfinite(det.get("sections_per_turn") or float("nan")):
+        dt_sec = float(np.mean(np.diff(tc)))
+        more = max(det["sections_per_turn"] - (len(tc) - 1), 0.0) * dt_sec
+        det["run_longer_s"] = more
+        det["reason"] += f" (~{more:.2g} s more)"
+    return label, conf, {**det, **extra}
 
 
 # ----------------------------------------------------------------------------- sub-labels and instability indicator

@@ -1,16 +1,38 @@
 """Poincare section of the cage mass-centre motion.
 
-Section used (default, ``section="cage_revolution"``): one point per cage
-revolution -- the cage-centre displacement and velocity along Y, (D_Y, V_Y),
-sampled each time the cage rotation angle about the bearing axis X crosses a
-multiple of 2 pi.  This is the stroboscopic map of seed 004 (Zhang et al.
-2016, Figs. 5-12 plot D_Y against V_Y): a cage whirling synchronously with
-its own rotation gives one point ("1 period"), a whirl that repeats after k
-cage revolutions gives k points, an incommensurate whirl a closed curve.
+Default (``section="transverse"``): a section **transverse to the flow**.  With a
+constant inner-ring speed and a fixed (or constant-speed) outer ring the bearing
+model is an autonomous system (the right-hand side never reads t), and the cage
+rotation angle is an ordinary state, not a clock.  The section is the
+half-plane of the cage-centre state
 
-Alternative (``section="plane"``): the classical plane section of the
-trajectory, one point each time the cage centre crosses the plane D_Z = mean
-(D_Z) with dD_Z/dt > 0 (independent of the cage rotation angle).
+    D_Z = mean(D_Z),   D_Y > mean(D_Y),   crossed in the sense of the whirl
+
+(the sense is the sign of the mean angular momentum (D_Y - ȳ) V_Z - (D_Z - z̄) V_Y
+of the orbit about its own centre: upward crossings, V_Z > 0, for a forward
+whirl, downward for a backward one).  The points are (D_Y, V_Y) at the
+crossings, the plane of Zhang et al. 2016, Figs. 5-12.  A single circular
+whirl gives **one point at any whirl/cage speed ratio**, a k-loop orbit k
+points, a two-frequency orbit a closed curve, a chaotic orbit a cloud
+(Poincare's transversal section of an autonomous flow: Guckenheimer & Holmes
+1983, Sec. 1.4; Parker & Chua 1989, Ch. 3).  "1 period" therefore means that
+the cage-centre orbit is periodic, not that the whole state is: the cage
+rotation (and the ball-pass excitation) may run at an incommensurate
+frequency, and whether the whirl is locked to the cage rotation is reported
+separately (:func:`hsbearing.analysis.classify.whirl_lock`).
+
+Alternatives (kept as options):
+
+- ``section="cage_revolution"``: one point per cage revolution, when the cage
+  rotation angle about X crosses a multiple of 2 pi -- a stroboscopic map.
+  Stroboscopic sections are the right tool for *forced* (non-autonomous)
+  systems whose forcing is a clock (Guckenheimer & Holmes 1983, Sec. 1.5); here
+  it turns a single circular whirl at 0.95-0.99 x the cage speed into points
+  that creep around an ellipse, so its label follows the arithmetic of the
+  whirl/cage ratio, not the orbit's shape.  Its rotation number is what the
+  lock test reports.
+- ``section="plane"``: the full plane D_Z = mean(D_Z) crossed upwards (both
+  sides of the centre).
 
 Crossing times are found by linear interpolation of the rotation angle (or of
 D_Z) between the two stored output samples that bracket the crossing; D_Y and
@@ -44,6 +66,8 @@ import numpy as np
 
 __all__ = [
     "SECTIONS",
+    "DEFAULT_SECTION",
+    "transverse_crossings",
     "DEFAULT_TRANSIENT_FRACTION",
     "section_description",
     "cage_rotation_angle",
@@ -57,7 +81,10 @@ __all__ = [
 ]
 
 #: Closed vocabulary of the Poincare sections.
-SECTIONS = ("cage_revolution", "plane")
+SECTIONS = ("transverse", "cage_revolution", "plane")
+
+#: The default section (:func:`poincare_section`, :func:`hsbearing.analysis.annotate`, the CLI and the case).
+DEFAULT_SECTION = "transverse"
 
 #: Leading fraction of the simulated span always discarded as start-up transient.
 DEFAULT_TRANSIENT_FRACTION = 0.3
@@ -65,8 +92,11 @@ DEFAULT_TRANSIENT_FRACTION = 0.3
 MAX_TRANSIENT_FRACTION = 0.6
 
 
-def section_description(section: str = "cage_revolution") -> str:
+def section_description(section: str = DEFAULT_SECTION) -> str:
     """One-line text describing a section (stored in ``ds.attrs['poincare_section']``)."""
+    if section == "transverse":
+        return ("transverse section of the autonomous flow: (D_Y, V_Y) of the cage mass centre when it crosses the "
+                "half-plane D_Z = mean(D_Z), D_Y > mean(D_Y) in the sense of the whirl (one point per loop of the orbit)")
     if section == "cage_revolution":
         return ("one point per cage revolution: (D_Y, V_Y) of the cage mass centre when the cage rotation "
                 "angle about X crosses a multiple of 2 pi (stroboscopic map, seed 004 Figs. 5-12)")
@@ -207,23 +237,90 @@ def crossing_times(t, phase, period: float = 2.0 * np.pi) -> np.ndarray:
     return t[idx] + frac * (t[idx + 1] - t[idx])
 
 
-def poincare_section(ds, section: str = "cage_revolution", transient=None):
+def transverse_crossings(t, y, z, vy=None, vz=None, hysteresis: float = 0.05):
+    """Crossings of the half-plane D_Z = z̄, D_Y > ȳ in the sense of the whirl (the transverse section).
+
+    Parameters
+    ----------
+    t, y, z : (n,) array_like
+        Time [s] and the cage-centre coordinates D_Y, D_Z [m] over the analysed window.
+    vy, vz : (n,) array_like, optional
+        Velocities [m/s] (for the sense of the whirl; finite differences of y, z without them).
+    hysteresis : float
+        A crossing counts only when D_Z - z̄ has been below -hysteresis x (RMS radius about the centre)
+        (on the far side of the plane) since the previous crossing: noise near the plane is not a loop.
+
+    Returns
+    -------
+    times : (m,) ndarray
+        Crossing times [s] (linear interpolation of D_Z - z̄ between the bracketing samples).
+    definition : dict
+        ``centre_y``, ``centre_z`` [m] (the window means), ``sense`` (+1 forward: crossing with V_Z > 0,
+        -1 backward: V_Z < 0, 0 when the orbit has no sense of rotation).
+    """
+    t = np.asarray(t, float)
+    y = np.asarray(y, float)
+    z = np.asarray(z, float)
+    ok = np.isfinite(t) & np.isfinite(y) & np.isfinite(z)
+    t, y, z = t[ok], y[ok], z[ok]
+    defn = {"centre_y": float("nan"), "centre_z": float("nan"), "sense": 0}
+    if t.size < 3:
+        return np.zeros(0), defn
+    yc, zc = float(np.mean(y)), float(np.mean(z))
+    dy, dz = y - yc, z - zc
+    if vy is None or vz is None:
+        vy_, vz_ = np.gradient(y, t), np.gradient(z, t)
+    else:
+        vy_, vz_ = np.asarray(vy, float)[ok], np.asarray(vz, float)[ok]
+    L = float(np.nanmean(dy * vz_ - dz * vy_))  # mean angular momentum about the orbit centre: sense of the whirl
+    sense = 1 if L > 0 else -1 if L < 0 else 0
+    defn.update(centre_y=yc, centre_z=zc, sense=sense)
+    if sense == 0:
+        return np.zeros(0), defn
+    s = sense * dz
+    i = np.nonzero((s[:-1] < 0.0) & (s[1:] >= 0.0))[0]
+    if i.size > 1 and hysteresis > 0:
+        # Schmitt trigger: a crossing counts only if the orbit went below -h since the previous one, so
+        # noise jittering about the plane (h = hysteresis x RMS radius about the centre) is not a new loop
+        h = hysteresis * float(np.sqrt(np.mean(dy * dy + dz * dz)))
+        below = np.nonzero(s < -h)[0]
+        keep_i = []
+        last = -1
+        for j in i:
+            if last < 0 or (below.size and np.searchsorted(below, last + 1) < below.size
+                            and below[np.searchsorted(below, last + 1)] <= j):
+                keep_i.append(j)
+                last = j
+        i = np.asarray(keep_i, dtype=int)
+    frac = -s[i] / (s[i + 1] - s[i])
+    yi = dy[i] + frac * (dy[i + 1] - dy[i])
+    keep = yi > 0.0  # the half-plane on the +Y side of the centre
+    return t[i][keep] + frac[keep] * (t[i + 1][keep] - t[i][keep]), defn
+
+
+def poincare_section(ds, section: str = DEFAULT_SECTION, transient=None, return_definition: bool = False):
     """Section crossing times [s] and points (D_Y [m], V_Y [m/s]) after the transient.
 
     ``transient``: see :func:`after_transient` (None = the run's stored cut, else automatic).
+    ``return_definition``: also return the section's definition (dict: ``kind``, and for the transverse
+    section its centre and sense), as stored with the label by :func:`hsbearing.analysis.annotate`.
 
     Returns
     -------
     times : (n,) ndarray
     points : (n, 2) ndarray
         Columns D_Y, V_Y of the cage mass centre.
+    definition : dict
+        Only with ``return_definition``.
     """
     section_description(section)  # validates the name
     t = _time(ds)
     mask, _ = after_transient(ds, transient)
     ts = t[mask]
+    defn: dict = {"kind": section}
     if ts.size < 2:
-        return np.zeros(0), np.zeros((0, 2))
+        out = (np.zeros(0), np.zeros((0, 2)))
+        return (*out, defn) if return_definition else out
     y = np.asarray(ds["cage_center_y"].values, dtype=float)
     vy = cage_velocity(ds, "y")
     if section == "cage_revolution":
@@ -231,25 +328,32 @@ def poincare_section(ds, section: str = "cage_revolution", transient=None):
         if np.nanmean(np.diff(phase)) < 0:  # cage turning the negative way: count its revolutions
             phase = -phase
         tc = crossing_times(ts, phase)
+    elif section == "transverse":
+        z = np.asarray(ds["cage_center_z"].values, dtype=float)
+        tc, d = transverse_crossings(ts, y[mask], z[mask], vy[mask], cage_velocity(ds, "z")[mask])
+        defn.update(d)
     else:
         z = np.asarray(ds["cage_center_z"].values, dtype=float)[mask]
         zc = z - np.mean(z)
         up = np.nonzero((zc[:-1] < 0.0) & (zc[1:] >= 0.0))[0]
         frac = -zc[up] / (zc[up + 1] - zc[up])
         tc = ts[up] + frac * (ts[up + 1] - ts[up])
+        defn.update(centre_z=float(np.mean(z)), sense=1)
     pts = np.column_stack([np.interp(tc, t, y), np.interp(tc, t, vy)])
-    return tc, pts
+    return (tc, pts, defn) if return_definition else (tc, pts)
 
 
-def poincare_points(ds, section: str = "cage_revolution", transient=None) -> np.ndarray:
+def poincare_points(ds, section: str | None = None, transient=None) -> np.ndarray:
     """The (n, 2) Poincare points (D_Y [m], V_Y [m/s]) of a dynamic run (see module docstring).
 
-    If the Dataset already carries ``poincare_y``/``poincare_vy`` (written by
-    :func:`hsbearing.analysis.annotate`) for the same section and no other
-    transient is asked, those are returned, so the figure and the stored
-    classification agree.
+    ``section=None``: the section the run was annotated with (``attrs["poincare_section_kind"]``), else
+    the default.  If the Dataset already carries ``poincare_y``/``poincare_vy`` (written by
+    :func:`hsbearing.analysis.annotate`) for the same section and no other transient is asked, those are
+    returned, so the figure and the stored classification agree.
     """
-    if ("poincare_y" in ds and "poincare_vy" in ds and transient is None
-            and section == ds.attrs.get("poincare_section_kind", section)):
+    stored = ds.attrs.get("poincare_section_kind")
+    if section is None:
+        section = stored or DEFAULT_SECTION
+    if ("poincare_y" in ds and "poincare_vy" in ds and transient is None and section == stored):
         return np.column_stack([np.asarray(ds["poincare_y"].values, float), np.asarray(ds["poincare_vy"].values, float)])
     return poincare_section(ds, section, transient)[1]
