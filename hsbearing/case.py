@@ -221,6 +221,10 @@ SCHEMA: dict[str, dict[str, Field]] = {
         "model": _f("str", "model variant", default="default"),
         "kinematics": _f("choice", "quasi-static ball kinematics", default="outer_race_control",
                          choices=("outer_race_control", "inner_race_control", "friction")),
+        "section": _f("choice", "Poincare section of the cage-motion classification: transverse (half-plane of the "
+                      "cage-centre state, crossed in the sense of the whirl; default), cage_revolution (once per cage "
+                      "revolution, stroboscopic) or plane (D_Z = mean, upward)", default="transverse",
+                      choices=("transverse", "cage_revolution", "plane")),
         "start_positions": _f("int", "gyro model (seed 000): cage start positions of the SFMC start ensemble (extra constant-rate "
                               "starts of one oscillation_period, cage turned over -1/2..+1/2 of its pocket play); 1 = none",
                               default=1, positive=True),

@@ -24,7 +24,10 @@ _parse_sets = parse_sets  # the older name (hsbearing.case.parse_sets)
 
 
 def _load(args) -> "object":
-    return load_case(args.case or DEFAULT_CASE, **_parse_sets(getattr(args, "set", None)))
+    sets = _parse_sets(getattr(args, "set", None))
+    if getattr(args, "section", None):  # --section NAME is --set simulation.section=NAME
+        sets["simulation.section"] = args.section
+    return load_case(args.case or DEFAULT_CASE, **sets)
 
 
 def _default_out(case, suffix: str, extra: str = "") -> Path:
@@ -73,11 +76,22 @@ def _print_summary(ds, out: Path | None = None) -> None:
     if "classification" in ds.attrs:
         cls = ds.attrs["classification"]
         reason = ds.attrs.get("classification_reason", "")
+        kind = ds.attrs.get("poincare_section_kind", "")
+        sec = f" [{kind} section]" if kind else ""
         if cls == "undetermined":
-            print(f"classification: undetermined ({reason})" if reason else "classification: undetermined")
+            print(f"classification{sec}: undetermined ({reason})" if reason else f"classification{sec}: undetermined")
         else:
             conf = ds.attrs.get("classification_confidence")
-            print(f"classification: {cls}" + (f" (confidence {float(conf):.2f})" if conf is not None else ""))
+            det = ds.attrs.get("classification_detail", "")
+            print(f"classification{sec}: {cls}" + (f", {det}" if det else "")
+                  + (f" (confidence {float(conf):.2f})" if conf is not None else ""))
+        if ds.attrs.get("poincare_section"):
+            print(f"section: {ds.attrs['poincare_section']}")
+        alt = ds.attrs.get("classification_alternative")
+        if alt:
+            print(f"classification [{ds.attrs.get('classification_alternative_section', 'other')} section]: {alt}")
+        if ds.attrs.get("whirl_cage_lock"):
+            print(f"whirl-cage lock: {ds.attrs['whirl_cage_lock']}")
     stats = {k[len("solver_"):]: v for k, v in ds.attrs.items()
              if k.startswith("solver_") and not k.endswith("_units")}  # the NAME_units companions are not stats
     if stats:
@@ -388,6 +402,9 @@ def build_parser() -> argparse.ArgumentParser:
     with_case(sp)
     sp.add_argument("-o", "--output", help="netCDF archive (default runs/<case>-<hash>.nc)")
     sp.add_argument("--duration", help="simulated time, e.g. 0.2s (default: [simulation] duration)")
+    sp.add_argument("--section", choices=("transverse", "cage_revolution", "plane"),
+                    help="Poincare section of the cage-motion label (default: [simulation] section, transverse: "
+                         "one point per loop of the cage-centre orbit; cage_revolution: once per cage revolution)")
     sp.add_argument("--no-figure", "--no-plot", dest="no_plot", action="store_true",
                     help="do not draw the PNG figure (--no-plot is the older spelling)")
     sp.add_argument("-q", "--quiet", action="store_true", help="no progress bar")

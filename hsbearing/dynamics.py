@@ -491,7 +491,8 @@ def continue_run(previous, duration=None, progress: bool = False, *, source: str
         if k not in both and "time" not in v.dims:
             both[k] = v
     attrs = dict(previous.attrs)
-    for k in ("classification", "classification_confidence", "classification_reason", "classification_details"):
+    for k in ("classification", "classification_confidence", "classification_reason", "classification_details",
+              "classifier_version"):
         attrs.pop(k, None)
     for k, v in new.attrs.items():
         if k.startswith("solver_") and k in attrs and isinstance(v, (int, float)) and k not in ("solver_rtol", "solver_atol") \
@@ -505,7 +506,7 @@ def continue_run(previous, duration=None, progress: bool = False, *, source: str
         try:
             from hsbearing.analysis import annotate as _annotate
 
-            both = _annotate(both, case)
+            both = _annotate(both, case, section=case.simulation.section)
         except (ImportError, AttributeError):
             pass
     if err is not None:
@@ -594,7 +595,7 @@ def to_dataset(model: DynamicModel, t, Y, stats, status="ok", annotate: bool = T
         try:
             from hsbearing.analysis import annotate as _annotate
 
-            ds = _annotate(ds, case)
+            ds = _annotate(ds, case, section=case.simulation.section)
         except (ImportError, AttributeError):  # analysis not available: the raw run is still complete
             pass
     return ds

@@ -473,6 +473,12 @@ def archive_is_complete(path: str | os.PathLike) -> bool:
         return False
 
 
+def _classifier_version() -> str:
+    from hsbearing.analysis.orbit import CLASSIFIER_VERSION
+
+    return CLASSIFIER_VERSION
+
+
 def _read_record(path: Path) -> dict | None:
     """The sweep record of a point archive, or None if it is not a complete, readable archive.
 
@@ -489,6 +495,11 @@ def _read_record(path: Path) -> dict | None:
             if rec is None:  # an archive written by something else
                 rec = {"status": str(ds.attrs["status"]), "error": str(ds.attrs.get("error", "")),
                        "wall_time": float("nan"), "summary_error": "no summary stored"}
+            stale = (ds.attrs.get("sweep_kind", "run") == "run" and "time" in ds.dims
+                     and ds.attrs.get("classification") is not None
+                     and (rec.get("summary") or {}).get("classifier_version") != _classifier_version())
+            if stale:  # classified by older rules: re-read with the current classifier (the run is kept)
+                rec["summary_error"] = "classified by an older classifier version"
             if rec.get("summary_error"):  # summarise again (the analysis may have been fixed since)
                 kind = ds.attrs.get("sweep_kind", "run")
                 try:

@@ -581,9 +581,19 @@ def classify(points, signal=None, *, scale=None, tol=DEFAULTS["tol"], kmax=DEFAU
             return "undetermined", 0.0, det
     # --- 3. chaos only when two independent indicators agree
     x = Q[:, 0]
-    K = zero_one_test(x, seed=seed)
-    m = embedding_dimension(x, m_max=m_max, threshold=fnn_threshold)
-    lam = _delay_lyapunov(x, m) if m is not None else float("nan")
+    groups = scattered_groups(Q, kmax)
+    if groups and n // groups[0] >= 20:
+        # banded section (k separated bands visited in turn): the band alternation is a period-k component
+        # that dominates the 0-1 test's mean-square displacement and fakes determinism in a delay embedding
+        # (the next band is always predictable); both indicators read the k-th return map of each band
+        kb = groups[0]
+        series = [x[r::kb] for r in range(kb)]
+    else:
+        kb, series = 1, [x]
+    K = float(np.mean([zero_one_test(xs, seed=seed) for xs in series]))
+    ms = [embedding_dimension(xs, m_max=m_max, threshold=fnn_threshold) for xs in series]
+    m = None if any(v is None for v in ms) else max(ms)
+    lam = float(np.mean([_delay_lyapunov(xs, m) for xs in series])) / kb if m is not None else float("nan")
     D2 = correlation_dimension(Q)
     tau = det["local_thickness"] if det["local_thickness"] is not None else local_thickness(Q)
     det.update(k01=K, embedding_dimension=m, lyapunov=lam, correlation_dimension=D2, local_thickness=tau)
@@ -596,7 +606,6 @@ def classify(points, signal=None, *, scale=None, tol=DEFAULTS["tol"], kmax=DEFAU
         det["reason"] = (f"aperiodic; 0-1 test K = {K:.2f} > {k01_threshold} and divergence rate {lam:.3g}/section "
                          f"> {lyap_threshold} in a {m}-dimensional delay embedding (false nearest neighbours)")
         return "chaos", float(round(min(max(conf, 0.0), 1.0), 3)), det
-    groups = scattered_groups(Q, kmax)
     det["groups"] = groups[0] if groups else None
     det["kind"] = "irregular"
     why = []
@@ -832,15 +841,17 @@ def classify_motion(t, y, z, vy=None, vz=None, cage_angle=None, *, clearance: fl
 # ----------------------------------------------------------------------------- sub-labels and instability indicator
 
 #: Closed vocabulary of ``classification_detail`` (the sub-label of a class; '' when there is none).
-#: "1 period" of seed 004 (Figs. 5a, 6a, 8b, 9b, 11a: "single circle whirl" + one Poincare point) is
+#: "1 period" (Zhang et al. 2016, Figs. 5a, 6a, 8b, 9b, 11a: "single circle whirl" + one Poincare point) is
 #: split into what the section alone cannot tell apart:
-#:   "still cage"            the cage centre does not move (fixed point, concentric or offset): one
-#:                           section point because nothing moves, not because a whirl closes;
-#:   "synchronous whirl"     a single-circle whirl closing once per cage revolution (whirl / cage speed = +-1):
-#:                           the paper's "1 period" (Fig. 5a);
-#:   "harmonic whirl"        a whirl at an integer multiple n >= 2 of the cage speed (also one section point);
-#:   "synchronous orbit"     any other closed orbit repeating once per cage revolution (not a circle).
-DETAILS = ("", "still cage", "synchronous whirl", "harmonic whirl", "synchronous orbit")
+#:   "still cage"            the cage centre does not move (fixed point, concentric or offset);
+#:   "synchronous whirl"     a single-circle whirl at (within ratio_tol) the cage speed, either sense: the
+#:                           paper's "1 period" (Fig. 5a);
+#:   "harmonic whirl"        a circular whirl at an integer multiple n >= 2 of the cage speed;
+#:   "circular whirl"        a circular whirl at a speed that is no integer multiple of the cage speed (the
+#:                           transverse section gives one point at any whirl speed);
+#:   "synchronous orbit"     any other closed single-loop orbit (not a circle) -- under the cage-revolution
+#:                           section: an orbit repeating once per cage revolution.
+DETAILS = ("", "still cage", "synchronous whirl", "harmonic whirl", "circular whirl", "synchronous orbit")
 
 #: Thresholds of :func:`classification_detail` (decisions in docs/analysis.md, "Sub-labels of 1 period").
 DETAIL_DEFAULTS = dict(
@@ -943,8 +954,12 @@ def classification_detail(label: str, t, y, z, cage_speed, clearance: float, *,
             info["reason"] = (f"circular whirl (radius sd/mean {spread:.2f} <= {circle_spread}) at {ratio:+.3f} x "
                               f"the cage speed, radius {rbar:.3g} m")
             return kind, info
-    info["reason"] = (f"closed orbit repeating once per cage revolution, not a single circle at an integer multiple "
-                      f"of the cage speed (radius sd/mean {spread:.2f}, whirl/cage {ratio:+.3f})")
+        if spread <= circle_spread:
+            info["reason"] = (f"circular whirl (radius sd/mean {spread:.2f} <= {circle_spread}) at {ratio:+.3f} x "
+                              f"the cage speed (no integer multiple), radius {rbar:.3g} m")
+            return "circular whirl", info
+    info["reason"] = (f"closed single-loop orbit, not a circle (radius sd/mean {spread:.2f} > {circle_spread}, "
+                      f"whirl/cage {ratio:+.3f})")
     return "synchronous orbit", info
 
 

@@ -31,14 +31,14 @@ import xarray as xr
 from hsbearing.analysis import poincare as _pc
 from hsbearing.analysis.classify import cage_instability_index as _instability
 from hsbearing.analysis.classify import classification_detail as _detail
-from hsbearing.analysis.classify import classify as _classify
+from hsbearing.analysis.classify import classify_motion as _motion
 from hsbearing.analysis.slip import cage_slip_ratio, raceway_control_cage_speed, theoretical_cage_speed
 from hsbearing.analysis.spectrum import whirl_frequency  # noqa: F401 - public here as before
 from hsbearing.results import VARIABLES, register
 
 _trapz = getattr(np, "trapezoid", None) or np.trapz  # numpy < 2 has only trapz
 
-__all__ = ["annotate", "summary", "whirl_metrics", "whirl_frequency", "whirl_ratio_note", "REQUIRED",
+__all__ = ["annotate", "summary", "CLASSIFIER_VERSION", "whirl_metrics", "whirl_frequency", "whirl_ratio_note", "REQUIRED",
            "PARKED_MOTION_FRACTION", "PARKED_OFFSET_FRACTION"]
 
 #: A cage is "parked" when its centre, after the transient, moves less than this fraction of the guide
@@ -46,6 +46,10 @@ __all__ = ["annotate", "summary", "whirl_metrics", "whirl_frequency", "whirl_rat
 PARKED_MOTION_FRACTION = 0.05
 #: ... while that mean position lies at least this fraction of the clearance off the bearing axis.
 PARKED_OFFSET_FRACTION = 0.5
+
+#: Version of the classification rules; a stored label made under another version is recomputed by
+#: :func:`summary` (so sweeps, studies and maps re-read their archives with the current classifier).
+CLASSIFIER_VERSION = "2026-11-26 transverse section + orbit tests"
 
 #: Variables a dynamic-run Dataset must carry for :func:`annotate`.
 REQUIRED = ("time", "cage_speed", "cage_center_y", "cage_center_z")
@@ -65,7 +69,7 @@ for _n, _d, _u, _l in [
     ("whirl_frequency_ratio", (), "1", "2 pi whirl_frequency / mean cage speed (1 = synchronous whirl)"),
     ("classification_detail", (), "1",
      "sub-label of the class (sweep/map summaries; attrs of a run): still cage, synchronous whirl, harmonic whirl, "
-     "synchronous orbit for '1 period', '' otherwise"),
+     "circular whirl, synchronous orbit for '1 period', '' otherwise"),
     ("cage_instability_index", (), "1",
      "normalised whirl-radius dispersion sd(r)/mean(r) of the cage mass centre after the transient "
      "(Ghaisas, Wassgren & Sadeghi 2004; mean floored at 5 % of the guide clearance)"),
@@ -160,7 +164,37 @@ def whirl_ratio_note(ds, clearance: float | None = None) -> str | None:
     return text
 
 
-def annotate(ds: xr.Dataset, case=None, *, alpha=None, section: str = "cage_revolution",
+def _jsonable(d):
+    """A dict with NaN/inf floats as None and numpy scalars/arrays as plain Python (for a JSON attr)."""
+    if isinstance(d, dict):
+        return {k: _jsonable(v) for k, v in d.items()}
+    if isinstance(d, (list, tuple)):
+        return [_jsonable(v) for v in d]
+    if isinstance(d, np.ndarray):
+        return _jsonable(d.tolist())
+    if isinstance(d, (np.floating, float)):
+        return float(d) if math.isfinite(d) else None
+    if isinstance(d, (np.integer,)):
+        return int(d)
+    if isinstance(d, np.bool_):
+        return bool(d)
+    return d
+
+
+def _lock_text(lock: dict) -> str:
+    """One line: is the whirl locked to the cage rotation (whirl-cage phase drift, classify.whirl_lock)."""
+    if not lock or lock.get("locked") is None:
+        return "not measured (no cage angle, a still cage, or less than one cage revolution)"
+    n = lock["harmonic"]
+    drift = f"{lock['rho']:+.4f} +- {lock['rho_sd']:.4f} turn per cage revolution"
+    if lock["locked"]:
+        return (f"locked {n}:1 to the cage rotation (whirl-cage phase drift {drift}, "
+                f"{lock['drift_turns']:.3f} turn over {lock['cage_revolutions']:.0f} cage revolutions)")
+    return (f"not locked: whirl at {lock['ratio']:.4f} x the cage speed, whirl-cage phase drifts {drift} "
+            f"({lock['drift_turns']:.2f} turn over {lock['cage_revolutions']:.0f} cage revolutions)")
+
+
+def annotate(ds: xr.Dataset, case=None, *, alpha=None, section: str = _pc.DEFAULT_SECTION,
              transient="auto", **classify_kw) -> xr.Dataset:
     """Add slip ratio, whirl summaries, Poincare section and period classification to a dynamic run.
 
@@ -177,18 +211,22 @@ def annotate(ds: xr.Dataset, case=None, *, alpha=None, section: str = "cage_revo
         Contact angle [rad] for the theoretical cage speed (default: the
         nominal contact angle of the case).
     section : str
-        Poincare section, one of :data:`hsbearing.analysis.poincare.SECTIONS`.
+        Poincare section, one of :data:`hsbearing.analysis.poincare.SECTIONS` (default ``"transverse"``,
+        transverse to the flow; the label under the other section -- the cage-revolution one -- is stored
+        beside it as ``attrs["classification_alternative"]``).
     transient : "auto" or float
         Start-up transient to discard: ``"auto"`` (drift detection, between
         30 % and 60 % of the span) or a fixed fraction of the span.
     **classify_kw
-        Thresholds passed to :func:`hsbearing.analysis.classify.classify`.
+        Thresholds passed to :func:`hsbearing.analysis.classify.classify_motion` /
+        :func:`hsbearing.analysis.classify.classify`.
 
     Returns
     -------
     xarray.Dataset
         A new Dataset (the input is not modified).
     """
+    _pc.section_description(section)  # an unknown section name fails before any work
     missing = [v for v in REQUIRED if v not in ds.variables]
     if missing:
         raise ValueError(f"annotate: the Dataset lacks {', '.join(missing)} (needs {', '.join(REQUIRED)})")
@@ -243,39 +281,51 @@ def annotate(ds: xr.Dataset, case=None, *, alpha=None, section: str = "cage_revo
             ds["mean_cage_slip_ratio_raceway_control"] = _var(
                 "mean_cage_slip_ratio_raceway_control", cage_slip_ratio(float(ds["mean_cage_speed"]), w_rc))
 
-    # --- Poincare section and classification
-    tc, pts = _pc.poincare_section(ds, section)
-    ds = ds.drop_vars([v for v in ("poincare_time", "poincare_y", "poincare_vy") if v in ds.variables])
-    ds["poincare_time"] = _var("poincare_time", tc)
-    ds["poincare_y"] = _var("poincare_y", pts[:, 0])
-    ds["poincare_vy"] = _var("poincare_vy", pts[:, 1])
-    orbit = np.column_stack([np.asarray(ds["cage_center_y"].values, float)[mask], _pc.cage_velocity(ds, "y")[mask]])
-    gc = float(ds.attrs.get("guide_clearance", float("nan")))
-    if "scale" not in classify_kw and math.isfinite(gc) and gc > 0 and orbit.size:
-        # Fixed-point floor: a cage held still at an offset has an attractor far smaller than its
-        # clearance, and normalising by its own (noise-sized) extent would call the scatter aperiodic.
-        # The tolerance is measured against at least half the guide clearance (and that radius swept
-        # at the mean cage speed for V_Y), so section points within 1 % of the clearance (tol 0.02 of
-        # 0.5 c) form one cluster -> "1 period".  Whirl orbits that use the clearance are unaffected.
-        w_c = float(np.nanmean(np.abs(ds["cage_speed"].values[mask]))) if mask.any() else 0.0
-        floor = np.array([0.5 * gc, 0.5 * gc * max(w_c, 1e-12)])
-        classify_kw = dict(classify_kw, scale=np.maximum(np.ptp(orbit, axis=0), floor))
-    label, conf, det = _classify(pts, signal=orbit, **classify_kw)
-    # --- sub-label of the class from the continuous orbit, and the instability indicator
+    # --- classification of the motion (classify.classify_motion: growth, still cage, section, classifier)
+    t_m = t[mask]
     y_m = np.asarray(ds["cage_center_y"].values, float)[mask]
     z_m = np.asarray(ds["cage_center_z"].values, float)[mask]
-    detail, dinfo = _detail(label, t[mask], y_m, z_m, np.asarray(ds["cage_speed"].values, float)[mask], gc)
+    vy_m = _pc.cage_velocity(ds, "y")[mask]
+    vz_m = _pc.cage_velocity(ds, "z")[mask]
+    phi_m = _pc.cage_rotation_angle(ds)[mask]
+    gc = float(ds.attrs.get("guide_clearance", float("nan")))
+    gcl = gc if math.isfinite(gc) and gc > 0 else None
+    label, conf, det = _motion(t_m, y_m, z_m, vy_m, vz_m, phi_m, clearance=gcl, section=section, **classify_kw)
+    tc, pts, defn = det.pop("times"), det.pop("points"), det.pop("section")
+    ds = ds.drop_vars([v for v in ("poincare_time", "poincare_y", "poincare_vy") if v in ds.variables])
+    ds["poincare_time"] = _var("poincare_time", tc)
+    ds["poincare_y"] = _var("poincare_y", pts[:, 0] if len(pts) else np.zeros(0))
+    ds["poincare_vy"] = _var("poincare_vy", pts[:, 1] if len(pts) else np.zeros(0))
+    # --- the other section side by side (the clock section under the transverse default, and vice versa)
+    other = "cage_revolution" if section != "cage_revolution" else "transverse"
+    try:
+        label_o, conf_o, det_o = _motion(t_m, y_m, z_m, vy_m, vz_m, phi_m, clearance=gcl, section=other, **classify_kw)
+    except Exception as exc:  # noqa: BLE001 - the side-by-side label is a report, never a failure of the run
+        label_o, conf_o, det_o = "undetermined", 0.0, {"reason": f"not computed: {exc}"}
+    # --- sub-label of the class from the continuous orbit, and the instability indicator
+    if det.get("kind") == "still":
+        detail, dinfo = "still cage", {"reason": det["reason"]}
+    else:
+        detail, dinfo = _detail(label, t_m, y_m, z_m, np.asarray(ds["cage_speed"].values, float)[mask], gc)
     ds["cage_instability_index"] = _var("cage_instability_index", _instability(y_m, z_m, gc))
+    lock = det.get("lock") or {}
     ds.attrs.update(
         classification=label,
+        classifier_version=CLASSIFIER_VERSION,
         classification_confidence=conf,
         classification_reason=det.get("reason", ""),
+        classification_kind=det.get("kind", ""),
         classification_detail=detail,
         classification_detail_reason=dinfo.get("reason", ""),
-        classification_details=json.dumps({k: (None if isinstance(v, float) and not math.isfinite(v) else v)
-                                           for k, v in det.items()}),
+        classification_details=json.dumps(_jsonable(det)),
+        classification_alternative_section=other,
+        classification_alternative=label_o,
+        classification_alternative_confidence=conf_o,
+        classification_alternative_reason=det_o.get("reason", ""),
         poincare_section=_pc.section_description(section),
         poincare_section_kind=section,
+        poincare_section_definition=json.dumps(_jsonable(defn)),
+        whirl_cage_lock=_lock_text(lock),
         transient_discarded=float(t_discard),
         transient_rule=("auto: max(30 % of the span, end of drift of the per-revolution mean radius and cage speed), "
                         "at most 60 %" if transient == "auto" else f"fixed: first {100 * float(transient):g} % of the span"),
@@ -304,7 +354,8 @@ def summary(ds: xr.Dataset, case=None) -> dict[str, Any]:
     """
     out: dict[str, Any] = {"status": ds.attrs.get("status", "unknown")}
     dynamic = "time" in ds.dims
-    if dynamic and "classification" not in ds.attrs and all(v in ds.variables for v in REQUIRED):
+    if (dynamic and ds.attrs.get("classifier_version") != CLASSIFIER_VERSION
+            and all(v in ds.variables for v in REQUIRED)):  # not annotated, or by older rules: (re)classify
         ds = annotate(ds, case)
     if dynamic:
         mask, _ = _pc.after_transient(ds)
@@ -314,6 +365,11 @@ def summary(ds: xr.Dataset, case=None) -> dict[str, Any]:
     out["classification"] = ds.attrs.get("classification", "static" if not dynamic else "undetermined")
     out["classification_confidence"] = float(ds.attrs.get("classification_confidence", float("nan")))
     out["classification_detail"] = str(ds.attrs.get("classification_detail", ""))
+    out["classification_kind"] = str(ds.attrs.get("classification_kind", ""))
+    out["poincare_section_kind"] = str(ds.attrs.get("poincare_section_kind", ""))
+    out["classification_alternative"] = str(ds.attrs.get("classification_alternative", ""))
+    out["whirl_cage_lock"] = str(ds.attrs.get("whirl_cage_lock", ""))
+    out["classifier_version"] = str(ds.attrs.get("classifier_version", ""))
     for name in ("cage_instability_index", "mean_cage_slip_ratio", "mean_cage_slip_ratio_raceway_control", "mean_cage_speed",
                  "whirl_amplitude", "whirl_radius_max", "whirl_frequency", "whirl_frequency_ratio"):
         out[name] = _scalar(ds, name)

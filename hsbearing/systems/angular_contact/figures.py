@@ -78,6 +78,7 @@ def _plot_dynamic(ds, path: Path) -> Path:
                 ax.plot([], [], "r--", lw=1.0, label=f"guide clearance {float(gc) * 1e6:.0f} \u00b5m (off view: orbit "
                         + (f"uses {used:.1f} %)" if used >= 0.1 else "uses < 0.1 %)"))
         ax.plot([0], [0], "k+", ms=8)
+        _draw_section_line(ax, ds, lf, view)
         ax.set_xlim(-view, view)
         ax.set_ylim(-view, view)
         ax.set_aspect("equal", adjustable="box")
@@ -106,7 +107,7 @@ def _plot_dynamic(ds, path: Path) -> Path:
     # (b) Poincare map
     ax = axs[0, 1]
     try:
-        pts = poincare.poincare_points(ds, ds.attrs.get("poincare_section_kind", "cage_revolution"))
+        pts = poincare.poincare_points(ds)
     except Exception:
         pts = np.zeros((0, 2))
     vy = poincare.cage_velocity(ds, "y") if "cage_center_y" in ds else np.zeros(0)
@@ -136,13 +137,20 @@ def _plot_dynamic(ds, path: Path) -> Path:
     ax.set_ylabel(f"cage centre velocity $V_Y$ [{vu}]")
     lab = ds.attrs.get("classification", "")
     conf = ds.attrs.get("classification_confidence")
+    kind = ds.attrs.get("poincare_section_kind", "cage_revolution")
     ttl = f"(b) Poincar\u00e9 map, {len(pts)} points (one per cage revolution)"
-    if ds.attrs.get("poincare_section_kind") == "plane":
+    if kind == "plane":
         ttl = f"(b) Poincar\u00e9 map, {len(pts)} points (plane D_Z = mean, upward)"
+    elif kind == "transverse":
+        ttl = (f"(b) Poincar\u00e9 map, {len(pts)} points\n(transverse: D_Z = mean, D_Y > mean, in the whirl's sense;"
+               " red line in (a))")
     ax.set_title(ttl, fontsize=10)
     if lab:
         txt = lab if lab == "undetermined" or conf is None else f"{lab} (confidence {float(conf):.2f})"
         reason = ds.attrs.get("classification_reason", "")
+        alt = ds.attrs.get("classification_alternative")
+        if alt:
+            txt += f"  [{ds.attrs.get('classification_alternative_section', 'other')} section: {alt}]"
         if reason:
             short = reason.split("; 0-1 test")[0]
             short = short if len(short) <= 300 else short[:297] + "..."
@@ -223,3 +231,21 @@ def _plot_static(ds, path: Path) -> Path:
 
 plot_dynamic = _plot_dynamic
 plot_quasistatic = _plot_static
+
+
+def _draw_section_line(ax, ds, lf: float, view: float) -> None:
+    """The transverse section's half-plane D_Z = z̄, D_Y > ȳ as a red half-line on the orbit panel."""
+    import json
+
+    if ds.attrs.get("poincare_section_kind") != "transverse":
+        return
+    try:
+        d = json.loads(ds.attrs.get("poincare_section_definition", "{}"))
+        yc, zc, sense = float(d["centre_y"]) * lf, float(d["centre_z"]) * lf, int(d["sense"])
+    except (KeyError, TypeError, ValueError):
+        return
+    if not (np.isfinite(yc) and np.isfinite(zc)):
+        return
+    ax.plot([yc, view], [zc, zc], color="r", lw=1.2, zorder=4,
+            label="section: D_Z = mean, D_Y > mean, " + ("V_Z > 0" if sense >= 0 else "V_Z < 0"))
+    ax.plot([yc], [zc], "rx", ms=6, zorder=4)
