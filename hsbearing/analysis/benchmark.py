@@ -140,12 +140,12 @@ def spiral(factor: float, revs: float = 80, ratio: float = 0.97, r0: float = 40e
 
 
 def micro_vibration(revs: float = 80, offset: float = 150e-6, amp: float = 1e-6) -> Motion:
-    """Cage resting off-centre (pressed on its land) with a 1 um ball-pass vibration.  Answer: 1 period (still)."""
+    """Cage resting off-centre (pressed on its land) with an ``amp`` ball-pass vibration.  Answer: 1 period (still)."""
     t = _time(revs)
     wb = BALLS * CAGE_SPEED
     w = offset + amp * (np.cos(wb * t) + 0.5j * np.sin(wb * t))
     dw = amp * wb * (-np.sin(wb * t) + 0.5j * np.cos(wb * t))
-    return _complex("micro-vibration at ball pass", t, w, dw, "1 period", kind="still")
+    return _complex(f"micro-vibration at ball pass ({amp * 1e6:g} um)", t, w, dw, "1 period", kind="still")
 
 
 @functools.lru_cache(maxsize=4)
@@ -214,5 +214,6 @@ def cases(length: str = "short", noise: float = 0.0, seed: int = 0) -> list[Moti
     revs = LENGTHS[length]
     base = [circle(r, ripple, revs) for r in (0.95, 0.98, 1.00, 1.02) for ripple in (0.0, 0.02)]
     base += [epicycle(3, revs=revs), epicycle(4, revs=revs), torus(revs=revs), locking_transient(revs),
-             spiral(3.0, revs), spiral(1 / 4.0, revs), micro_vibration(revs), rossler(revs), ou_noise(revs)]
+             spiral(3.0, revs), spiral(1 / 4.0, revs), micro_vibration(revs), micro_vibration(revs, amp=6e-6),
+             rossler(revs), ou_noise(revs)]
     return [with_noise(m, noise, seed + i) for i, m in enumerate(base)]

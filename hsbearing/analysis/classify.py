@@ -89,6 +89,7 @@ DEFAULTS = dict(
     kmax=16,  # largest period searched
     n_min=6,  # fewest section points for any label
     n_min_aperiodic=40,  # fewest points to separate quasi-periodic from chaos
+    modulation_tol=0.06,  # one cluster within 6 % of the orbit: "1 period" with a modulation of that amplitude
     separation=4.0,  # k >= 2 clusters: class medians at least 4 spreads apart
     min_turns=1.0,  # quasi-periodic: at least one full turn round the invariant curve over the window
     same_sense=0.9,  # invariant curve: at least 90 % of the steps turn the same way
@@ -467,7 +468,7 @@ def _is_curve_rotation(Q, min_turns, same_sense, max_gap, thickness_threshold) -
 
 def classify(points, signal=None, *, scale=None, tol=DEFAULTS["tol"], kmax=DEFAULTS["kmax"],
              n_min=DEFAULTS["n_min"], n_min_aperiodic=DEFAULTS["n_min_aperiodic"],
-             separation=DEFAULTS["separation"], min_turns=DEFAULTS["min_turns"],
+             modulation_tol=DEFAULTS["modulation_tol"], separation=DEFAULTS["separation"], min_turns=DEFAULTS["min_turns"],
              same_sense=DEFAULTS["same_sense"], max_gap=DEFAULTS["max_gap"],
              lyap_threshold=DEFAULTS["lyap_threshold"], thickness_threshold=DEFAULTS["thickness_threshold"],
              fnn_threshold=DEFAULTS["fnn_threshold"], m_max=DEFAULTS["m_max"],
@@ -536,6 +537,15 @@ def classify(points, signal=None, *, scale=None, tol=DEFAULTS["tol"], kmax=DEFAU
         return period_label(k), float(round(conf, 3)), det
     det["spread"] = spread
     det["closed_curve_ratio"] = closed_curve_ratio(Q) if Q.shape[1] == 2 else None
+    s1 = _class_spread(Q, 1)[0]
+    if s1 <= modulation_tol:
+        # one cluster, wider than the resolution tol but small against the orbit: one loop carrying a
+        # modulation the section does not resolve into a structure (e.g. the ball-pass ripple of V_Y)
+        det.update(period=1, spread=s1, kind="modulated")
+        conf = 0.5 * (1.0 - 0.5 * s1 / modulation_tol) * min(1.0, np.sqrt(n / 10.0))
+        det["reason"] = (f"one cluster of spread {100 * s1:.1f} % of the orbit (> the {100 * tol:g} % resolution, "
+                         f"<= {100 * modulation_tol:g} %): one loop with a modulation of that amplitude")
+        return "1 period", float(round(conf, 3)), det
     if n < n_min_aperiodic:
         det["kind"] = "too-few-points"
         det["reason"] = (f"not periodic (k <= {kmax}), but only {n} section points: need >= {n_min_aperiodic} "
@@ -627,6 +637,8 @@ MOTION_DEFAULTS = dict(
     growth_ratio=1.5,  # RMS whirl radius of the last quarter / first quarter >= 1.5 (monotone): growing
     growth_floor=1e-4,  # ... unless the largest quarter is below 1e-4 x the guide clearance (numerical jitter)
     still_fraction=0.01,  # RMS radius about the orbit centre < 1 % of the guide clearance: still cage
+    parked_fraction=0.05,  # ... or < 5 % of it while the centre rests >= 50 % of the clearance off the axis:
+    parked_offset=0.5,  # parked on the guide land (orbit.PARKED_MOTION_FRACTION / PARKED_OFFSET_FRACTION)
     lock_turns=0.1,  # whirl-cage phase drifting less than 0.1 turn (and within 3 sigma of 0) over the window: locked
 )
 
@@ -724,8 +736,9 @@ def classify_motion(t, y, z, vy=None, vz=None, cage_angle=None, *, clearance: fl
        guide ``clearance`` -> ``"1 period"`` (kind "still"); the section is not consulted (a cage pressed
        on its land jitters at the ball-pass frequency through the section thousands of times);
     3. **section** (:func:`hsbearing.analysis.poincare.transverse_crossings` by default) and
-       :func:`classify` of its points (D_Y, V_Y), scaled by the orbit's extent (floored at half the
-       clearance, and that radius swept at the mean whirl speed for V_Y).
+       :func:`classify` of its points (D_Y, V_Y), scaled by the orbit's peak-to-peak extent (no floor: a
+       cage at rest is answered by step 2, so the old floor at half the clearance is not needed and would
+       hide a small torus).
 
     Parameters
     ----------
@@ -774,7 +787,10 @@ def classify_motion(t, y, z, vy=None, vz=None, cage_angle=None, *, clearance: fl
     rho_half = float(np.sqrt(np.mean((yh - yh.mean()) ** 2 + (zh - zh.mean()) ** 2)))
     extra["orbit_rms_radius"] = float(np.sqrt(np.mean((y - y.mean()) ** 2 + (z - z.mean()) ** 2)))
     g = extra["growth"]
-    still = c is not None and rho_half < still_fraction * c
+    offset = float(np.hypot(yh.mean(), zh.mean()))
+    parked = (c is not None and rho_half < MOTION_DEFAULTS["parked_fraction"] * c
+              and offset >= MOTION_DEFAULTS["parked_offset"] * c)
+    still = c is not None and (rho_half < still_fraction * c or parked)
     # 1. growth / decay
     if g["monotone"] and math.isfinite(g["ratio"]) and (g["ratio"] >= growth_ratio or g["ratio"] <= 1 / growth_ratio):
         big = max(g["radii"])
@@ -792,10 +808,16 @@ def classify_motion(t, y, z, vy=None, vz=None, cage_angle=None, *, clearance: fl
                 return "undetermined", 0.0, {**det, **extra}
     # 2. still cage
     if still:
-        det = {"n_points": 0, "kind": "still", "period": 1,
-               "reason": (f"cage centre at rest: RMS radius about its mean position {rho_half:.3g} m < "
-                          f"{still_fraction:g} x guide clearance {c:.3g} m over the last half of the window "
-                          "(a fixed point; the section is not consulted)")}
+        if rho_half < still_fraction * c:
+            why = (f"cage centre at rest: RMS radius about its mean position {rho_half:.3g} m < "
+                   f"{still_fraction:g} x guide clearance {c:.3g} m over the last half of the window "
+                   "(a fixed point; the section is not consulted)")
+        else:
+            why = (f"cage parked on its guide land: centre {offset:.3g} m off the axis (>= "
+                   f"{MOTION_DEFAULTS['parked_offset']:g} x clearance {c:.3g} m), moving only {rho_half:.3g} m RMS "
+                   f"(< {MOTION_DEFAULTS['parked_fraction']:g} x clearance) about that point: a forced jitter, "
+                   "not a whirl (the section is not consulted)")
+        det = {"n_points": 0, "kind": "still", "period": 1, "reason": why}
         return "1 period", 1.0, {**det, **extra}
     # 3. the section
     if section == "cage_revolution":
@@ -818,11 +840,8 @@ def classify_motion(t, y, z, vy=None, vz=None, cage_angle=None, *, clearance: fl
     pts = np.column_stack([np.interp(tc, t, y), np.interp(tc, t, vy)])
     extra.update(section=defn, times=tc, points=pts)
     orbit = np.column_stack([y, vy])
-    if scale is None:
+    if scale is None:  # the orbit's own extent (a cage at rest was answered by the still test above)
         scale = np.ptp(orbit, axis=0)
-        if c is not None:
-            w = float(np.nanmean(np.abs(np.gradient(np.unwrap(np.arctan2(z - z.mean(), y - y.mean())), t))))
-            scale = np.maximum(scale, [0.5 * c, 0.5 * c * max(w, 1e-12)])
     label, conf, det = classify(pts, scale=scale, **classify_kw)
     if det.get("period") and len(pts):
         k = int(det["period"])
