@@ -30,6 +30,8 @@ import math
 import numpy as np
 from numba import njit
 
+from hsbearing.compile_cache import check_compile_cache
+
 __all__ = [
     "groove_contact",
     "hertz_normal_load",
@@ -145,3 +147,7 @@ def ball_equations_of_motion(Fx, Fr, Ft, Mx, My, Mz, r, rdot, thetadot, wy, wz, 
     wyd = My / I + thetadot * wz  # [1] Eq. 9
     wzd = Mz / I - thetadot * wy  # [1] Eq. 10
     return xdd, rdd, thdd, wxd, wyd, wzd
+
+
+# numba bakes callees and captured constants into its cache: key the cache on them (compile_cache.py)
+check_compile_cache(globals())

@@ -34,6 +34,7 @@ import math
 
 from numba import njit
 
+from hsbearing.compile_cache import check_compile_cache
 from hsbearing.models.ring import tilt_rotation
 
 __all__ = ["cage_orientation", "cage_generalised_moments", "pocket_normal_force", "pocket_friction_factor", "guide_land_forces", "guide_land_torque",
@@ -273,3 +274,7 @@ def cage_equations_of_motion(Fx, Fy, Fz, Mx, My, Mz, phidot, psidot_y, psidot_z,
     return (Fx / m, Fy / m, Fz / m, Mx / Ip,
             (My - Ip * phidot * psidot_z) / Id,  # [1] Eq. 15
             (Mz + Ip * phidot * psidot_y) / Id)  # [1] Eq. 16
+
+
+# numba bakes callees and captured constants into its cache: key the cache on them (compile_cache.py)
+check_compile_cache(globals())

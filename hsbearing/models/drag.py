@@ -18,6 +18,8 @@ import math
 
 from numba import njit
 
+from hsbearing.compile_cache import check_compile_cache
+
 __all__ = ["mixture_density", "ball_drag_force"]
 
 #: air density at the bearing temperature is small; 1.1 kg/m^3 (about 50-130 degC) is used.
@@ -39,3 +41,7 @@ def ball_drag_force(v, D, rho_e, C_D, v0):
     """
     va = math.sqrt(v * v + v0 * v0)
     return -0.5 * C_D * rho_e * 0.25 * math.pi * D * D * v * va**0.95  # [1]
+
+
+# numba bakes callees and captured constants into its cache: key the cache on them (compile_cache.py)
+check_compile_cache(globals())

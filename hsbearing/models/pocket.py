@@ -57,6 +57,8 @@ import math
 import numpy as np
 from numba import njit
 
+from hsbearing.compile_cache import check_compile_cache
+
 __all__ = ["station_film", "station_angle", "pocket_edges", "pocket_film_wrench", "pocket_film_gap",
            "pocket_elastic_force", "pocket_boundary_friction", "pocket_film_power", "pocket_wrench"]
 
@@ -135,6 +137,7 @@ def _rupture_table(n, cmap):
     return T
 
 
+check_compile_cache(globals())  # before the import-time call below; again at the end
 _RUP_TABLE = _rupture_table(_RUP_N, _RUP_C)
 
 
@@ -609,3 +612,7 @@ def pocket_wrench(ex, et, s0, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, R_out
                 Mt += px * gr - pr * gx
                 Pb = fb * vs
     return Fx, Fr, Ft, Mx, Mr, Mt, Qf, Qs, Pf, Pb, fb
+
+
+# numba bakes callees and captured constants into its cache: key the cache on them (compile_cache.py)
+check_compile_cache(globals())

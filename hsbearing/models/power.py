@@ -24,6 +24,8 @@ from __future__ import annotations
 
 from numba import njit
 
+from hsbearing.compile_cache import check_compile_cache
+
 __all__ = ["sliding_power", "couple_power", "normal_damping_power", "elastic_energy_hertz"]
 
 
@@ -77,3 +79,7 @@ def elastic_energy_hertz(K, delta):
     if delta <= 0.0:
         return 0.0
     return 0.4 * K * delta * delta * delta ** 0.5
+
+
+# numba bakes callees and captured constants into its cache: key the cache on them (compile_cache.py)
+check_compile_cache(globals())

@@ -16,6 +16,8 @@ import math
 
 from numba import njit
 
+from hsbearing.compile_cache import check_compile_cache
+
 __all__ = ["tilt_rotation", "inner_groove_centre", "tilt_generalised_moments", "ring_equations_of_motion"]
 
 
@@ -130,3 +132,7 @@ def ring_equations_of_motion(Fx, Fy, Fz, My, Mz, spin, bdy, bdz, m, Ip, Id):
     return (Fx / m, Fy / m, Fz / m,
             (My - Ip * spin * bdz) / Id,  # [1] Eq. 20
             (Mz + Ip * spin * bdy) / Id)  # [1] Eq. 21
+
+
+# numba bakes callees and captured constants into its cache: key the cache on them (compile_cache.py)
+check_compile_cache(globals())

@@ -12,6 +12,7 @@ import math
 
 import numba
 
+from hsbearing.compile_cache import check_compile_cache
 from hsbearing.models.traction.zhang2016 import (
     LOAD_FACTOR_SHARPNESS,
     NOTCH_SHARPNESS,
@@ -112,3 +113,7 @@ def mu_nb(A, B, C, D, S):
     else:
         th = math.tanh(x)
     return sg * (A * em1 + B * s * (1.0 + em1)) + mu0 * th
+
+
+# numba bakes callees and captured constants into its cache: key the cache on them (compile_cache.py)
+check_compile_cache(globals())
