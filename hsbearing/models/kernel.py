@@ -1,4 +1,4 @@
-"""Compiled right-hand side and arrowhead Jacobian of the bearing dynamic model (seed 004, Eqs. 5-21).
+"""Compiled right-hand side and arrowhead Jacobian of the bearing dynamic model (Zhang et al. 2016, Eqs. 5-21).
 
 Everything here is numba-compiled and allocation-free per call.  The physics
 lives in the named functions of :mod:`hsbearing.models.ball`,
@@ -158,7 +158,7 @@ def _race_contact(P, qu, qw, Q, nx, nr, nt, x, r, vx, vr, thd, wx, wy, wz,
         iU = 1.0 / U
         seps = P[P_SEPS]
         # symmetric nodes (qu[n-1-k] = -qu[k], Gauss-Legendre): phi of the mirror node is exactly -phi, so its
-        # cos is the same and its sin changes sign -- half the cos/sin calls (issue 18); the nodes are visited
+        # cos is the same and its sin changes sign -- half the cos/sin calls; the nodes are visited
         # in the order 0, n-1, 1, n-2, ... (the sums change by round-off only)
         n = qu.size
         sym = True

@@ -1,4 +1,4 @@
-"""Dissipated power of a contact action, by source (issue 17 item 1; seed 004 force set).
+"""Dissipated power of a contact action, by source (the force set of Zhang et al. 2016).
 
 Every contact of the dynamic model acts on two bodies with equal and opposite
 force systems (action on the ball, reaction on the ring, the cage or the

@@ -1,8 +1,8 @@
-"""Inner-ring kinematics and equations of motion (seed 004, Eqs. 17-21).
+"""Inner-ring kinematics and equations of motion (Zhang et al. 2016, Eqs. 17-21).
 
 References
 ----------
-[1] Zhang W. et al., Chin. J. Aeronaut. 29 (2016), seed 004, Eqs. (17)-(21).
+[1] Zhang W. et al., Chin. J. Aeronaut. 29 (2016), Eqs. (17)-(21).
 [2] Harris T. A., Kotzalas M. N., *Rolling Bearing Analysis*, 5th ed., Vol. 1,
     Ch. 2 (groove curvature centres: inner at radius d_m/2 + (f_i - 1/2) D cos alpha_0,
     outer at d_m/2 - (f_o - 1/2) D cos alpha_0, separated by A = (f_i + f_o - 1) D

@@ -2,7 +2,7 @@
 
 This module holds the friction-moment sources, the ribbon-cage contact and the compiled right-hand side
 (sections 1-3); the model builder, simulation, start ensemble, studies and figures are the gyro system,
-:mod:`hsbearing.systems.gyro` (issue 19).
+:mod:`hsbearing.systems.gyro`.
 
 Five friction-moment sources summed on the outer race ([J], Eq. 1)::
 
