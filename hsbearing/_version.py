@@ -1,5 +1,5 @@
 """The installed package version, in a module of its own so that modules below the package's API
-(results, cli) can read it without importing ``hsbearing/__init__`` (issue 19: no import circles)."""
+(results, cli) can read it without importing ``hsbearing/__init__`` (no import circles)."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""Full high-speed ball-bearing dynamics (seed 004, Eqs. 5-21) integrated by CVODE BDF.
+"""Full high-speed ball-bearing dynamics (Zhang et al. 2016, Eqs. 5-21) integrated by CVODE BDF.
 
 :func:`build_model` turns a case into a :class:`DynamicModel` (parameters,
 initial state from the quasi-static solution, compiled ``rhs`` and arrowhead
@@ -28,7 +28,7 @@ from hsbearing.models.state import StateLayout
 
 __all__ = ["DynamicModel", "build_model", "simulate", "MODEL_DEFAULTS", "SOLVER_SETTINGS", "mechanical_energy"]
 
-from hsbearing.balances import mechanical_energy  # noqa: E402  (issue 19: defined there; no import circle)
+from hsbearing.balances import mechanical_energy  # noqa: E402  (defined there; no import circle)
 
 #: Model constants not in the case file (documented in docs/dynamics.md, overridable by build_model kwargs).
 MODEL_DEFAULTS = {
@@ -48,7 +48,7 @@ MODEL_DEFAULTS = {
     "gravity": 9.81,  # m/s^2 along -Y (horizontal shaft); 0 switches it off
 }
 
-#: CVODE optional inputs used by :func:`simulate` (docs/dynamics.md, "Newton matrix reuse"; issue 18):
+#: CVODE optional inputs used by :func:`simulate` (docs/dynamics.md, "Newton matrix reuse"):
 #: rebuild the Newton matrix I - gamma J (one dense LU) at most every 50 steps instead of CVODE's 20, and
 #: re-evaluate the Jacobian at most every 200 steps instead of 51.  Neither changes what a step must satisfy
 #: (the same local error test, the same Newton convergence test): the corrector converges in ~1.1 iterations
@@ -244,7 +244,7 @@ def _guide_lands(case, land_length=None):
     """The case's guide lands (:func:`hsbearing.models.geometry.guide_lands`), checked for the dynamic model.
 
     ``land_length`` (model option) replaces the width of each land (e.g. ``land_length=11e-3`` with
-    ``cage.guide_land_count = 1``: the single cage-wide film of the model before issue 14).
+    ``cage.guide_land_count = 1``: a single cage-wide film).
     """
     from dataclasses import replace
 
@@ -409,7 +409,7 @@ def simulate(case, duration=None, progress: bool = False, *, model: DynamicModel
 
 
 # ----------------------------------------------------------------------------- interrupt and continue
-# (issue 13, item 10: Ctrl-C keeps the partial run; ``hsbearing run --continue ARCHIVE.nc`` extends it)
+# (Ctrl-C keeps the partial run; ``hsbearing run --continue ARCHIVE.nc`` extends it)
 
 results.register("final_state", ("state",), "SI",
                  "state vector at the last output time, SI unit of each component (restart point of run --continue)")
@@ -562,7 +562,7 @@ def to_dataset(model: DynamicModel, t, Y, stats, status="ok", annotate: bool = T
     from hsbearing import balances  # power loss by source, drive torque (registered there)
 
     data.update(balances.power_variables(aux, gaux, model.P[K.P_GUIDE] == 1.0))
-    # contact state per contact over time (issue 17 item 3): spin-to-roll from the kernel, Hertz/EHL/lambda derived
+    # contact state per contact over time: spin-to-roll from the kernel, Hertz/EHL/lambda derived
     from hsbearing import contact_state
 
     rb = L.ball_radius(Y, geom.dm)

@@ -2,7 +2,8 @@
 
 numba compiles a ``@njit(cache=True)`` function at its first call for each argument-type signature and
 keeps the machine code on disk (``__pycache__`` next to the source, or ``NUMBA_CACHE_DIR``), so only
-the first run after an install (or after an edit of a kernel source) pays the ~20 s.  Two things
+the first run after an install (or after an edit of a compiled source or of a constant it captures:
+:mod:`hsbearing.compile_cache` keys the caches on them) pays the ~20 s.  Two things
 follow for the progress bar of a simulation:
 
 - :func:`compile_notice` prints "compiling the model (first run only, ~20 s)" when the on-disk cache

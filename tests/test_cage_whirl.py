@@ -120,7 +120,7 @@ def test_linearised_film_coefficients_at_the_centre():
 def test_short_width_error_against_finite_length_reynolds():
     """Short-width land (L/D = 1.8/52.4) vs a 2-D finite-volume Reynolds solution with p >= 0 (PSOR).
 
-    Measured: 0.6 % at eps 0.9 (docs/dynamics.md); the same solver at the old 11 mm film (L/D = 0.21)
+    Measured: 0.9 % at eps 0.9 (this state); the same solver at the old 11 mm film (L/D = 0.21)
     differs by 5-16 %, so the comparison is sensitive to the finite length.
     """
     args = (0.9, -0.1 * OMEGA, OMEGA, 0.2 * OMEGA, ETA, R)
@@ -132,6 +132,19 @@ def test_short_width_error_against_finite_length_reynolds():
     Fr, Ft = guide_land_forces(*args, 11e-3, C_GAP)
     fr, ft, _ = finite_bearing_forces(*args, 11e-3, C_GAP, nt=360, nz=41)
     assert math.hypot(Fr - fr, Ft - ft) / math.hypot(fr, ft) > 0.05
+
+
+@pytest.mark.parametrize("eps", [0.3, 0.6, 0.9, 0.95])
+def test_short_width_error_within_2_percent_up_to_eps_095(eps):
+    """The README's "short-width error vs 2-D <= 2 % for the case lands, eps <= 0.95", over the regimes of the
+    land film: squeeze toward and away from the land, whirl backward, zero, forward and beyond the surface speed
+    (a whirl of half the surface speed with no squeeze carries no load and is left out).  Measured: <= 0.23 % at
+    eps <= 0.6, 0.9 % at 0.9, 1.86 % at 0.95 (the short-width error grows with eps)."""
+    for ed, whirl in ((-0.1, 0.2), (0.5, 0.0), (0.0, 0.0), (0.1, -0.5), (-0.1, 1.5)):
+        args = (eps, ed * OMEGA, OMEGA, whirl * OMEGA, ETA, R)
+        Fr, Ft = guide_land_forces(*args, L, C_GAP)
+        fr, ft, _ = finite_bearing_forces(*args, L, C_GAP, nt=720, nz=41)
+        assert math.hypot(Fr - fr, Ft - ft) / math.hypot(fr, ft) < 0.02, (eps, ed, whirl)
 
 
 # --------------------------------------------------------------------------- dissipation
@@ -354,7 +367,7 @@ def _kinetic_shares(model, v):
 def test_pocket_film_restoring_and_its_quadrature_jump(model):
     """The pocket film at the start state's ball spin (relative spin ~(-3250, 1210, 0) rad/s) pushes a displaced ball
     back to the pocket centre in every direction of the pocket plane (restoring stiffness: the thin side of the gap is
-    the pressurised one; same sign and within 10 % of the independent 2-D Reynolds solution), and has no stiffness
+    the pressurised one; same sign and within 5 % of the independent 2-D Reynolds solution, measured 3.7 %), and has no stiffness
     along the axis of the cylindrical pocket.  At a vanishing offset its force along the pocket axis depends
     on the *direction* of the offset by ~3e-5 N (0.15 % of the 0.018 N film force): the 16 trapezoidal stations turn
     with the offset direction over an integrand with kinks (cavitation), and the jump falls as 1/n^2 with the number
@@ -382,7 +395,7 @@ def test_pocket_film_restoring_and_its_quadrature_jump(model):
                             0.5 * P[K.P_DM], n_theta=180, n_u=60)["F"][2] for e in (-0.2 * c, 0.2 * c)]
     k_2d = -(Ft[1] - Ft[0]) / (0.4 * c)
     k_model = -(f(0.0, 0.2 * c)[2] - f(0.0, -0.2 * c)[2]) / (0.4 * c)
-    assert k_2d > 0 and k_model == pytest.approx(k_2d, rel=0.1)
+    assert k_2d > 0 and k_model == pytest.approx(k_2d, rel=0.05)
     jumps = []
     for n in (16, 32):
         g = _pocket_at_start(model, n)

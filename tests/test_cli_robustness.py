@@ -232,8 +232,7 @@ def test_case_round_trips_through_toml(text):
 
 
 def test_case_round_trip_any_text():
-    hypothesis = pytest.importorskip("hypothesis")
-    from hypothesis import given, settings, strategies as st
+    from hypothesis import given, settings, strategies as st  # locked test dependency: fails if missing, never skips
 
     base = load_case("zhang2016")
 

@@ -62,7 +62,9 @@ def _cell(ds, rpm, name):
 
 @pytest.mark.parametrize("row", ROWS, ids=lambda r: f"T{r['table']}-{r['speed_rpm']}rpm")
 def test_skf_column_tables_2_4_within_1_percent(seed_results, row):
-    """Seed 003 Tables 2-4, column S (SKF model, M_sl only), within 1 %."""
+    """Seed 003 Tables 2-4, column S (SKF model, M_sl only), within 1 %.  CONSISTENCY for Tables 3-4: the
+    ``seed003`` reading (axial term + half the pure-radial term) was derived from these very cells
+    (docs/validation/dgbb_friction.md); only Table 2 (the catalogue formula as printed) is agreement."""
     ds = seed_results[row["table"]]
     ours = _cell(ds, float(row["speed_rpm"]), "skf_sliding_torque")
     paper = float(row["Msl_SKF_Nmm"])
@@ -142,8 +144,11 @@ def test_proposed_column_table4_ring_held_square_named_loose_tolerance():
     assert _cell(ds, 5000, "sliding_torque") == pytest.approx(36.1996, rel=0.05)  # Table 4, column P
 
 
-def test_speed_trend_follows_the_coefficient(seed_results):
-    """Seed: without centrifugal effects M_sl follows mu_sl(n): same ratio 500/5000 as the paper (Table 2)."""
+def test_speed_ratio_follows_the_fitted_coefficient_consistency(seed_results):
+    """CONSISTENCY, not validation: without centrifugal effects M_sl follows mu_sl(n), and the oil viscosity
+    nu = 20 mm^2/s of the case is FITTED to Table 2's 500/5000 r/min ratio (column S, test_skf_coefficient_and_
+    weighting); this checks that the fitted coefficient carries the proposed-method torque's speed dependence
+    (column P's ratio equals column S's to 1e-3), not that the speed trend agrees with the paper."""
     ds = seed_results["2"]
     r = _cell(ds, 500, "sliding_torque") / _cell(ds, 5000, "sliding_torque")
     assert r == pytest.approx(26.4162 / 14.1291, rel=1e-3)

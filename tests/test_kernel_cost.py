@@ -9,13 +9,13 @@
   states of a default-case trajectory and of a radially loaded table-5 case must stay within round-off of the
   kernel before those changes.  **Regression** data, not validation: tests/data/regression/kernel_rhs_states.npz
   holds the states and the right-hand side of commit 678235b (issue 18 session 5, before the libm changes);
-  regenerate it with ``HSBEARING_REGEN_KERNEL_RHS=1`` only after a deliberate physics change.
+  regenerate it with ``tools/make_kernel_rhs_states.py`` only after a deliberate physics change (the test never
+  rewrites its reference).
 """
 
 from __future__ import annotations
 
 import math
-import os
 from pathlib import Path
 
 import numpy as np
@@ -64,31 +64,12 @@ def test_jacobian_cage_and_ring_columns_equal_plain_finite_difference(state):
         assert np.array_equal(J[:, col], (_rhs(model, yp) - f0) / (yp[col] - y[col])), col
 
 
-def _regenerate():
-    from hsbearing.solvers.cvode import integrate
-
-    out = {}
-    for name, case, span, n, take in (("default", hsbearing.load_case("zhang2016"), 0.02, 4001, 80),
-                                      ("t5", hsbearing.load_case("zhang2016", **T5), 0.02, 2001, 80)):
-        m = build_model(case)
-        sim = case.simulation
-        res = integrate(m.rhs, m.y0, np.linspace(0.0, span, n), rtol=float(sim.rtol),
-                        atol=m.layout.atol(float(sim.atol)), jacfn=m.jac)
-        Y = np.asarray(res.y)[::take]
-        out["y_" + name] = Y
-        out["f_" + name] = np.array([_rhs(m, y) for y in Y])
-    DATA.parent.mkdir(parents=True, exist_ok=True)
-    np.savez_compressed(DATA, **out)
-
-
 @pytest.mark.parametrize("name", ["default", "t5"])
 def test_rhs_within_roundoff_of_kernel_before_libm_changes(name):
     """Right-hand side over trajectory states (every 80th of 4001 over 20 ms of the default case; every 80th of
     2001 over 20 ms of table 5's 1000 N radial load) within 1e-11 of each row's largest magnitude of the stored
     values (measured: <= 5.0e-13 over all 4001 + 2001 states; the contact forces that cancel in the accelerations
     are ~1e3 times the net).  Regression, see the module docstring."""
-    if os.environ.get("HSBEARING_REGEN_KERNEL_RHS") == "1" and name == "default":
-        _regenerate()
     d = np.load(DATA)
     model = build_model(hsbearing.load_case("zhang2016", **(T5 if name == "t5" else {})))
     Y, F = d["y_" + name], d["f_" + name]

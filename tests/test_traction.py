@@ -477,11 +477,20 @@ def test_printed_4050_reproduces_the_documented_anomaly():
 
 
 def test_no_unit_reading_makes_eq4_a_traction_curve():
-    """Physical D_L, C_L, B_L of Eq. 4 would need Ubar ~ 1e12-1e21 (SI gives ~1e-9): no unit choice bridges that."""
-    M = np.array([[0.3403, 0.4748, 0.2488], [0.3831, 2.9404, 1.6113], [-0.1372, 0.2116, 0.1766]])
+    """Physical D_L, C_L, B_L of Eq. 4 would need Ubar ~ 1e12-1e21 (the package's SI Ubar at the 1000 N, 15 m/s,
+    130 degC contact is ~1e-9): no unit choice bridges that.  The constants and exponents are the package's own
+    (PARAMS row of 4050 "printed": (coef, pW, pU, pT) of B_L, C_L, D_L in columns 13-24), solved for the
+    dimensionless groups that would give a traction-like D_L, C_L and peak."""
+    lid = traction.law_id("4050", "printed")
+    p = zhang2016.PARAMS[lid]
+    (cB, *eB), (cC, *eC), (cD, *eD) = p[13:17], p[17:21], p[21:25]
+    M = np.array([eD, eC, eB])
     for Dt, Ct, peak in ((0.02, 30.0, 0.05), (0.04, 100.0, 0.08)):
-        Wb, Ub, Tb = np.exp(np.linalg.solve(M, np.log([Dt / 16.7177, Ct / 61.4605, peak * Ct * np.e / 7.2804])))
+        Wb, Ub, Tb = np.exp(np.linalg.solve(M, np.log([Dt / cD, Ct / cC, peak * Ct * np.e / cB])))
         assert Ub > 1e12 and Wb < 1e-10 and Tb < 1e-20
+        assert cD * Wb ** eD[0] * Ub ** eD[1] * Tb ** eD[2] == pytest.approx(Dt, rel=1e-9)
+        _, Ub_si, _ = zhang2016.dimensionless_groups(lid, 1000.0, 15.0, 130.0, EP, RX)
+        assert float(Ub_si) < 1e-8 and Ub / float(Ub_si) > 1e20
 
 
 def test_critical_load_positive_only_with_celsius():

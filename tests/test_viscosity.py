@@ -21,11 +21,14 @@ CLASS_POINTS = {  # oil: (nu40, nu100) [mm^2/s], the published class values quot
 
 
 @pytest.mark.parametrize("oil", ["4109", "4106", "4050"])
-def test_walther_reproduces_the_cited_class_data_within_3_percent(oil):
+def test_walther_passes_through_the_cited_class_data_consistency(oil):
+    """CONSISTENCY, not validation: the Walther coefficients are fitted through these two class points, so the
+    law reproduces them exactly by construction (asserted 1e-12, measured 4e-15); this checks that the fit is
+    the one the package uses, for kinematic viscosity through the density of the dynamic one."""
     nu40, nu100 = CLASS_POINTS[oil]
     rho = 960.0
     eta = viscosity.dynamic_viscosity(oil, np.array([313.15, 373.15]), "walther", density=rho)
-    np.testing.assert_allclose(eta / rho * 1e6, [nu40, nu100], rtol=0.03)
+    np.testing.assert_allclose(eta / rho * 1e6, [nu40, nu100], rtol=1e-12)
 
 
 def test_walther_coefficients_against_an_independent_solution():
@@ -57,7 +60,7 @@ def test_table1_law_contradicts_the_class_data():
     assert t["4106"][-1] < w["4106"][-1] / 3.0 and t["4050"][-1] < w["4050"][-1] / 5.0
     assert t["4109"][3] > t["4106"][3] and w["4109"][3] < w["4106"][3]
     assert float(t["4109"][3]) == pytest.approx(3.604e-3, rel=1e-3) and float(t["4106"][3]) == pytest.approx(2.138e-3, rel=1e-3)
-    # Table 1 misses the class data by far more than the 3 % the walther law is held to
+    # Table 1 misses the class data by far more than the round-off the walther law is held to
     assert abs(float(t["4109"][1]) / rho * 1e6 / 11.5 - 1.0) > 0.5
 
 

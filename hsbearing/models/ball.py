@@ -1,11 +1,11 @@
-"""Ball / raceway contact forces of the dynamic model (seed 004, Eqs. 5-10).
+"""Ball / raceway contact forces of the dynamic model (Zhang et al. 2016, Eqs. 5-10).
 
 Scalar, pure, numba-compiled functions (callable from Python too); the
 per-ball assembly that calls them is :mod:`hsbearing.models.kernel`.
 
 References
 ----------
-[1] Zhang W., Deng S., Chen G., Cui Y., Chin. J. Aeronaut. 29 (2016), seed 004,
+[1] Zhang W., Deng S., Chen G., Cui Y., Chin. J. Aeronaut. 29 (2016),
     Eqs. (5)-(10) (ball), Fig. 3.
 [2] Harris T. A., Kotzalas M. N., *Rolling Bearing Analysis*, 5th ed., Vol. 1,
     Ch. 2 (groove curvature centres, Eqs. 2.5-2.10) and Ch. 6 (Hertz load-
@@ -29,6 +29,8 @@ import math
 
 import numpy as np
 from numba import njit
+
+from hsbearing.compile_cache import check_compile_cache
 
 __all__ = [
     "groove_contact",
@@ -145,3 +147,7 @@ def ball_equations_of_motion(Fx, Fr, Ft, Mx, My, Mz, r, rdot, thetadot, wy, wz, 
     wyd = My / I + thetadot * wz  # [1] Eq. 9
     wzd = Mz / I - thetadot * wy  # [1] Eq. 10
     return xdd, rdd, thdd, wxd, wyd, wzd
+
+
+# numba bakes callees and captured constants into its cache: key the cache on them (compile_cache.py)
+check_compile_cache(globals())

@@ -1,10 +1,10 @@
-"""Cage forces of the dynamic model: ball/pocket contact and friction, guide-land film (seed 004, Eqs. 11-16).
+"""Cage forces of the dynamic model: ball/pocket contact and friction, guide-land film (Zhang et al. 2016, Eqs. 11-16).
 
 Scalar, pure, numba-compiled functions; assembled in :mod:`hsbearing.models.kernel`.
 
 References
 ----------
-[1] Zhang W. et al., Chin. J. Aeronaut. 29 (2016), seed 004, Eqs. (11)-(16), Fig. 4.
+[1] Zhang W. et al., Chin. J. Aeronaut. 29 (2016), Eqs. (11)-(16), Fig. 4.
 [2] Harris T. A., Kotzalas M. N., *Rolling Bearing Analysis*, 5th ed., Vol. 1,
     Ch. 6 (Hertz point contact, Q = K delta^1.5, Eq. 6.40).
 [3] Hamrock B. J., Schmid S. R., Jacobson B. O., *Fundamentals of Fluid Film
@@ -23,9 +23,10 @@ References
     plain journal bearing, dynamic Reynolds equation with whirl and squeeze,
     pi-film / Guembel pressure, Sommerfeld substitution for the integrals).
 
-The guide-land film (:func:`guide_land_forces`) was rewritten for issue 14: the
-earlier code used the pi-film closed form on a fixed half circle, right only for
-0 <= whirl < half the surface speed without squeeze (docs/dynamics.md).
+The guide-land film (:func:`guide_land_forces`) places the pressurised film where the
+gap converges for any whirl and squeeze (Guembel p >= 0); the pi-film closed form on a
+fixed half circle is right only for 0 <= whirl < half the surface speed without squeeze
+(docs/dynamics.md).
 """
 
 from __future__ import annotations
@@ -34,6 +35,7 @@ import math
 
 from numba import njit
 
+from hsbearing.compile_cache import check_compile_cache
 from hsbearing.models.ring import tilt_rotation
 
 __all__ = ["cage_orientation", "cage_generalised_moments", "pocket_normal_force", "pocket_friction_factor", "guide_land_forces", "guide_land_torque",
@@ -273,3 +275,7 @@ def cage_equations_of_motion(Fx, Fy, Fz, Mx, My, Mz, phidot, psidot_y, psidot_z,
     return (Fx / m, Fy / m, Fz / m, Mx / Ip,
             (My - Ip * phidot * psidot_z) / Id,  # [1] Eq. 15
             (Mz + Ip * phidot * psidot_y) / Id)  # [1] Eq. 16
+
+
+# numba bakes callees and captured constants into its cache: key the cache on them (compile_cache.py)
+check_compile_cache(globals())

@@ -1,4 +1,4 @@
-"""Drag of the balls in the air-oil mixture of the bearing cavity (F_D of seed 004, Eq. 7).
+"""Drag of the balls in the air-oil mixture of the bearing cavity (F_D of Zhang et al. 2016, Eq. 7).
 
 References
 ----------
@@ -9,7 +9,7 @@ References
     orbital speed; that is (pi/8) 2^-1.95 = pi/30.9 instead of pi/32, i.e. 3.5 %
     above the printed coefficient.  The 1.95 exponent makes the formula
     unit-dependent anyway; the drag is a minor term here (docs/validation/cage_whirl.md).
-[2] Zhang W. et al., Chin. J. Aeronaut. 29 (2016), seed 004, Eq. (7) (F_D).
+[2] Zhang W. et al., Chin. J. Aeronaut. 29 (2016), Eq. (7) (F_D).
 """
 
 from __future__ import annotations
@@ -17,6 +17,8 @@ from __future__ import annotations
 import math
 
 from numba import njit
+
+from hsbearing.compile_cache import check_compile_cache
 
 __all__ = ["mixture_density", "ball_drag_force"]
 
@@ -39,3 +41,7 @@ def ball_drag_force(v, D, rho_e, C_D, v0):
     """
     va = math.sqrt(v * v + v0 * v0)
     return -0.5 * C_D * rho_e * 0.25 * math.pi * D * D * v * va**0.95  # [1]
+
+
+# numba bakes callees and captured constants into its cache: key the cache on them (compile_cache.py)
+check_compile_cache(globals())

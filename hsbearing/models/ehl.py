@@ -22,7 +22,7 @@ References
     formulation", Tribol. Trans. 35 (1992) 269-274: inlet shear heating
     reduction factor (as quoted in Harris & Kotzalas, 5th ed., Vol. 2, Ch. 4).
 [5] Zhang W., Deng S., Chen G., Cui Y., Chin. J. Aeronaut. (2016), Table 1
-    (seed 004): eta0, alpha, beta, K of the oils 4109, 4106, 4050.
+    (Zhang et al. 2016): eta0, alpha, beta, K of the oils 4109, 4106, 4050.
 
 Radius convention (decided once, here)
 --------------------------------------
@@ -57,7 +57,7 @@ __all__ = [
     "lubricant_parameters",
 ]
 
-#: Reference temperature [K] of Table 1's "ambient" eta0 (seed 004): 27 degC,
+#: Reference temperature [K] of Table 1's "ambient" eta0 (Zhang et al. 2016): 27 degC,
 #: the lowest (room) temperature of the seed's study (Sec. 4.1, Table 3).  See
 #: docs/traction.md for the decision.
 REFERENCE_TEMPERATURE = 300.15
@@ -67,7 +67,7 @@ def viscosity_at_temperature(eta0, beta, T, T_ref=REFERENCE_TEMPERATURE):
     """Ambient-pressure dynamic viscosity at temperature, exponential law.
 
     eta = eta0 exp(-beta (T - T_ref))   (Reynolds' viscosity-temperature law,
-    with seed 004's Table 1 eta0 and beta [5]).
+    with Zhang et al. 2016's Table 1 eta0 and beta [5]).
 
     Parameters
     ----------

@@ -1,4 +1,4 @@
-"""Compiled right-hand side and arrowhead Jacobian of the bearing dynamic model (seed 004, Eqs. 5-21).
+"""Compiled right-hand side and arrowhead Jacobian of the bearing dynamic model (Zhang et al. 2016, Eqs. 5-21).
 
 Everything here is numba-compiled and allocation-free per call.  The physics
 lives in the named functions of :mod:`hsbearing.models.ball`,
@@ -18,51 +18,12 @@ writes the 22 ring/cage rows.
 
 from __future__ import annotations
 
-import hashlib
 import math
-import os
-from pathlib import Path
 
 import numpy as np
 from numba import njit
 
-
-def _invalidate_stale_cache() -> None:
-    """Drop numba cache files of this kernel (and of cage.py) compiled against older callee sources.
-
-    numba's on-disk cache is invalidated only by a change of the file that defines the cached
-    function, not of the functions it calls from other modules (the traction law of helper A, the
-    force functions); their compiled code is baked into the kernel.  A fingerprint of those
-    sources is kept next to the cache files; when it differs, the stale files are removed and
-    numba recompiles (~10 s once).
-    """
-    here = Path(__file__).resolve().parent
-    deps = [here / f for f in ("ball.py", "cage.py", "ring.py", "drag.py", "power.py", "pocket.py", "kernel.py")]
-    deps += [here / "traction" / f for f in ("zhang2016.py", "_kernels.py", "eyring_limit.py")]  # law, its kernel, Lambda
-    h = hashlib.sha1()
-    for f in deps:
-        try:
-            h.update(f.read_bytes())
-        except OSError:
-            return
-    fp = h.hexdigest()
-    dirs = [here / "__pycache__"]
-    if os.environ.get("NUMBA_CACHE_DIR"):
-        dirs += [d for d in Path(os.environ["NUMBA_CACHE_DIR"]).glob("models_*") if d.is_dir()]
-    for d in dirs:
-        try:
-            stamp = d / "hsbearing_kernel_deps.sha1"
-            if not d.is_dir() or (stamp.exists() and stamp.read_text() == fp):
-                continue
-            for f in list(d.glob("kernel.*.nb[ic]")) + list(d.glob("cage.*.nb[ic]")) + list(d.glob("pocket.*.nb[ic]")):
-                f.unlink(missing_ok=True)
-            stamp.write_text(fp)
-        except OSError:  # read-only install or a concurrent process: numba copes with what is there
-            pass
-
-
-_invalidate_stale_cache()
-
+from hsbearing.compile_cache import check_compile_cache
 from hsbearing.models.ball import ball_equations_of_motion, ehl_rolling_force, groove_contact, hertz_normal_load
 from hsbearing.models.cage import (
     cage_equations_of_motion,
@@ -197,7 +158,7 @@ def _race_contact(P, qu, qw, Q, nx, nr, nt, x, r, vx, vr, thd, wx, wy, wz,
         iU = 1.0 / U
         seps = P[P_SEPS]
         # symmetric nodes (qu[n-1-k] = -qu[k], Gauss-Legendre): phi of the mirror node is exactly -phi, so its
-        # cos is the same and its sin changes sign -- half the cos/sin calls (issue 18); the nodes are visited
+        # cos is the same and its sin changes sign -- half the cos/sin calls; the nodes are visited
         # in the order 0, n-1, 1, n-2, ... (the sums change by round-off only)
         n = qu.size
         sym = True
@@ -745,3 +706,7 @@ def jac_kernel(y, P, qu, qw, J, hscale, work):
         summed_global_rows(yp, P, c1, csum, f1, gaux)
         for i in range(N):
             J[i, col] = (f1[i] - f0[i]) / hj
+
+
+# numba bakes callees and captured constants into its cache: key the cache on them (compile_cache.py)
+check_compile_cache(globals())

@@ -1,6 +1,6 @@
-"""Ball / cylindrical-pocket lubricating film: hydrodynamic force and moment (P_R of seed 004, Eqs. 5-16).
+"""Ball / cylindrical-pocket lubricating film: hydrodynamic force and moment (P_R of Zhang et al. 2016, Eqs. 5-16).
 
-The pocket of seed 004 is a cylinder of radius R_p (4.8125 mm) drilled radially through the cage ring
+The pocket of Zhang et al. 2016 is a cylinder of radius R_p (4.8125 mm) drilled radially through the cage ring
 (bore R_bore, outside R_out); the ball (radius R_b, 4.7625 mm) sits inside with a radial play
 c = R_p - R_b (50 um).  Pocket frame, right-handed (x, r, t): x along the cage axis, r along the
 pocket axis (bearing radial direction), t circumferential.  The wall point at polar angle theta
@@ -57,6 +57,8 @@ import math
 import numpy as np
 from numba import njit
 
+from hsbearing.compile_cache import check_compile_cache
+
 __all__ = ["station_film", "station_angle", "pocket_edges", "pocket_film_wrench", "pocket_film_gap",
            "pocket_elastic_force", "pocket_boundary_friction", "pocket_film_power", "pocket_wrench"]
 
@@ -66,7 +68,7 @@ __all__ = ["station_film", "station_angle", "pocket_edges", "pocket_film_wrench"
 def _kk(xi, at):
     """int_0^xi dxi/H^2, int_0^xi dxi/H^3, an antiderivative of xi/H^3 (H = 1 + xi^2, at = atan(xi)) and 1/H.
 
-    One division (issue 18: divisions are a large part of a station's cost)."""
+    One division (divisions are a large part of a station's cost)."""
     iH = 1.0 / (1.0 + xi * xi)
     xh = xi * iH
     return 0.5 * (xh + at), xh * (0.25 * iH + 0.375) + 0.375 * at, -0.25 * (iH * iH), iH
@@ -78,7 +80,7 @@ def _kk(xi, at):
 # g = (xi_2 - xs)/(xs - lo) > 0 (1/2 for a vanishing inlet) over the mapped plane
 # (z / sqrt(_RUP_C^2 + z^2) for z = xs, lo)
 # gives the Newton iteration a start within ~1e-3 of the root, so it stops after ~2 iterations instead of
-# ~4 from Martin's infinite-inlet start (issue 18).  The table only moves the start: the iteration and
+# ~4 from Martin's infinite-inlet start.  The table only moves the start: the iteration and
 # its stopping rule are unchanged, the returned root is the same exact root (docs/pocket.md "Cost").
 _RUP_N = 96  # nodes per axis (cell-centred on (-1, 1))
 _RUP_C = 4.0  # [-] half-width of the mapped range: resolution ~0.1 near the film minimum
@@ -135,6 +137,7 @@ def _rupture_table(n, cmap):
     return T
 
 
+check_compile_cache(globals())  # before the import-time call below; again at the end
 _RUP_TABLE = _rupture_table(_RUP_N, _RUP_C)
 
 
@@ -164,7 +167,7 @@ def _atan_diff(x, lo):
     """atan(x) - atan(lo) with one libm call: atan((x - lo)/(1 + x lo)), shifted by +-pi where 1 + x lo < 0.
 
     Exact identity (the difference lies in (-pi, pi)); it is also free of the cancellation of two nearly equal
-    atans when x is close to lo.  All station integrals use only such differences (issue 18, docs/pocket.md).
+    atans when x is close to lo.  All station integrals use only such differences (docs/pocket.md).
     """
     num = x - lo
     den = 1.0 + x * lo
@@ -384,7 +387,7 @@ def station_film(a, U_e, F0, x_lo, x_hi, R, eta):
 
 
 _TQ_N = 16  # the kernel's station count (MODEL_DEFAULTS pocket_stations)
-# tan(tau_i / 2) of the station nodes tau_i = -pi + (i + 1/2) 2 pi / n for n = _TQ_N, tabulated once (issue 18:
+# tan(tau_i / 2) of the station nodes tau_i = -pi + (i + 1/2) 2 pi / n for n = _TQ_N, tabulated once (it
 # saves the per-station division of the rotation recurrence in :func:`pocket_film_wrench`; other n use it)
 _TQ_TABLE = np.tan(0.5 * (-np.pi + (np.arange(_TQ_N) + 0.5) * 2.0 * np.pi / _TQ_N))
 
@@ -542,7 +545,7 @@ def pocket_elastic_force(e, c, K):
 
 @njit(cache=True, inline="always")
 def pocket_boundary_friction(v_slide, Q_solid, mu, v0):
-    """Boundary (asperity) friction force magnitude P_S on the solid part of the load [N] ([5]; seed 004 P_S).
+    """Boundary (asperity) friction force magnitude P_S on the solid part of the load [N] ([5]; Zhang et al. 2016 P_S).
 
     P_S = mu Q_solid v / sqrt(v^2 + v0^2): Coulomb with the documented regularisation of sign(v)
     (v0 = 0.01 m/s, docs/dynamics.md).
@@ -609,3 +612,7 @@ def pocket_wrench(ex, et, s0, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, R_out
                 Mt += px * gr - pr * gx
                 Pb = fb * vs
     return Fx, Fr, Ft, Mx, Mr, Mt, Qf, Qs, Pf, Pb, fb
+
+
+# numba bakes callees and captured constants into its cache: key the cache on them (compile_cache.py)
+check_compile_cache(globals())

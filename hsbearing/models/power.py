@@ -1,4 +1,4 @@
-"""Dissipated power of a contact action, by source (issue 17 item 1; seed 004 force set).
+"""Dissipated power of a contact action, by source (the force set of Zhang et al. 2016).
 
 Every contact of the dynamic model acts on two bodies with equal and opposite
 force systems (action on the ball, reaction on the ring, the cage or the
@@ -23,6 +23,8 @@ the rate of the mechanical energy, closes the power balance of the bearing
 from __future__ import annotations
 
 from numba import njit
+
+from hsbearing.compile_cache import check_compile_cache
 
 __all__ = ["sliding_power", "couple_power", "normal_damping_power", "elastic_energy_hertz"]
 
@@ -77,3 +79,7 @@ def elastic_energy_hertz(K, delta):
     if delta <= 0.0:
         return 0.0
     return 0.4 * K * delta * delta * delta ** 0.5
+
+
+# numba bakes callees and captured constants into its cache: key the cache on them (compile_cache.py)
+check_compile_cache(globals())

@@ -6,11 +6,11 @@ loaded ball, Hertz loads, ball centrifugal force and gyroscopic moment,
 race-control kinematics, the ball equilibrium residual and the reaction of the
 balls on the inner ring.
 
-Frames (seed 004, Fig. 2): X is the bearing axis, Y/Z radial.  Ball j sits at
+Frames (Zhang et al. 2016, Fig. 2): X is the bearing axis, Y/Z radial.  Ball j sits at
 azimuth psi_j measured from +Y towards +Z.  In the ball's azimuthal plane we
 use the right-handed triad (e_X, e_r, e_t): axial, radial outward,
 circumferential (e_X x e_r = e_t); these are the ball frame axes x, y, z of
-seed 004.  Two-component vectors ``(axial, radial)`` live in the (e_X, e_r)
+Zhang et al. 2016.  Two-component vectors ``(axial, radial)`` live in the (e_X, e_r)
 plane.
 
 Sign conventions (documented in docs/quasistatic.md):

@@ -1,8 +1,8 @@
-"""Inner-ring kinematics and equations of motion (seed 004, Eqs. 17-21).
+"""Inner-ring kinematics and equations of motion (Zhang et al. 2016, Eqs. 17-21).
 
 References
 ----------
-[1] Zhang W. et al., Chin. J. Aeronaut. 29 (2016), seed 004, Eqs. (17)-(21).
+[1] Zhang W. et al., Chin. J. Aeronaut. 29 (2016), Eqs. (17)-(21).
 [2] Harris T. A., Kotzalas M. N., *Rolling Bearing Analysis*, 5th ed., Vol. 1,
     Ch. 2 (groove curvature centres: inner at radius d_m/2 + (f_i - 1/2) D cos alpha_0,
     outer at d_m/2 - (f_o - 1/2) D cos alpha_0, separated by A = (f_i + f_o - 1) D
@@ -15,6 +15,8 @@ from __future__ import annotations
 import math
 
 from numba import njit
+
+from hsbearing.compile_cache import check_compile_cache
 
 __all__ = ["tilt_rotation", "inner_groove_centre", "tilt_generalised_moments", "ring_equations_of_motion"]
 
@@ -130,3 +132,7 @@ def ring_equations_of_motion(Fx, Fy, Fz, My, Mz, spin, bdy, bdz, m, Ip, Id):
     return (Fx / m, Fy / m, Fz / m,
             (My - Ip * spin * bdz) / Id,  # [1] Eq. 20
             (Mz + Ip * spin * bdy) / Id)  # [1] Eq. 21
+
+
+# numba bakes callees and captured constants into its cache: key the cache on them (compile_cache.py)
+check_compile_cache(globals())

@@ -35,7 +35,7 @@ ring rates   ``9Z + 17 .. 21``           their time derivatives                 
 ===========  ==========================  =========================================  ========
 
 The ball angular velocity (omega_x, omega_y, omega_z) is the *absolute*
-angular velocity of the ball expressed in the ball frame of seed 004, Fig. 2
+angular velocity of the ball expressed in the ball frame of Zhang et al. 2016, Fig. 2
 (x axial, y radial outward, z circumferential in the direction of increasing
 theta_b); the frame turns with the orbit, which gives the gyroscopic terms
 I_b omega theta_dot of Eqs. (9)-(10).  The inner-ring spin about X is

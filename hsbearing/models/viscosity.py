@@ -6,7 +6,7 @@ docs/traction.md, "Viscosity"):
 * ``"walther"`` (default): the Walther / ASTM D341 relation fitted through the kinematic
   viscosity of each oil's specification class at 40 degC and 100 degC ([2]-[4]),
   eta = nu(T) rho;
-* ``"table1"``: seed 004's exponential law eta = eta0 exp(-beta (T - T_ref)) with Table 1's
+* ``"table1"``: Zhang et al. 2016's exponential law eta = eta0 exp(-beta (T - T_ref)) with Table 1's
   eta0 and beta ([1]), T_ref = 27 degC (:data:`hsbearing.models.ehl.REFERENCE_TEMPERATURE`).
 
 The pressure-viscosity coefficient alpha stays Table 1's in both laws.  Everything here is pure
@@ -16,7 +16,7 @@ model, the quasi-static solver and the friction models use.
 References
 ----------
 [1] Zhang W., Deng S., Chen G., Cui Y., Chin. J. Aeronaut. (2016), doi:10.1016/j.cja.2016.08.019,
-    Table 1 (seed 004): eta0, alpha, beta, K; Sec. 2: 4109 "low viscosity", 4106 "medium
+    Table 1 (Zhang et al. 2016): eta0, alpha, beta, K; Sec. 2: 4109 "low viscosity", 4106 "medium
     viscosity", 4050 "medium viscosity, high-temperature resistant".
 [2] ASTM D341, Standard practice for viscosity-temperature equations and charts of liquid
     petroleum or hydrocarbon products: log10 log10(nu + 0.7) = A - B log10(T), nu in mm^2/s, T in K.
@@ -102,7 +102,7 @@ def walther_kinematic_viscosity(T, A, B):
 
 
 def exponential_dynamic_viscosity(eta0, beta, T, T_ref):
-    """Seed 004's law eta = eta0 exp(-beta (T - T_ref)) [Pa s] ([1], Table 1).
+    """Zhang et al. 2016's law eta = eta0 exp(-beta (T - T_ref)) [Pa s] ([1], Table 1).
 
     Parameters
     ----------
@@ -113,7 +113,7 @@ def exponential_dynamic_viscosity(eta0, beta, T, T_ref):
 
 
 def dynamic_viscosity(oil, T, law="walther", density=None, T_ref=300.15):
-    """Ambient-pressure dynamic viscosity of a seed 004 oil [Pa s].
+    """Ambient-pressure dynamic viscosity of a Zhang et al. 2016 oil [Pa s].
 
     Parameters
     ----------

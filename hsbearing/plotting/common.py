@@ -1,5 +1,5 @@
 """Figure helpers shared by every system's figures and the sweep figure: atomic PNG writing, titles from the
-case, the Agg figure, unit scales (issue 19: the figures themselves live with their system,
+case, the Agg figure, unit scales (the figures themselves live with their system,
 ``hsbearing/systems/<name>/figures.py``; the sweep/study summary figure is :mod:`hsbearing.plotting.sweep`).
 """
 

@@ -19,7 +19,7 @@ from hsbearing.plotting.common import _RPM, _case_labels
 # written), a ``status`` per point and the per-point summary variables.  The figure draws those
 # summaries against the varied key with the most numeric values (x axis); every other varied key
 # gives one line per value (or per combination of values).  With a cage-motion classification and
-# more than one varied key, a categorical map of the classes (the layout of seed 004 Tables 3-5)
+# more than one varied key, a categorical map of the classes (the layout of Zhang et al. 2016 Tables 3-5)
 # is drawn on top, with the paper's label of every cell when the summary carries
 # ``paper_classification`` (study tables).
 

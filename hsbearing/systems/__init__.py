@@ -1,4 +1,4 @@
-"""Bearing systems: one package per ``[case] system``, each a peer with the same small interface (issue 19).
+"""Bearing systems: one package per ``[case] system``, each a peer with the same small interface.
 
 A system package exposes ``SYSTEM``, a :class:`System`:
 

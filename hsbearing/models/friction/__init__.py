@@ -2,7 +2,7 @@
 rolling lines (``sliding_prl``), the gyro bearing (``gyro``, seed 000) and the wire-race bearing
 (``wire_race``, seed 001).
 
-The case-level drivers are the systems (issue 19): the deep-groove friction torque over speeds is
+The case-level drivers are the systems: the deep-groove friction torque over speeds is
 :mod:`hsbearing.systems.deep_groove.friction`, the gyro model and studies :mod:`hsbearing.systems.gyro`, the
 preload sweep :mod:`hsbearing.systems.wire_race`.
 """

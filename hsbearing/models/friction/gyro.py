@@ -2,7 +2,7 @@
 
 This module holds the friction-moment sources, the ribbon-cage contact and the compiled right-hand side
 (sections 1-3); the model builder, simulation, start ensemble, studies and figures are the gyro system,
-:mod:`hsbearing.systems.gyro` (issue 19).
+:mod:`hsbearing.systems.gyro`.
 
 Five friction-moment sources summed on the outer race ([J], Eq. 1)::
 
@@ -59,6 +59,7 @@ import numba
 import numpy as np
 from scipy.optimize import brentq
 
+from hsbearing.compile_cache import check_compile_cache
 from hsbearing.errors import CaseError
 from hsbearing.models.hertz import point_contact
 
@@ -649,3 +650,7 @@ def circumferential_play_angle(D, Dp, k, dm):
     """
     e, nabla = pocket_geometry(D, Dp, k)
     return math.sqrt(max(nabla**2 - e**2, 0.0)) / (0.5 * dm)  # [J] Sec. 3.2, play along the orbit
+
+
+# numba bakes callees and captured constants into its cache: key the cache on them (compile_cache.py)
+check_compile_cache(globals())

@@ -61,7 +61,7 @@ Conventions and decisions (details in docs/validation/wire_race.md)
 
 This module holds the closed forms (Eqs. 1-10); the case-level contacts, the preload sweep, the fit of
 zeta and M_u, the preload window and ``hsbearing preload`` are the wire-race system,
-:mod:`hsbearing.systems.wire_race` (issue 19).
+:mod:`hsbearing.systems.wire_race`.
 """
 
 from __future__ import annotations

@@ -6,7 +6,7 @@ physical contact quantities; ``law_id`` gives the integer id used by the numba
 kernels ``_kernels.coefficients_nb`` / ``_kernels.mu_nb`` of the dynamics hot
 path.  Conventions and the decision per oil: docs/traction.md.
 ``OILS`` maps the closed vocabulary of oil names to their Table 1 data
-(seed 004): eta0 [Pa s], alpha [1/Pa], beta [1/degC], K [N/(s degC)].
+(Zhang et al. 2016): eta0 [Pa s], alpha [1/Pa], beta [1/degC], K [N/(s degC)].
 """
 
 from __future__ import annotations
@@ -25,7 +25,7 @@ class OilProperties:
     K: float  #: thermal conductivity [N/(s degC)] = [W/(m K)]
 
 
-# Seed 004 (Zhang et al. 2016), Table 1.
+# Zhang et al. 2016, Table 1.
 OILS: dict[str, OilProperties] = {
     "4109": OilProperties("4109", 0.033, 1.28e-8, 0.0215, 0.0966),
     "4106": OilProperties("4106", 0.055, 1.85e-8, 0.031531, 0.0965788),
@@ -34,7 +34,7 @@ OILS: dict[str, OilProperties] = {
 
 
 # ----------------------------------------------------------------------------
-# registry of traction laws (one module per published law; seed 004 -> zhang2016)
+# registry of traction laws (one module per published law; Zhang et al. 2016 -> zhang2016)
 
 from hsbearing.models.traction import zhang2016  # noqa: E402
 
@@ -66,7 +66,7 @@ def law_name(oil, law: str = "default") -> str:
 
 def _check_temperature(T):
     if np.any(np.asarray(T, dtype=float) <= 273.15):
-        raise ValueError("the seed 004 traction laws are fitted in degC and undefined at or below 0 degC "
+        raise ValueError("the Zhang et al. 2016 traction laws are fitted in degC and undefined at or below 0 degC "
                          f"(got T = {np.min(T)} K)")
 
 
@@ -116,7 +116,7 @@ def contact_mu(oil, S, Q, U, T, Ep, Rx, Ry=None, law: str = "default"):
     Ep : reduced modulus E' [Pa] (hertz.reduced_modulus)
     Rx, Ry : effective radii in the rolling / transverse directions [m];
         Ry is accepted for a uniform contact interface and not used by the
-        seed 004 laws (their R is Rx).
+        Zhang et al. 2016 laws (their R is Rx).
     law : as in :func:`get`
 
     Returns

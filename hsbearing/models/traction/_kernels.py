@@ -1,4 +1,4 @@
-"""Numba kernels of the seed 004 traction laws for the dynamics hot path (scalar, allocation-free).
+"""Numba kernels of the Zhang et al. 2016 traction laws for the dynamics hot path (scalar, allocation-free).
 
 Twins of :func:`hsbearing.models.traction.zhang2016.coefficients` and
 :func:`~hsbearing.models.traction.zhang2016.traction_coefficient`; reached as
@@ -12,6 +12,7 @@ import math
 
 import numba
 
+from hsbearing.compile_cache import check_compile_cache
 from hsbearing.models.traction.zhang2016 import (
     LOAD_FACTOR_SHARPNESS,
     NOTCH_SHARPNESS,
@@ -30,7 +31,7 @@ _P = PARAMS  # captured as a compile-time constant array
 
 @numba.njit(cache=True, nogil=True, inline="always")
 def _pnorm(a, b, m):
-    """(a^m + b^m)^(1/m) for a, b >= 0 [-]; m = 4 or 8 by products and square roots (issue 18: no libm pow, the
+    """(a^m + b^m)^(1/m) for a, b >= 0 [-]; m = 4 or 8 by products and square roots (no libm pow; the
     result within a few ulp of the pow form), any other m by pow."""
     if m == 4.0:
         a2, b2 = a * a, b * b
@@ -96,7 +97,7 @@ _TANH_ONE = 20.0
 def mu_nb(A, B, C, D, S):
     """Scalar numba twin of :func:`traction_coefficient` (odd in S) [-].
 
-    Two libm calls at most (issue 18): e^(-C|S|) is taken as 1 + expm1(-C|S|) (absolute error <= 2^-53, so
+    Two libm calls at most: e^(-C|S|) is taken as 1 + expm1(-C|S|) (absolute error <= 2^-53, so
     the term B |S| e^(-C|S|) moves by at most B |S| 2^-53: round-off of mu), and tanh(S/S_EPS) is +-1
     exactly (rounded) beyond |S/S_EPS| = 20, where it is not called.
     """
@@ -112,3 +113,7 @@ def mu_nb(A, B, C, D, S):
     else:
         th = math.tanh(x)
     return sg * (A * em1 + B * s * (1.0 + em1)) + mu0 * th
+
+
+# numba bakes callees and captured constants into its cache: key the cache on them (compile_cache.py)
+check_compile_cache(globals())

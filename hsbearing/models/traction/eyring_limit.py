@@ -1,6 +1,6 @@
 """Isothermal Eyring / limiting-shear-stress estimate of the traction level of a Hertz contact.
 
-Used as evidence on the *level* of the seed 004 laws (docs/traction.md, "Measured data: what
+Used as evidence on the *level* of the Zhang et al. 2016 laws (docs/traction.md, "Measured data: what
 was searched, and the level"), not by the dynamics.  No measured traction curve of a comparable
 ester turbine oil could be retrieved (the search is logged in docs/traction.md), so the level is
 bracketed by the one family of measured parameters that could be found with their conditions:

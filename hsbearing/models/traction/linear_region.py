@@ -1,6 +1,6 @@
 """Independent estimate of the low-slip slope dmu/dS of an EHL traction curve (the linear region).
 
-Used as evidence for the reading of the seed 004 laws (docs/traction.md, "Evidence"), not by the
+Used as evidence for the reading of the Zhang et al. 2016 laws (docs/traction.md, "Evidence"), not by the
 dynamics.  At S -> 0 nothing heats and nothing shear-thins, so the traction of a lubricated
 Hertzian contact is linear in S with a slope set by three compliances in series:
 

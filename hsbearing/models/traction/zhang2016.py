@@ -1,4 +1,4 @@
-"""EHL traction laws of the aviation oils 4109, 4106 and 4050 (seed 004).
+"""EHL traction laws of the aviation oils 4109, 4106 and 4050 (Zhang et al. 2016).
 
 mu = (A_L + B_L S) exp(-C_L S) + D_L                        ([1], Eq. 1)
 
@@ -136,10 +136,10 @@ def _add(oil, law, props_oil, eq, tbar_kind, has_wc, fmax, description, s_scale=
     _rows.append(row)
 
 
-_add("4109", "printed", "4109", _EQ2, TBAR_SQRT, 1, 0.0, "seed 004 Eq. 2 as printed", mu_limit=0.0)
-_add("4106", "printed", "4106", _EQ3, TBAR_SQRT, 1, 0.0, "seed 004 Eq. 3 as printed", mu_limit=0.0)
+_add("4109", "printed", "4109", _EQ2, TBAR_SQRT, 1, 0.0, "Zhang et al. 2016 Eq. 2 as printed", mu_limit=0.0)
+_add("4106", "printed", "4106", _EQ3, TBAR_SQRT, 1, 0.0, "Zhang et al. 2016 Eq. 3 as printed", mu_limit=0.0)
 _add("4050", "printed", "4050", _EQ4, TBAR_BRINKMAN, 0, 0.0,
-     "seed 004 Eq. 4 as printed (NOT a traction curve: C_L ~ 1e-26, mu grows linearly with S)", mu_limit=0.0)
+     "Zhang et al. 2016 Eq. 4 as printed (NOT a traction curve: C_L ~ 1e-26, mu grows linearly with S)", mu_limit=0.0)
 _add("4109", "bounded", "4109", _EQ2, TBAR_SQRT, 1, LOAD_FACTOR_MAX,
      "Eq. 2 with the load factor |Wc/W-1| smoothly saturated at 3 (W << Wc only)")
 _add("4106", "bounded", "4106", _EQ3, TBAR_SQRT, 1, LOAD_FACTOR_MAX,

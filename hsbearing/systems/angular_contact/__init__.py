@@ -1,4 +1,4 @@
-"""The angular-contact ball bearing (seed 004, Zhang et al. 2016): the 6-DOF dynamic model with cage
+"""The angular-contact ball bearing (Zhang et al. 2016): the 6-DOF dynamic model with cage
 (:mod:`hsbearing.dynamics`, wrapped here), its quasi-static start (:mod:`hsbearing.quasistatic`), the
 quasi-static power loss by source with the SKF 2004 cross-check (``hsbearing friction``) and the run
 figures (:mod:`hsbearing.systems.angular_contact.figures`)."""
@@ -111,7 +111,7 @@ def _register_outputs():
 
 SYSTEM = System(
     name="angular_contact",
-    description="angular-contact ball bearing: 6-DOF dynamics with cage (seed 004), quasi-static equilibrium",
+    description="angular-contact ball bearing: 6-DOF dynamics with cage (Zhang et al. 2016), quasi-static equilibrium",
     friction=friction_command, simulate=simulate, build_model=build_model, summary_lines=summary_lines,
     run_summary=run_summary, archive_kind=archive_kind, fallback=True,
     figures={"run": _plot_dynamic, "quasistatic": _plot_quasistatic}, register_outputs=_register_outputs,

@@ -1,4 +1,4 @@
-"""The power figure of an angular-contact dynamic run: where the shaft's power goes (issue 17, "the figure or a second one").
+"""The power figure of an angular-contact dynamic run: where the shaft's power goes.
 
 ``hsbearing run`` writes it next to the run figure as ``OUT_power.png``; ``hsbearing plot OUT.nc`` too.
 Panels, from the dataset variables of :mod:`hsbearing.balances` (docs/power_loss.md):

@@ -15,7 +15,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 from hsbearing.errors import CaseError, SolverError
-from hsbearing.models.friction.gyro import (  # noqa: F401 - the physics, public here as before issue 19
+from hsbearing.models.friction.gyro import (  # noqa: F401 - the physics, also public here
     _P_BETA,
     _P_CHI,
     _P_D,

@@ -16,7 +16,7 @@ from scipy.optimize import brentq
 
 from hsbearing.case import parse_quantity
 from hsbearing.errors import CaseError
-from hsbearing.models.friction.wire_race import (  # noqa: F401 - the physics, public here as before issue 19
+from hsbearing.models.friction.wire_race import (  # noqa: F401 - the physics, also public here
     bearing_rolling_torque,
     contact_deformation,
     contact_forces_from_preload,
