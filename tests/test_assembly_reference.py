@@ -1,0 +1,253 @@
+"""Independent assembly check (issue 30 item 4): the compiled right-hand side against a plain-Python
+reference of Zhang et al. 2016, Eqs. 5-21, built from the leaf laws only (tests/reference_assembly.py).
+
+Random states in five regimes (both rotation senses, outer- and inner-ring guidance, a turning guide ring,
+cage and ring tilts and rates, radial load and moments, balls loaded against their pocket walls, the cage
+on and beyond its land clearance).  Compared term by term, each on its own scale:
+
+* inner race on each ball: the kernel's per-ball ring contribution (force, moment about the ring centre);
+* pocket on each ball: the kernel's per-ball cage contribution (force, moment about the cage centre);
+* outer race on each ball: what the kernel's ball rows imply once the other terms are removed;
+* per-ball scalar outputs (loads, traction components, slide-roll ratios, rolling speeds, F_R, drag, pocket
+  film / solid loads, boundary friction);
+* guide-land force and moment (global outputs), and every row of ydot (balls, cage, ring).
+
+Tolerance: the reference uses the same discretisations as documented (5 Gauss nodes across the ellipse,
+16 conformal stations around the pocket), so the two differ by round-off, by the kernel's numba twin of
+the traction law and fastmath pocket sum, and by one kinematic detail (the radial part of the contact
+centre's orbital velocity, which the kernel drops: order (D/2) n_t theta' n_t / U ~ 1e-8 of the slip
+ratio).  Measured worst differences are in docs/testing.md ("Independent assembly check"); ``RTOL`` is set
+about 100 times above them and orders of magnitude below the effect of the mutations of
+tools/mutation_check.py.
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+from functools import lru_cache
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import hsbearing
+from hsbearing.dynamics import build_model
+from hsbearing.models import kernel as K
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import reference_assembly as ref  # noqa: E402
+
+#: relative tolerance of every comparison, on the scale of its own term (see module docstring)
+RTOL = 1e-8
+
+REGIMES = {
+    # default: outer-ring guided, inner ring at +14000 r/min, outer ring fixed, 1 kN axial
+    "outer_guided": {},
+    # the other rotation sense
+    "reverse": {"operating.inner_speed": "-14000 rpm"},
+    # a turning guide ring: the land speed enters the land film (omega_sum) and the outer race kinematics
+    "turning_outer": {"operating.outer_speed": "-4000 rpm"},
+    # inner-ring guidance (land centre and speed = the inner ring's; the ring takes the land reaction)
+    "inner_guided": {"cage.guidance": "inner_ring", "bearing.inner_land_diameter": "44.0 mm",
+                     "operating.outer_speed": "2000 rpm"},
+    # radial load and moments: displaced, tilted ring, unequal ball loads
+    "radial_tilt": {"operating.radial_load": "800 N", "operating.radial_load_z": "-300 N",
+                    "operating.moment_y": "3 N m"},
+}
+N_STATES = 8  # random states per regime
+
+
+@lru_cache(maxsize=None)
+def model_of(regime):
+    return build_model(hsbearing.load_case("zhang2016", **REGIMES[regime]))
+
+
+def random_state(model, rng, k):
+    """A state near the model's start with every body perturbed; state k = 0 puts the cage beyond its land
+    clearance (rub), the others spread the land eccentricity over 0.2-0.9 and load some pockets."""
+    y = model.y0.copy()
+    Z = model.layout.Z
+    cg, rg = model.layout.cage0, model.layout.ring0
+    P = model.P
+    dm, cp = P[K.P_INDEX["dm"]], P[K.P_INDEX["c_p"]]
+    cl = P[K.P_INDEX["c_land"]]
+    # inner ring: displacement, tilt, rates
+    y[rg:rg + 3] += rng.normal(0.0, [0.5e-6, 2e-6, 2e-6])
+    y[rg + 3:rg + 5] += rng.normal(0.0, 1e-4, 2)
+    y[rg + 5:rg + 10] = rng.normal(0.0, [2e-3, 5e-3, 5e-3, 0.5, 0.5])
+    # cage: centre at a chosen land eccentricity (relative to the land centre), tilts, rates
+    ecc = 1.003 if k == 0 else rng.uniform(0.2, 0.9)
+    ang = rng.uniform(0.0, 2.0 * math.pi)
+    land_c = y[rg + 1:rg + 3] if model.P[K.P_INDEX["guide"]] == 2.0 else np.zeros(2)
+    y[cg + 1:cg + 3] = land_c + ecc * cl * np.array([math.cos(ang), math.sin(ang)])
+    y[cg] = np.mean(y[0:Z]) + rng.normal(0.0, 3e-6)
+    y[cg + 3] = rng.uniform(0.0, 2.0 * math.pi)
+    y[cg + 4:cg + 6] = rng.normal(0.0, 1e-4, 2)
+    wc = y[cg + 9]
+    y[cg + 6:cg + 9] = rng.normal(0.0, [2e-3, 0.05, 0.05])
+    y[cg + 9] = wc * (1.0 + rng.normal(0.0, 0.02))
+    y[cg + 10:cg + 12] = rng.normal(0.0, 2.0, 2)
+    # balls: positions, rates, spins; each ball placed at a chosen offset in its (moved) pocket
+    y[0:Z] += rng.normal(0.0, 0.5e-6, Z)
+    y[Z:2 * Z] += rng.normal(0.0, 0.5e-6, Z)
+    prm = ref.params_of(model)
+    bod = ref.unpack(y, prm)
+    Rc = bod.cage["R"]
+    for j in range(Z):
+        pj = 2.0 * math.pi * j / Z
+        pocket = bod.cage["pos"] + 0.5 * dm * (Rc @ np.array([0.0, math.cos(pj), math.sin(pj)]))
+        az = math.atan2(pocket[2], pocket[1])
+        off = cp * rng.uniform(-0.9, 0.9)
+        if j == k % Z:  # one ball into its pocket wall (Hertz part and boundary friction)
+            off = 1.0008 * cp * np.sign(off)
+        th = az + off / (0.5 * dm + y[Z + j])
+        y[2 * Z + j] = th - y[cg + 3] - pj
+        # keep the axial offset from the pocket inside the clearance too
+        y[j] = pocket[0] + rng.uniform(-0.3, 0.3) * cp * (0.0 if j == k % Z else 1.0)
+    y[3 * Z:4 * Z] = rng.normal(0.0, 0.01, Z)
+    y[4 * Z:5 * Z] = rng.normal(0.0, 0.03, Z)  # radial speed relative to the pocket (pocket entrainment)
+    y[5 * Z:6 * Z] = y[cg + 9] * (1.0 + rng.normal(0.0, 0.01, Z))
+    for q in range(6, 9):
+        w = y[q * Z:(q + 1) * Z]
+        y[q * Z:(q + 1) * Z] = w * (1.0 + rng.normal(0.0, 0.02, Z)) + rng.normal(0.0, 0.01 * np.max(np.abs(w)), Z)
+    return y
+
+
+def kernel_eval(model, y):
+    Z = model.layout.Z
+    ydot = np.empty_like(y)
+    contrib = np.zeros((Z, K.N_CONTRIB))
+    aux = np.zeros((Z, K.N_AUX))
+    gaux = np.zeros(K.N_GAUX)
+    K.rhs_kernel(np.ascontiguousarray(y), model.P, model.qu, model.qw, ydot, contrib, aux, True,
+                 np.zeros(K.N_CONTRIB), gaux)
+    return ydot, contrib, aux, gaux
+
+
+def kernel_ball_wrench(model, y, ydot, j, bod):
+    """Resultant force and moment on ball j (inertial) implied by the kernel's ball rows (Eqs. 5-10 inverted)."""
+    Z = model.layout.Z
+    P = model.P
+    m, Ib = P[K.P_INDEX["m_b"]], P[K.P_INDEX["I_b"]]
+    ball = bod.balls[j]
+    r, vr, thd = ball["r"], ball["vr"], ball["thd"]
+    wx, wy, wz = ball["wf"]
+    xdd, rdd, thdd, wxd, wyd, wzd = (ydot[q * Z + j] for q in range(3, 9))
+    Fb = m * np.array([xdd, rdd - r * thd * thd, r * thdd + 2.0 * vr * thd])
+    Mb = Ib * np.array([wxd, wyd - thd * wz, wzd + thd * wy])
+    B = np.array(ball["basis"])
+    return B.T @ Fb, B.T @ Mb
+
+
+def state_of(regime, k):
+    model = model_of(regime)
+    rng = np.random.default_rng(1000 * (list(REGIMES).index(regime) + 1) + k)
+    return model, random_state(model, rng, k)
+
+
+def compare(regime, k, conventions=ref.KERNEL_CONVENTIONS, model=None, y=None):
+    """All term-by-term differences at random state k of a regime: {name: (max |diff|, scale)}."""
+    if model is None:
+        model, y = state_of(regime, k)
+    yd_k, contrib, aux, gaux = kernel_eval(model, y)
+    yd_r, terms = ref.evaluate(model, y, conventions)
+    bod = terms["bodies"]
+    Z = model.layout.Z
+    A = K.AUX_INDEX
+    out = {}
+
+    def add(name, kern, refv, floor):
+        kern, refv = np.asarray(kern, float), np.asarray(refv, float)
+        d = float(np.max(np.abs(kern - refv)))
+        s = max(float(np.max(np.abs(refv))), float(np.max(np.abs(kern))), floor)
+        prev = out.get(name)
+        if prev is None or d / s > prev[0] / prev[1]:
+            out[name] = (d, s)
+
+    ring_F, ring_M, cage_F, cage_M, outer_F, outer_M = ([] for _ in range(6))
+    r_ring_F, r_ring_M, r_cage_F, r_cage_M, r_outer_F, r_outer_M = ([] for _ in range(6))
+    for j in range(Z):
+        t = terms["balls"][j]
+        ball = bod.balls[j]
+        cF = contrib[j, [K.C_RFX, K.C_RFY, K.C_RFZ]]
+        cM = contrib[j, [K.C_RMX, K.C_RMY, K.C_RMZ]]
+        pF = contrib[j, [K.C_CFX, K.C_CFY, K.C_CFZ]]
+        pM = contrib[j, [K.C_CMX, K.C_CMY, K.C_CMZ]]
+        ring_F.append(cF)
+        ring_M.append(cM)
+        cage_F.append(pF)
+        cage_M.append(pM)
+        r_ring_F.append(t["ring_F"])
+        r_ring_M.append(t["ring_M"])
+        r_cage_F.append(t["cage_F"])
+        r_cage_M.append(t["cage_M"])
+        # the kernel's outer-race term: resultant minus its own inner, pocket, drag and gravity terms
+        Ft, Mt = kernel_ball_wrench(model, y, yd_k, j, bod)
+        Fi_k, Fp_k = -cF, -pF
+        Mi_k = -cM - np.cross(ball["b"] - bod.ring["pos"], Fi_k)
+        Mp_k = -pM - np.cross(ball["b"] - bod.cage["pos"], Fp_k)
+        drag_k = aux[j, A["F_D"]] * ball["basis"][2]
+        outer_F.append(Ft - Fi_k - Fp_k - drag_k - t["gravity"])
+        outer_M.append(Mt - Mi_k - Mp_k)
+        r_outer_F.append(t["outer"]["F"])
+        r_outer_M.append(t["outer"]["M"])
+    # forces: floor 1e-3 N; moments about ring/cage centres 1e-5 N m; about the ball centre 1e-6 N m
+    add("inner race force (ring contribution)", ring_F, r_ring_F, 1e-3)
+    add("inner race moment about the ring centre", ring_M, r_ring_M, 1e-5)
+    add("pocket force (cage contribution)", cage_F, r_cage_F, 1e-3)
+    add("pocket moment about the cage centre", cage_M, r_cage_M, 1e-5)
+    add("outer race force (from the ball rows)", outer_F, r_outer_F, 1e-3)
+    add("outer race moment (from the ball rows)", outer_M, r_outer_M, 1e-6)
+    tb = terms["balls"]
+    scal = {
+        "Q_i": [x["inner"]["Q"] for x in tb], "Q_o": [x["outer"]["Q"] for x in tb],
+        "T_roll_i": [x["inner"]["T1"] for x in tb], "T_trans_i": [x["inner"]["T2"] for x in tb],
+        "T_roll_o": [x["outer"]["T1"] for x in tb], "T_trans_o": [x["outer"]["T2"] for x in tb],
+        "S_i": [x["inner"]["S0"] for x in tb], "S_o": [x["outer"]["S0"] for x in tb],
+        "U_i": [x["inner"]["U"] for x in tb], "U_o": [x["outer"]["U"] for x in tb],
+        "F_R_i": [x["inner"]["FR"] for x in tb], "F_R_o": [x["outer"]["FR"] for x in tb],
+        "F_D": [x["FD"] for x in tb], "Q_film": [x["pocket"]["Q_film"] for x in tb],
+        "Q_solid": [x["pocket"]["Q_solid"] for x in tb], "Q_c": [x["pocket"]["Q_c"] for x in tb],
+        "P_S": [x["pocket"]["P_S"] for x in tb],
+    }
+    floors = {"S_i": 1e-4, "S_o": 1e-4, "U_i": 1e-2, "U_o": 1e-2}
+    for name, v in scal.items():
+        add(f"aux {name}", aux[:, A[name]], v, floors.get(name, 1e-3))
+    land = terms["land"]
+    G = K.GAUX_INDEX
+    add("land force (F_cy, F_cz)", [gaux[G["F_cy"]], gaux[G["F_cz"]]], land["F"][1:], 1e-3)
+    cpos = bod.cage["pos"]
+    add("land moment about X (land_torque_x)", gaux[G["land_torque_x"]],
+        float((np.cross(cpos, land["F"]) + land["M"])[0]), 1e-5)
+    # every row of ydot: ball rows by block (scale: the block's largest value); cage and ring rows on the
+    # scale of the loads that make them up (sum of the magnitudes of the terms, over the mass or inertia), so
+    # that a row where large terms cancel is not judged on its small remainder
+    for q, name in enumerate(hsbearing.models.state.BALL_STATES):
+        sl = slice(q * Z, (q + 1) * Z)
+        add(f"ydot {name}", yd_k[sl], yd_r[sl], 1e-9)
+    cg, rg = model.layout.cage0, model.layout.ring0
+    P = model.P
+    g = P[K.P_INDEX["grav"]]
+    land = terms["land"]
+    fc = (sum(np.linalg.norm(x["cage_F"]) for x in tb) + np.linalg.norm(land["F"]) + P[K.P_INDEX["m_c"]] * g)
+    mc = sum(np.linalg.norm(x["cage_M"]) for x in tb) + np.linalg.norm(land["M"])
+    fr = (sum(np.linalg.norm(x["ring_F"]) for x in tb) + np.linalg.norm(land["F"]) + P[K.P_INDEX["m_i"]] * g
+          + np.linalg.norm(P[[K.P_INDEX[n] for n in ("F_x", "F_y", "F_z")]]))
+    mr = sum(np.linalg.norm(x["ring_M"]) for x in tb) + np.linalg.norm(P[[K.P_INDEX["M_y"], K.P_INDEX["M_z"]]])
+    load_scale = ([0.0] * 6 + [fc / P[K.P_INDEX["m_c"]]] * 3 + [mc / P[K.P_INDEX["Ip_c"]]] + [mc / P[K.P_INDEX["Id_c"]]] * 2
+                  + [0.0] * 5 + [fr / P[K.P_INDEX["m_i"]]] * 3 + [mr / P[K.P_INDEX["Id_i"]]] * 2)
+    names = model.state_names
+    for i in range(cg, rg + 10):
+        add(f"ydot {names[i]}", yd_k[i], yd_r[i], max(load_scale[i - cg], 1e-9))
+    return out, dict(y=y, terms=terms, yd_k=yd_k, yd_r=yd_r, aux=aux, gaux=gaux, contrib=contrib)
+
+
+CASES = [(reg, k) for reg in REGIMES for k in range(N_STATES)]
+
+
+@pytest.mark.parametrize("regime,k", CASES, ids=[f"{r}-{k}" for r, k in CASES])
+def test_kernel_matches_reference_term_by_term(regime, k):
+    out, _ = compare(regime, k)
+    bad = {n: (d, s, d / s) for n, (d, s) in out.items() if d > RTOL * s}
+    assert not bad, f"{regime} state {k}: kernel vs reference beyond {RTOL:g} of the term's scale: {bad}"
