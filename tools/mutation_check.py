@@ -76,8 +76,10 @@ def failed_terms(xml_path: Path):
             continue
         failed += 1
         tests.append(case.get("name"))
-        msg = fail.get("message", "")
-        m = re.search(r"(\{.*\})", msg, re.S)
+        # the assertion message names the terms: {term: (|diff|, scale, relative)}; pytest shortens the junit
+        # "message" attribute, the element text holds the full line
+        pat = r"AssertionError:[^\n]*scale: (\{[^\n]*\})"
+        m = re.search(pat, fail.text or "") or re.search(pat, fail.get("message", ""))
         if m:
             try:
                 bad = ast.literal_eval(m.group(1))
