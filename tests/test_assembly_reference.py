@@ -219,6 +219,9 @@ def compare(regime, k, conventions=ref.KERNEL_CONVENTIONS, model=None, y=None):
     floors = {"S_i": 1e-4, "S_o": 1e-4, "U_i": 1e-2, "U_o": 1e-2}
     for name, v in scal.items():
         add(f"aux {name}", aux[:, A[name]], v, floors.get(name, 1e-3))
+    # moment about X through the origin of the outer-race actions on the ball (the kernel's own output)
+    add("aux tau_o", aux[:, A["tau_o"]],
+        [float((np.cross(bod.balls[j]["b"], tb[j]["outer"]["F"]) + tb[j]["outer"]["M"])[0]) for j in range(Z)], 1e-5)
     land = terms["land"]
     G = K.GAUX_INDEX
     add("land force (F_cy, F_cz)", [gaux[G["F_cy"]], gaux[G["F_cz"]]], land["F"][1:], 1e-3)
