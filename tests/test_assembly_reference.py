@@ -7,7 +7,9 @@ on and beyond its land clearance).  Compared term by term, each on its own scale
 
 * inner race on each ball: the kernel's per-ball ring contribution (force, moment about the ring centre);
 * pocket on each ball: the kernel's per-ball cage contribution (force, moment about the cage centre);
-* outer race on each ball: what the kernel's ball rows imply once the other terms are removed;
+* outer race on each ball: what the kernel's ball rows imply once the other terms are removed (and the
+  kernel's own outer-race moment output tau_o);
+* gravity on each ball: the change of the kernel's ball rows when gravity is switched off;
 * per-ball scalar outputs (loads, traction components, slide-roll ratios, rolling speeds, F_R, drag, pocket
   film / solid loads, boundary friction);
 * guide-land force and moment (global outputs), and every row of ydot (balls, cage, ring).
@@ -222,6 +224,19 @@ def compare(regime, k, conventions=ref.KERNEL_CONVENTIONS, model=None, y=None):
     floors = {"S_i": 1e-4, "S_o": 1e-4, "U_i": 1e-2, "U_o": 1e-2}
     for name, v in scal.items():
         add(f"aux {name}", aux[:, A[name]], v, floors.get(name, 1e-3))
+    # gravity by difference: the kernel without gravity changes the ball rows by the weight only (Eqs. 5-7)
+    Pg = model.P.copy()
+    Pg[K.P_INDEX["grav"]] = 0.0
+    yd_0 = np.empty_like(y)
+    K.rhs_kernel(np.ascontiguousarray(y), Pg, model.qu, model.qw, yd_0, np.zeros((Z, K.N_CONTRIB)),
+                 np.zeros((Z, K.N_AUX)), False, np.zeros(K.N_CONTRIB), np.zeros(K.N_GAUX))
+    m_b = model.P[K.P_INDEX["m_b"]]
+    grav_k = []
+    for j in range(Z):
+        ball = bod.balls[j]
+        a_x, a_r, a_t = (yd_k[q * Z + j] - yd_0[q * Z + j] for q in (3, 4, 5))
+        grav_k.append(np.array(ball["basis"]).T @ (m_b * np.array([a_x, a_r, ball["r"] * a_t])))
+    add("gravity on the balls (by difference)", grav_k, [x["gravity"] for x in tb], 1e-6)
     # moment about X through the origin of the outer-race actions on the ball (the kernel's own output)
     add("aux tau_o", aux[:, A["tau_o"]],
         [float((np.cross(bod.balls[j]["b"], tb[j]["outer"]["F"]) + tb[j]["outer"]["M"])[0]) for j in range(Z)], 1e-5)
