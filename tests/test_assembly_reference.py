@@ -343,3 +343,19 @@ def test_ball_guided_rhs_is_finite_and_matches_the_reference():
     out, _ = compare("ball", 1, conventions=dict(ref.KERNEL_CONVENTIONS, pocket_outer_radius="case"), model=model, y=y)
     bad = {n: d / s for n, (d, s) in out.items() if not d <= RTOL * s}
     assert not bad, bad
+
+
+@pytest.mark.slow
+def test_mutation_check_catches_the_three_mutations():
+    """tools/mutation_check.py: the unmutated copy passes; halving the slide-roll ratio into the traction law,
+    the pocket entrainment velocity dUu - vr and the land speed sign phd - wl each fail this file, on the term
+    they corrupt (4 subprocess runs, each compiling the kernel into a fresh numba cache: ~0.5-2 min each)."""
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tools"))
+    import mutation_check as M
+
+    base = M.run(None, sys.executable)
+    assert base["rc"] == 0 and base["failed"] == 0, base
+    for name in M.MUTATIONS:
+        res = M.run(name, sys.executable)
+        assert res["rc"] == 1 and res["failed"] >= 16, (name, res["failed"], res["tail"])
+        assert M.EXPECTED_TERM[name] in res["terms"], (name, sorted(res["terms"]))
