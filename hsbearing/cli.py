@@ -202,11 +202,16 @@ def _finish_run(ds, out: Path, args) -> int:
 
 
 def _power_figure(ds, run_png: Path) -> None:
-    """Second figure of a dynamic run: power loss by source and drive torque (hsbearing.systems.angular_contact.power_figure)."""
+    """Second and third figures of a dynamic run: power loss by source and drive torque
+    (hsbearing.systems.angular_contact.power_figure), and the whirl-cage lock/drift with the clock section
+    (hsbearing.systems.angular_contact.lock_figure)."""
+    from hsbearing.systems.angular_contact import lock_figure
     from hsbearing.systems.angular_contact import power_figure as plotting_power
 
     if plotting_power.has_power(ds):
         print(f"figure: {plotting_power.plot_power(ds, plotting_power.power_figure_path(run_png))}")
+    if lock_figure.has_lock(ds) and "classification" in ds.attrs and ds.attrs.get("model") != "gyro_ribbon_cage":
+        print(f"figure: {lock_figure.plot_lock(ds, lock_figure.lock_figure_path(run_png))}")
 
 
 def _cmd_continue(args) -> int:

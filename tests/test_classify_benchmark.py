@@ -198,3 +198,12 @@ def test_section_definition_and_alternative_are_stored():
     assert "not locked" in ds.attrs["whirl_cage_lock"] and "0.97" in ds.attrs["whirl_cage_lock"]
     locked = annotate(_circle_ds(1.0), transient=0.0)
     assert locked.attrs["whirl_cage_lock"].startswith("locked 1:1")
+
+
+def test_lock_figure_is_drawn(tmp_path):
+    from hsbearing.systems.angular_contact.lock_figure import lock_figure_path, plot_lock
+
+    ds = annotate(_circle_ds(0.98), transient=0.0)
+    out = plot_lock(ds, lock_figure_path(tmp_path / "run.png"))
+    assert out.name == "run_lock.png" and out.stat().st_size > 10_000
+    assert [p.name for p in tmp_path.iterdir()] == ["run_lock.png"]  # atomic write, nothing left behind

@@ -76,6 +76,7 @@ __all__ = [
     "embedding_dimension",
     "whirl_growth",
     "whirl_lock",
+    "whirl_cage_phase",
     "classify_motion",
     "MOTION_DEFAULTS",
 ]
@@ -675,6 +676,20 @@ def whirl_growth(t, y, z, parts: int = 4) -> dict:
     return out
 
 
+def whirl_cage_phase(t, y, z, cage_angle):
+    """Cage revolutions phi/2 pi since the start, the whirl-cage phase psi = (theta - n phi)/2 pi [turns], the
+    nearest harmonic n and the mean whirl/cage ratio (theta: whirl angle about the orbit's own centre, unwrapped)."""
+    y = np.asarray(y, float)
+    z = np.asarray(z, float)
+    phi = np.asarray(cage_angle, float)
+    theta = np.unwrap(np.arctan2(z - z.mean(), y - y.mean()))
+    revs = (phi - phi[0]) / (2 * np.pi)
+    dphi = phi[-1] - phi[0]
+    ratio = float((theta[-1] - theta[0]) / dphi) if dphi != 0 else float("nan")
+    n = int(round(ratio)) if math.isfinite(ratio) else 0
+    return revs, (theta - n * phi) / (2 * np.pi), n, ratio
+
+
 def whirl_lock(t, y, z, cage_angle) -> dict:
     """Is the whirl locked to the cage rotation?  The unwrapped whirl-cage phase and its drift.
 
@@ -697,14 +712,10 @@ def whirl_lock(t, y, z, cage_angle) -> dict:
            "drift_turns": float("nan"), "locked": None, "cage_revolutions": float("nan")}
     if t.size < 16:
         return out
-    theta = np.unwrap(np.arctan2(z - z.mean(), y - y.mean()))
-    revs = (phi - phi[0]) / (2 * np.pi)
+    revs, psi, n, ratio = whirl_cage_phase(t, y, z, phi)
     out["cage_revolutions"] = float(abs(revs[-1]))
     if abs(revs[-1]) < 1.0:
         return out
-    ratio = float((theta[-1] - theta[0]) / (phi[-1] - phi[0]))
-    n = int(round(ratio))
-    psi = (theta - n * phi) / (2 * np.pi)
     step = max(1, int(len(t) / (8.0 * abs(revs[-1]))))
     X, P = revs[::step], psi[::step]
     A = np.column_stack([X, np.ones_like(X)])
