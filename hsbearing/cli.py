@@ -92,6 +92,15 @@ def _print_summary(ds, out: Path | None = None) -> None:
             print(f"classification [{ds.attrs.get('classification_alternative_section', 'other')} section]: {alt}")
         if ds.attrs.get("whirl_cage_lock"):
             print(f"whirl-cage lock: {ds.attrs['whirl_cage_lock']}")
+        try:
+            import json as _json
+
+            det = _json.loads(ds.attrs.get("classification_details", "{}"))
+        except ValueError:
+            det = {}
+        if det.get("modulation_y") is not None and det.get("modulation_vy") is not None:
+            print(f"section spread (modulation amplitude the label does not resolve): D_Y "
+                  f"{det['modulation_y'] * 1e6:.3g} \u00b5m, V_Y {det['modulation_vy'] * 1e3:.3g} mm/s")
     stats = {k[len("solver_"):]: v for k, v in ds.attrs.items()
              if k.startswith("solver_") and not k.endswith("_units")}  # the NAME_units companions are not stats
     if stats:

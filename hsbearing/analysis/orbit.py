@@ -186,7 +186,7 @@ def _lock_text(lock: dict) -> str:
     if not lock or lock.get("locked") is None:
         return "not measured (no cage angle, a still cage, or less than one cage revolution)"
     n = lock["harmonic"]
-    drift = f"{lock['rho']:+.4f} +- {lock['rho_sd']:.4f} turn per cage revolution"
+    drift = f"{lock['rho']:+.4f} +- {lock['rho_sd']:.1e} turn per cage revolution"
     if lock["locked"]:
         return (f"locked {n}:1 to the cage rotation (whirl-cage phase drift {drift}, "
                 f"{lock['drift_turns']:.3f} turn over {lock['cage_revolutions']:.0f} cage revolutions)")
