@@ -77,19 +77,18 @@ def _print_summary(ds, out: Path | None = None) -> None:
         cls = ds.attrs["classification"]
         reason = ds.attrs.get("classification_reason", "")
         kind = ds.attrs.get("poincare_section_kind", "")
-        sec = f" [{kind} section]" if kind else ""
         if cls == "undetermined":
-            print(f"classification{sec}: undetermined ({reason})" if reason else f"classification{sec}: undetermined")
+            print(f"classification: undetermined ({reason})" if reason else "classification: undetermined")
         else:
             conf = ds.attrs.get("classification_confidence")
             det = ds.attrs.get("classification_detail", "")
-            print(f"classification{sec}: {cls}" + (f", {det}" if det else "")
+            print(f"classification: {cls}" + (f", {det}" if det else "")
                   + (f" (confidence {float(conf):.2f})" if conf is not None else ""))
         if ds.attrs.get("poincare_section"):
-            print(f"section: {ds.attrs['poincare_section']}")
+            print(f"section: {kind + ' -- ' if kind else ''}{ds.attrs['poincare_section']}")
         alt = ds.attrs.get("classification_alternative")
         if alt:
-            print(f"classification [{ds.attrs.get('classification_alternative_section', 'other')} section]: {alt}")
+            print(f"classification on the {ds.attrs.get('classification_alternative_section', 'other')} section: {alt}")
         if ds.attrs.get("whirl_cage_lock"):
             print(f"whirl-cage lock: {ds.attrs['whirl_cage_lock']}")
         try:

@@ -382,6 +382,7 @@ def test_every_dimensional_global_attribute_has_units(tmp_path, capsys):
     companion NAME_units) or is a count / flag / dimensionless number listed here."""
     dimensionless = {"friction", "damping", "ring_tilt_free", "lambda_inner", "lambda_outer", "centrifugal",
                      "gyroscopic", "unloaded_balls", "ball_count", "classification_confidence",
+                     "classification_alternative_confidence",
                      "solver_steps", "solver_rhs_evals", "solver_jac_evals"}  # counts
     rc, _, _ = _run_cli(["quasistatic", "zhang2016", "-o", str(tmp_path / "q.nc")], capsys)
     rc2, _, _ = _run_cli(["friction", "dgbb_6206", "-o", str(tmp_path / "f.nc")], capsys)

@@ -41,7 +41,10 @@ def test_run_default_case_end_to_end(tmp_path):
         assert re.search(rf"^{re.escape(line)}", out, re.M), (line, out)
     power_png = png.with_name(png.stem + "_power.png")  # second figure: power loss by source, drive torque
     assert re.search(rf"^figure: {re.escape(str(power_png.relative_to(tmp_path)))}$", out, re.M), out
-    assert sorted(p.name for p in (tmp_path / "runs").iterdir()) == sorted([nc.name, png.name, power_png.name])  # nothing else
+    lock_png = png.with_name(png.stem + "_lock.png")  # third figure: whirl-cage lock/drift and the clock section
+    assert re.search(rf"^figure: {re.escape(str(lock_png.relative_to(tmp_path)))}$", out, re.M), out
+    assert sorted(p.name for p in (tmp_path / "runs").iterdir()) == sorted([nc.name, png.name, power_png.name,
+                                                                          lock_png.name])  # nothing else
     assert png.stat().st_size > 10_000 and png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     ds = open_run(nc)
     assert ds.attrs["status"] == "ok" and ds.attrs["solver_steps"] > 0
