@@ -496,7 +496,7 @@ def _read_record(path: Path) -> dict | None:
                 rec = {"status": str(ds.attrs["status"]), "error": str(ds.attrs.get("error", "")),
                        "wall_time": float("nan"), "summary_error": "no summary stored"}
             stale = (ds.attrs.get("sweep_kind", "run") == "run" and "time" in ds.dims
-                     and ds.attrs.get("classification") is not None
+                     and "poincare_section_kind" in ds.attrs  # classified by annotate (not a stand-in's label)
                      and (rec.get("summary") or {}).get("classifier_version") != _classifier_version())
             if stale:  # classified by older rules: re-read with the current classifier (the run is kept)
                 rec["summary_error"] = "classified by an older classifier version"

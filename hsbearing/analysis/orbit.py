@@ -339,6 +339,14 @@ def _scalar(ds, name):
     return float("nan")
 
 
+def _needs_annotation(ds) -> bool:
+    """Not classified at all, or classified by :func:`annotate` under older rules (it always stores the section
+    kind; a label put in the attrs by another producer, e.g. a study's stand-in point function, is kept)."""
+    if "classification" not in ds.attrs:
+        return True
+    return "poincare_section_kind" in ds.attrs and ds.attrs.get("classifier_version") != CLASSIFIER_VERSION
+
+
 def summary(ds: xr.Dataset, case=None) -> dict[str, Any]:
     """Scalars of one run for a sweep table.
 
@@ -354,8 +362,7 @@ def summary(ds: xr.Dataset, case=None) -> dict[str, Any]:
     """
     out: dict[str, Any] = {"status": ds.attrs.get("status", "unknown")}
     dynamic = "time" in ds.dims
-    if (dynamic and ds.attrs.get("classifier_version") != CLASSIFIER_VERSION
-            and all(v in ds.variables for v in REQUIRED)):  # not annotated, or by older rules: (re)classify
+    if dynamic and all(v in ds.variables for v in REQUIRED) and _needs_annotation(ds):
         ds = annotate(ds, case)
     if dynamic:
         mask, _ = _pc.after_transient(ds)
