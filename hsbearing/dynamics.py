@@ -221,7 +221,7 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
         F_x=op.axial_load, F_y=op.radial_load, F_z=op.radial_load_z, M_y=op.moment_y, M_z=op.moment_z,
         ehl=1.0 if (ehl_rolling and damping) else 0.0, drag=1.0 if (drag and friction) else 0.0,
         e_eps=opt["pocket_eps"], grav=opt["gravity"],
-        R_bore_c=0.5 * cg.bore_diameter,
+        R_bore_c=0.5 * cg.bore_diameter, R_out_c=0.5 * cg.outside_diameter,
         n_pocket=opt["pocket_stations"],
     )
     for name, v in vals.items():

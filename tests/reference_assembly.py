@@ -95,15 +95,16 @@ class Prm:
             raise AttributeError(name) from None
 
 
-#: The two places where the kernel's formulation differs from the one written here from the docs; the
+#: The places where the kernel's formulation differs from the one written here from the docs; the
 #: reference follows the docs by default, ``KERNEL_CONVENTIONS`` reproduces the kernel's choice:
 #: * ``pocket_outer_radius``: the pocket wall ends at the cage outside cylinder (docs/pocket.md: "pocket edges
-#:   from the cage bore/outside diameters") -- "case"; the kernel passes the guide-land film radius R_land
-#:   instead ("land"), which equals the cage outside radius for outer-ring guidance only;
+#:   from the cage bore/outside diameters") -- "case", what the kernel does; "land" reproduces the kernel
+#:   before its fix (it passed the guide-land film radius R_land, equal to the cage outside radius for
+#:   outer-ring guidance only: no pocket film with inner-ring guidance, NaN with a ball-piloted cage);
 #: * ``orbit_radial``: the contact centre moves with the ball frame, v_c = v_b + theta' e_x x (s0 - b) (True);
 #:   the kernel keeps the circumferential part (r + rho_r) theta' e_t only (False; a 1e-7 effect on U).
 DOC_CONVENTIONS = {"pocket_outer_radius": "case", "orbit_radial": True}
-KERNEL_CONVENTIONS = {"pocket_outer_radius": "land", "orbit_radial": False}
+KERNEL_CONVENTIONS = {"pocket_outer_radius": "case", "orbit_radial": False}
 
 
 def params_of(model, conventions=None) -> Prm:

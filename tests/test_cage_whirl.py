@@ -338,7 +338,7 @@ def _pocket_at_start(model, n_st=None):
     wc = y[model.layout.cage0 + 9]
     wx, wr, wt = (y[names.index(f"omega_{a}[0]")] for a in "xyz")
     D2 = 0.5 * P[K.P_D]
-    args = (0.0, 0.0, 0.0, wx - wc, wr, wt, P[K.P_ETAF], D2, D2 + P[K.P_CP], P[K.P_RBOREC], P[K.P_RLAND],
+    args = (0.0, 0.0, 0.0, wx - wc, wr, wt, P[K.P_ETAF], D2, D2 + P[K.P_CP], P[K.P_RBOREC], P[K.P_ROUTC],
             0.5 * P[K.P_DM], int(P[K.P_NPOCKET]) if n_st is None else n_st, P[K.P_HMIN], P[K.P_KC], P[K.P_MUC],
             P[K.P_V0C])
     s0 = y[names.index("u_b[0]")]
@@ -391,7 +391,7 @@ def test_pocket_film_restoring_and_its_quadrature_jump(model):
     w = (w[0] - y[model.layout.cage0 + 9], w[1], w[2])
     D2, c = 0.5 * P[K.P_D], P[K.P_CP]
     s0 = y[names.index("u_b[0]")]
-    Ft = [solve_pocket_film(0.0, e, s0, (0.0, 0.0, 0.0), w, P[K.P_ETAF], D2, D2 + c, P[K.P_RBOREC], P[K.P_RLAND],
+    Ft = [solve_pocket_film(0.0, e, s0, (0.0, 0.0, 0.0), w, P[K.P_ETAF], D2, D2 + c, P[K.P_RBOREC], P[K.P_ROUTC],
                             0.5 * P[K.P_DM], n_theta=180, n_u=60)["F"][2] for e in (-0.2 * c, 0.2 * c)]
     k_2d = -(Ft[1] - Ft[0]) / (0.4 * c)
     k_model = -(f(0.0, 0.2 * c)[2] - f(0.0, -0.2 * c)[2]) / (0.4 * c)

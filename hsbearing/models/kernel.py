@@ -57,10 +57,11 @@ N_PARAMS = len(_names)
 # guide lands: n_land films of width L_land each (0: ball-piloted), centred at +a_land (one land) or +-a_land
 # (two) along the cage axis from its mid-plane; guide = 1 outer ring, 2 inner ring (land speed and reaction)
 
-# pocket film (models/pocket.py): cage bore radius, number of pocket-wall stations
-_names += ["R_bore_c", "n_pocket"]
+# pocket film (models/pocket.py): cage bore radius, number of pocket-wall stations, cage outside radius (the
+# pocket wall runs from the cage bore to the cage outside cylinder, whatever the guidance)
+_names += ["R_bore_c", "n_pocket", "R_out_c"]
 P_INDEX = {n: i for i, n in enumerate(_names)}
-P_RBOREC, P_NPOCKET = P_INDEX["R_bore_c"], P_INDEX["n_pocket"]
+P_RBOREC, P_NPOCKET, P_ROUTC = P_INDEX["R_bore_c"], P_INDEX["n_pocket"], P_INDEX["R_out_c"]
 P_INDEX = {n: i for i, n in enumerate(_names)}
 N_PARAMS = len(_names)
 
@@ -380,7 +381,7 @@ def ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, pmode, pcache, 
         else:
             (pFx, pFr, pFt, pMx, pMr, pMt, Qf, Qs, Ppf, Ppb, PS) = pocket_wrench(
                 dxp, dtp, drp, ddx, ddr, ddt, wpx, wpr, wpt, P[P_ETAF] * damp, D2, D2 + P[P_CP], P[P_RBOREC],
-                P[P_RLAND], hdm, int(P[P_NPOCKET]), P[P_HMIN], P[P_KC], P[P_MUC] * fric, P[P_V0C])
+                P[P_ROUTC], hdm, int(P[P_NPOCKET]), P[P_HMIN], P[P_KC], P[P_MUC] * fric, P[P_V0C])
             if pmode == 1:
                 pcache[j, 0], pcache[j, 1], pcache[j, 2], pcache[j, 3] = pFx, pFr, pFt, pMx
                 pcache[j, 4], pcache[j, 5], pcache[j, 6], pcache[j, 7] = pMr, pMt, Qf, Qs
