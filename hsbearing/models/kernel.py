@@ -192,6 +192,13 @@ def _race_contact(p, qu, qw, Q, nx, nr, nt, x, r, vx, vr, thd, wx, wy, wz,
 
 
 @njit(cache=True, inline="always")
+def _sum_wrenches(a, b, c, d, e):
+    """Component sums a + b + c + d + e (left to right) of five wrenches (fx, fr, ft, mx, mr, mt)."""
+    return (a[0] + b[0] + c[0] + d[0] + e[0], a[1] + b[1] + c[1] + d[1] + e[1], a[2] + b[2] + c[2] + d[2] + e[2],
+            a[3] + b[3] + c[3] + d[3] + e[3], a[4] + b[4] + c[4] + d[4] + e[4], a[5] + b[5] + c[5] + d[5] + e[5])
+
+
+@njit(cache=True, inline="always")
 def reaction_moment(ax, ay, az, fx, fy, fz, mx, my, mz):
     """Moment about a body's reference point O of the reaction to a force system on the ball [N m].
 
@@ -214,10 +221,11 @@ def ball_loop(y, P, qu, qw, ydot, contrib, aux, want_aux):
 def ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, pmode, pcache, rmode, rcache):
     """:func:`ball_loop` with the pocket wrench of each ball stored (``pmode`` 1) or reused (``pmode`` 2)
     in ``pcache`` (Z x 11): for Jacobian columns of states the pocket wrench does not depend on (the ring
-    states); ``pmode`` 0 computes it as :func:`ball_loop`.  Likewise ``rmode``/``rcache`` (Z x 12) for gravity
-    and the two race contacts (the ball's force and moment before the pocket, and its ring contribution),
-    which depend on ball and ring states and on the cage angle only: reused for the other 11 cage columns
-    (reuse needs ``want_aux`` False).  Cost only: the arithmetic is unchanged."""
+    states); ``pmode`` 0 computes it as :func:`ball_loop`.  Likewise ``rmode``/``rcache`` (Z x 18) for the
+    two race contacts (columns 0-5 the inner wrench on the ball, 6-11 its ring contribution, 12-17 the outer
+    wrench), which depend on ball and ring states and on the cage angle only: reused for the other 11 cage
+    columns (reuse needs ``want_aux`` False).  Cost only: the arithmetic is unchanged.  Both couplings are
+    checked by tests/test_kernel_io.py::test_jacobian_reuse_couplings_hold."""
     p = P[0]
     Z = p.ball.Z
     D2 = 0.5 * p.ball.D
@@ -243,15 +251,14 @@ def ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, pmode, pcache, 
         vx, vr, thd = y[3 * Z + j], y[4 * Z + j], y[5 * Z + j]
         wx, wy, wz = y[6 * Z + j], y[7 * Z + j], y[8 * Z + j]
         c, s = math.cos(th), math.sin(th)
-        # gravity along -Y (horizontal shaft): (0, -g, 0) in the ball frame is (0, -g cos th, g sin th)
-        Fx = 0.0
-        Fr = -m * p.env.grav * c
-        Ft = m * p.env.grav * s
-        Mx = Mr = Mt = 0.0
+        # Each action on the ball is a named wrench (force, moment about the ball centre) in the ball frame
+        # (x, r, t): gravity, inner, outer, pocket, drag; the balance below sums them (Eqs. 5-10).
+        # ---------------- gravity along -Y (horizontal shaft): (0, -g, 0) in the ball frame is (0, -g cos th, g sin th)
+        gravity = (0.0, -m * p.env.grav * c, m * p.env.grav * s, 0.0, 0.0, 0.0)
         if rmode == 2 and not want_aux:
-            # reuse: gravity and the race contacts depend on ball and ring states and on the cage angle only
-            Fx, Fr, Ft = rcache[j, 0], rcache[j, 1], rcache[j, 2]
-            Mx, Mr, Mt = rcache[j, 3], rcache[j, 4], rcache[j, 5]
+            # reuse: the race contacts depend on ball and ring states and on the cage angle only
+            inner = (rcache[j, 0], rcache[j, 1], rcache[j, 2], rcache[j, 3], rcache[j, 4], rcache[j, 5])
+            outer = (rcache[j, 12], rcache[j, 13], rcache[j, 14], rcache[j, 15], rcache[j, 16], rcache[j, 17])
             contrib[j, C_RFX], contrib[j, C_RFY], contrib[j, C_RFZ] = rcache[j, 6], rcache[j, 7], rcache[j, 8]
             contrib[j, C_RMY], contrib[j, C_RMZ], contrib[j, C_RMX] = rcache[j, 9], rcache[j, 10], rcache[j, 11]
             Qi = Qo = dlt = dltd = dlt_o = dltd_o = nxi = nri = nxo = nro = 0.0  # (auxiliary outputs only)
@@ -276,12 +283,7 @@ def ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, pmode, pcache, 
             fbx = Qi * nxi + tfx  # force of the inner race on the ball (ball frame)
             fbr = Qi * nri + tfr
             fbt = Qi * nti + tft
-            Fx += fbx
-            Fr += fbr
-            Ft += fbt
-            Mx += tmx
-            Mr += tmr
-            Mt += tmt
+            inner = (fbx, fbr, fbt, tmx, tmr, tmt)  # normal load + traction, spin and EHL rolling couples
             # reaction on the inner ring: the opposite of the whole force system on the ball (normal load,
             # traction with its spin couple, EHL rolling couple), inertial frame, moment about the ring centre
             gx, gy, gz = -fbx, -(fbr * c - fbt * s), -(fbr * s + fbt * c)
@@ -300,16 +302,13 @@ def ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, pmode, pcache, 
             (tfx, tfr, tft, tmx, tmr, tmt, To1, To2, So, Uo, FRo, sro, PTo, PEo) = _race_contact(
                 p, qu, qw, Qo, nxo, nro, nto, x, r, vx, vr, thd, wx, wy, wz,
                 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, wo, 0.0, 0.0, p.race.Rx_o, p.race.k_o, p.race.acoef_o)
-            Fx += Qo * nxo + tfx
-            Fr += Qo * nro + tfr
-            Ft += tft
-            Mx += tmx
-            Mr += tmr
-            Mt += tmt
+            outer = (Qo * nxo + tfx, Qo * nro + tfr, tft, tmx, tmr, tmt)  # (the outer normal has no t component)
             # moment about X through the origin of the outer-race actions on the ball: (b x F)_X = r F_t, plus M_x
             tau_o = r * tft + tmx
             if rmode == 1:
-                rcache[j, 0], rcache[j, 1], rcache[j, 2], rcache[j, 3], rcache[j, 4], rcache[j, 5] = Fx, Fr, Ft, Mx, Mr, Mt
+                for k in range(6):
+                    rcache[j, k] = inner[k]
+                    rcache[j, 12 + k] = outer[k]
                 rcache[j, 6], rcache[j, 7], rcache[j, 8] = contrib[j, C_RFX], contrib[j, C_RFY], contrib[j, C_RFZ]
                 rcache[j, 9], rcache[j, 10], rcache[j, 11] = contrib[j, C_RMY], contrib[j, C_RMZ], contrib[j, C_RMX]
         # ---------------- cage pocket (Q_c, P_S), inertial vectors; pocket axes turn and tilt with the cage
@@ -366,12 +365,7 @@ def ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, pmode, pcache, 
         mbz = pMx * ex_z + pMr * er_z + pMt * et_z
         Qc = math.sqrt(pFx * pFx + pFt * pFt)  # pocket force on the ball in the pocket plane
         # to the ball frame
-        Fx += gx_
-        Fr += gy_ * c + gz_ * s
-        Ft += -gy_ * s + gz_ * c
-        Mx += mbx
-        Mr += mby * c + mbz * s
-        Mt += -mby * s + mbz * c
+        pocket = (gx_, gy_ * c + gz_ * s, -gy_ * s + gz_ * c, mbx, mby * c + mbz * s, -mby * s + mbz * c)
         # reaction on the cage: the opposite wrench on the same line of action (through the ball
         # centre b), moment about the cage centre -(M + (b - c) x F): force and moment closed exactly
         Xx, Xy, Xz = bx_ - xc, by_ - yc, bz_ - zc
@@ -386,7 +380,7 @@ def ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, pmode, pcache, 
         FD = 0.0
         if p.switches.drag:
             FD = ball_drag_force(r * thd, p.ball.D, p.drag.rho_e, p.drag.C_D, p.drag.v0_D)
-            Ft += FD
+        drag = (0.0, 0.0, FD, 0.0, 0.0, 0.0)  # circumferential, through the ball centre
         if want_aux:
             # ---------------- dissipated power by source (models.power) and stored elastic energy
             Kdi = p.race.K_i * dlt * math.sqrt(dlt) if dlt > 0.0 else 0.0
@@ -403,7 +397,10 @@ def ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, pmode, pcache, 
             aux[j, AUX.U_el] = (elastic_energy_hertz(p.race.K_i, dlt) + elastic_energy_hertz(p.race.K_o, dlt_o)
                           + (0.4 * Qs * (Qs / p.pocket.K_c) ** (2.0 / 3.0) if Qs > 0.0 else 0.0))  # pocket Hertz part
             aux[j, AUX.tau_o] = tau_o
-        # ---------------- equations of motion (Eqs. 5-10)
+        # ---------------- ball balance (Eqs. 5-10): forces (Eqs. 5-7) and moments about the ball centre (Eqs. 8-10)
+        # F = gravity + Q_i n_i + T_i + Q_o n_o + T_o + pocket (Q_c, P_S) + F_D;  M = race couples (traction spin,
+        # EHL rolling F_R) + pocket moment.  The sum is taken left to right in this order.
+        Fx, Fr, Ft, Mx, Mr, Mt = _sum_wrenches(gravity, inner, outer, pocket, drag)
         xdd, rdd, thdd, wxd, wyd, wzd = ball_equations_of_motion(Fx, Fr, Ft, Mx, Mr, Mt, r, vr, thd, wy, wz, m, I)
         ydot[j] = vx
         ydot[Z + j] = vr
@@ -635,7 +632,8 @@ def jac_kernel(y, P, qu, qw, J, hscale, work):
     for i in range(N):
         h[i] = sq * max(abs(y[i]), hscale[i])
     pc = np.empty((Z, 11))  # pocket wrench at y, reused for the ring columns (it does not depend on them)
-    rc = np.empty((Z, 12))  # gravity + race contacts at y, reused for the cage columns but the cage angle
+    rc = np.empty((Z, 18))  # race contacts at y (inner wrench, ring contribution, outer wrench), reused for the
+    # cage columns but the cage angle
     ball_loop_cached(y, P, qu, qw, f0, c0, aux, False, 1, pc, 1, rc)
     summed_global_rows(y, P, c0, csum, f0, gaux)
     cg = nb
