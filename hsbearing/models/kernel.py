@@ -199,6 +199,13 @@ def _sum_wrenches(a, b, c, d, e):
 
 
 @njit(cache=True, inline="always")
+def _sum4_wrenches(a, b, c, d):
+    """Component sums a + b + c + d (left to right) of four wrenches (fx, fy, fz, mx, my, mz)."""
+    return (a[0] + b[0] + c[0] + d[0], a[1] + b[1] + c[1] + d[1], a[2] + b[2] + c[2] + d[2],
+            a[3] + b[3] + c[3] + d[3], a[4] + b[4] + c[4] + d[4], a[5] + b[5] + c[5] + d[5])
+
+
+@njit(cache=True, inline="always")
 def reaction_moment(ax, ay, az, fx, fy, fz, mx, my, mz):
     """Moment about a body's reference point O of the reaction to a force system on the ball [N m].
 
@@ -545,10 +552,14 @@ def global_rows(y, P, csum, ydot, gaux):
     gaux[GAUX.P_guide_land] = Pland
     gaux[GAUX.U_land] = Uland
     gaux[GAUX.land_torque_x] = yc * Flz - zc * Fly + Mtx + Mlx * Rc[0]
-    Qph, Qpy, Qpz = cage_generalised_moments(csum[C_CMX] + Mlx * Rc[0] + Mtx, csum[C_CMY] + Mlx * Rc[3] + Mty,
-                                             csum[C_CMZ] + Mlx * Rc[6] + Mtz, Rc, Jc)
-    a = cage_equations_of_motion(csum[C_CFX], csum[C_CFY] + Fly - p.cage.m_c * p.env.grav, csum[C_CFZ] + Flz, Qph,
-                                 Qpy, Qpz, phd, psyd, pszd, p.cage.m_c, p.cage.Ip_c, p.cage.Id_c)
+    # ---------------- cage balance (Eqs. 11-16): named wrenches, inertial axes, moments about the cage centre
+    pockets = (csum[C_CFX], csum[C_CFY], csum[C_CFZ], csum[C_CMX], csum[C_CMY], csum[C_CMZ])  # reactions of the balls
+    land = (0.0, Fly, Flz, Mlx * Rc[0], Mlx * Rc[3], Mlx * Rc[6])  # land films + rub; axial moment along the cage axis
+    land_offset = (0.0, 0.0, 0.0, Mtx, Mty, Mtz)  # moment of the land forces applied at the lands' axial offsets
+    gravity_c = (0.0, -p.cage.m_c * p.env.grav, 0.0, 0.0, 0.0, 0.0)
+    Fcx, Fcy, Fcz, Mcx, Mcy, Mcz = _sum4_wrenches(pockets, land, land_offset, gravity_c)
+    Qph, Qpy, Qpz = cage_generalised_moments(Mcx, Mcy, Mcz, Rc, Jc)
+    a = cage_equations_of_motion(Fcx, Fcy, Fcz, Qph, Qpy, Qpz, phd, psyd, pszd, p.cage.m_c, p.cage.Ip_c, p.cage.Id_c)
     for k in range(6):
         ydot[cg + k] = y[cg + 6 + k]
         ydot[cg + 6 + k] = a[k]
@@ -561,12 +572,18 @@ def global_rows(y, P, csum, ydot, gaux):
     we = p.race.omega_i + ex * (Jm[1] * byd + Jm[2] * bzd) + ey * (Jm[4] * byd + Jm[5] * bzd) + ez * (Jm[7] * byd + Jm[8] * bzd)
     gaux[GAUX.drive_torque] = Td
     gaux[GAUX.P_drive] = Td * we
-    Qy, Qz = tilt_generalised_moments(csum[C_RMX], p.ring.M_y + csum[C_RMY], p.ring.M_z + csum[C_RMZ], Rm, Jm)
+    # ---------------- inner-ring balance (Eqs. 17-21): named wrenches, inertial axes, moments about the ring centre
     Rly = Rlz = 0.0
     if inner_guided:  # the land film's reaction on the inner ring (its moment about the ring centre is neglected)
         Rly, Rlz = -Fly, -Flz
-    b = ring_equations_of_motion(p.ring.F_x + csum[C_RFX], p.ring.F_y + csum[C_RFY] + Rly - p.ring.m_i * p.env.grav, p.ring.F_z + csum[C_RFZ] + Rlz,
-                                 Qy, Qz, p.race.omega_i, y[rg + 8], y[rg + 9], p.ring.m_i, p.ring.Ip_i, p.ring.Id_i)
+    loads = (p.ring.F_x, p.ring.F_y, p.ring.F_z, 0.0, p.ring.M_y, p.ring.M_z)  # external loads and moments
+    balls = (csum[C_RFX], csum[C_RFY], csum[C_RFZ], csum[C_RMX], csum[C_RMY], csum[C_RMZ])  # inner-race reactions
+    land_reaction = (0.0, Rly, Rlz, 0.0, 0.0, 0.0)
+    gravity_i = (0.0, -p.ring.m_i * p.env.grav, 0.0, 0.0, 0.0, 0.0)
+    Fix, Fiy, Fiz, Mix, Miy, Miz = _sum4_wrenches(loads, balls, land_reaction, gravity_i)
+    Qy, Qz = tilt_generalised_moments(Mix, Miy, Miz, Rm, Jm)
+    b = ring_equations_of_motion(Fix, Fiy, Fiz, Qy, Qz, p.race.omega_i, y[rg + 8], y[rg + 9], p.ring.m_i, p.ring.Ip_i,
+                                 p.ring.Id_i)
     for k in range(5):
         ydot[rg + k] = y[rg + 5 + k]
         ydot[rg + 5 + k] = b[k]
