@@ -23,7 +23,8 @@ from __future__ import annotations
 import numpy as np
 
 from hsbearing import results
-from hsbearing.models import kernel as K
+from hsbearing.models import kernel_io as K
+from hsbearing.models.kernel_io import GUIDE_OUTER_RING
 
 __all__ = ["SOURCES", "mechanical_energy", "power_variables", "power_summary_lines", "energy_rate", "angular_momentum_x",
            "angular_momentum_rate_x", "external_torque_x", "balance_terms"]
@@ -107,20 +108,20 @@ def mechanical_energy(model, y) -> np.ndarray:
     """
     y = np.atleast_2d(y)
     L = model.layout
-    P = model.P
+    P = K.as_dict(model.P)
     u = L.unpack(y)
-    rb, th = L.ball_radius(y, P[K.P_DM]), L.ball_azimuth(y)
-    mb, Ib = P[K.P_MB], P[K.P_IB]
+    rb, th = L.ball_radius(y, P["dm"]), L.ball_azimuth(y)
+    mb, Ib = P["m_b"], P["I_b"]
     E = 0.5 * mb * (u["xdot_b"] ** 2 + u["udot_b"] ** 2 + (rb * u["thetadot_b"]) ** 2).sum(-1)
     E += 0.5 * Ib * (u["omega_x"] ** 2 + u["omega_y"] ** 2 + u["omega_z"] ** 2).sum(-1)
-    E += 0.5 * P[K.P_MC] * (u["xdot_c"] ** 2 + u["ydot_c"] ** 2 + u["zdot_c"] ** 2)
-    E += 0.5 * P[K.P_IPC] * u["phidot_c"] ** 2 + 0.5 * P[K.P_IDC] * (u["tiltdot_y_c"] ** 2 + u["tiltdot_z_c"] ** 2)
-    E += 0.5 * P[K.P_MI] * (u["xdot_i"] ** 2 + u["ydot_i"] ** 2 + u["zdot_i"] ** 2)
-    E += 0.5 * P[K.P_IDI] * (u["tiltdot_y_i"] ** 2 + u["tiltdot_z_i"] ** 2)
-    E -= P[K.P_FX] * u["x_i"] + P[K.P_FY] * u["y_i"] + P[K.P_FZ] * u["z_i"]
-    E -= P[K.P_MY] * u["tilt_y_i"] + P[K.P_MZ] * u["tilt_z_i"]
-    gr = P[K.P_GRAV]  # potential of gravity along -Y
-    E += gr * (mb * (rb * np.cos(th)).sum(-1) + P[K.P_MC] * u["y_c"] + P[K.P_MI] * u["y_i"])
+    E += 0.5 * P["m_c"] * (u["xdot_c"] ** 2 + u["ydot_c"] ** 2 + u["zdot_c"] ** 2)
+    E += 0.5 * P["Ip_c"] * u["phidot_c"] ** 2 + 0.5 * P["Id_c"] * (u["tiltdot_y_c"] ** 2 + u["tiltdot_z_c"] ** 2)
+    E += 0.5 * P["m_i"] * (u["xdot_i"] ** 2 + u["ydot_i"] ** 2 + u["zdot_i"] ** 2)
+    E += 0.5 * P["Id_i"] * (u["tiltdot_y_i"] ** 2 + u["tiltdot_z_i"] ** 2)
+    E -= P["F_x"] * u["x_i"] + P["F_y"] * u["y_i"] + P["F_z"] * u["z_i"]
+    E -= P["M_y"] * u["tilt_y_i"] + P["M_z"] * u["tilt_z_i"]
+    gr = P["grav"]  # potential of gravity along -Y
+    E += gr * (mb * (rb * np.cos(th)).sum(-1) + P["m_c"] * u["y_c"] + P["m_i"] * u["y_i"])
     # elastic energies 2/5 K delta^2.5 of the race and pocket contacts and of the cage rubbing the land,
     # from the kernel's own approaches (aux U_el, gaux U_land: valid with damping on as well)
     for k in range(y.shape[0]):
@@ -143,26 +144,26 @@ def angular_momentum_x(model, y) -> np.ndarray:
     Balls: m r^2 theta' + I omega_x; cage: m_c (y_c z_c' - z_c y_c') + I_p phi_c'; ring: m_i (y_i z_i' - z_i y_i').
     """
     y = np.atleast_2d(y)
-    L, P = model.layout, model.P
+    L, P = model.layout, K.as_dict(model.P)
     u = L.unpack(y)
-    rb = L.ball_radius(y, P[K.P_DM])
-    H = (P[K.P_MB] * rb**2 * u["thetadot_b"] + P[K.P_IB] * u["omega_x"]).sum(-1)
-    H += P[K.P_MC] * (u["y_c"] * u["zdot_c"] - u["z_c"] * u["ydot_c"]) + P[K.P_IPC] * u["phidot_c"]
-    H += P[K.P_MI] * (u["y_i"] * u["zdot_i"] - u["z_i"] * u["ydot_i"])
+    rb = L.ball_radius(y, P["dm"])
+    H = (P["m_b"] * rb**2 * u["thetadot_b"] + P["I_b"] * u["omega_x"]).sum(-1)
+    H += P["m_c"] * (u["y_c"] * u["zdot_c"] - u["z_c"] * u["ydot_c"]) + P["Ip_c"] * u["phidot_c"]
+    H += P["m_i"] * (u["y_i"] * u["zdot_i"] - u["z_i"] * u["ydot_i"])
     return H
 
 
 def angular_momentum_rate_x(model, y) -> float:
     """dL/dt [N m] of :func:`angular_momentum_x` from the state derivative f(y) (exact, no differencing)."""
     y = np.ascontiguousarray(y, dtype=float)
-    L, P = model.layout, model.P
+    L, P = model.layout, K.as_dict(model.P)
     f = model.f(y)
     u, du = L.unpack(y), L.unpack(f)
-    rb = L.ball_radius(y, P[K.P_DM])
-    H = (P[K.P_MB] * (2.0 * rb * u["udot_b"] * u["thetadot_b"] + rb**2 * du["thetadot_b"])
-         + P[K.P_IB] * du["omega_x"]).sum()
-    H += P[K.P_MC] * (u["y_c"] * du["zdot_c"] - u["z_c"] * du["ydot_c"]) + P[K.P_IPC] * du["phidot_c"]
-    H += P[K.P_MI] * (u["y_i"] * du["zdot_i"] - u["z_i"] * du["ydot_i"])
+    rb = L.ball_radius(y, P["dm"])
+    H = (P["m_b"] * (2.0 * rb * u["udot_b"] * u["thetadot_b"] + rb**2 * du["thetadot_b"])
+         + P["I_b"] * du["omega_x"]).sum()
+    H += P["m_c"] * (u["y_c"] * du["zdot_c"] - u["z_c"] * du["ydot_c"]) + P["Ip_c"] * du["phidot_c"]
+    H += P["m_i"] * (u["y_i"] * du["zdot_i"] - u["z_i"] * du["ydot_i"])
     return float(H)
 
 
@@ -175,21 +176,21 @@ def external_torque_x(model, y) -> dict:
     from hsbearing.models.ring import tilt_rotation
 
     y = np.ascontiguousarray(y, dtype=float)
-    L, P = model.layout, model.P
+    L, P = model.layout, K.as_dict(model.P)
     aux, gaux = model.outputs(y)
     A, G = K.AUX_INDEX, K.GAUX_INDEX
     u = L.unpack(y)
-    rb, th = L.ball_radius(y, P[K.P_DM]), L.ball_azimuth(y)
+    rb, th = L.ball_radius(y, P["dm"]), L.ball_azimuth(y)
     R, _J = tilt_rotation(float(u["tilt_y_i"]), float(u["tilt_z_i"]))
-    g = P[K.P_GRAV]
+    g = P["grav"]
     return {
         "drive": float(gaux[G["drive_torque"]] * R[0]),
         "outer_ring": float(aux[:, A["tau_o"]].sum()),
         # external only when the land is on the (ground) outer ring; inner-ring guidance: internal cage <-> ring
-        "guide_land": float(gaux[G["land_torque_x"]]) if P[K.P_GUIDE] == 1.0 else 0.0,
+        "guide_land": float(gaux[G["land_torque_x"]]) if model.param("guide") == GUIDE_OUTER_RING else 0.0,
         "drag": float((rb * aux[:, A["F_D"]]).sum()),
-        "gravity": float(g * (P[K.P_MB] * (rb * np.sin(th)).sum() + P[K.P_MC] * u["z_c"] + P[K.P_MI] * u["z_i"])),
-        "loads": float(u["y_i"] * P[K.P_FZ] - u["z_i"] * P[K.P_FY]),
+        "gravity": float(g * (P["m_b"] * (rb * np.sin(th)).sum() + P["m_c"] * u["z_c"] + P["m_i"] * u["z_i"])),
+        "loads": float(u["y_i"] * P["F_z"] - u["z_i"] * P["F_y"]),
     }
 
 
@@ -198,12 +199,12 @@ def _load_moment_power_correction(model, y) -> float:
     M . (omega_i e + J beta') - M . beta'."""
     from hsbearing.models.ring import tilt_rotation
 
-    P, L = model.P, model.layout
+    P, L = K.as_dict(model.P), model.layout
     u = L.unpack(np.ascontiguousarray(y, dtype=float))
     R, J = tilt_rotation(float(u["tilt_y_i"]), float(u["tilt_z_i"]))
     by, bz = float(u["tiltdot_y_i"]), float(u["tiltdot_z_i"])
-    wi = P[K.P_WI]
-    My, Mz = P[K.P_MY], P[K.P_MZ]
+    wi = P["omega_i"]
+    My, Mz = P["M_y"], P["M_z"]
     Oy = wi * R[3] + J[4] * by + J[5] * bz
     Oz = wi * R[6] + J[7] * by + J[8] * bz
     return float(My * (Oy - by) + Mz * (Oz - bz))
@@ -216,11 +217,11 @@ def balance_terms(model, y) -> dict:
     residual P_drive - sum D - dE/dt; dL/dt, the external torques and the torque residual.
     """
     aux, gaux = model.outputs(np.ascontiguousarray(y, dtype=float))
-    pv = power_variables(aux[None], gaux[None], model.P[K.P_GUIDE] == 1.0)
+    pv = power_variables(aux[None], gaux[None], model.param("guide") == GUIDE_OUTER_RING)
     out = {k: float(v[0]) if np.ndim(v) == 1 else v[0] for k, v in pv.items()}
     out["dE_dt"] = energy_rate(model, y)
     # a turning outer ring is held at its speed by a drive too: it supplies -(torque on the outer ring) omega_o
-    out["outer_drive_power"] = -out["outer_ring_torque"] * float(model.P[K.P_WO])
+    out["outer_drive_power"] = -out["outer_ring_torque"] * float(model.param("omega_o"))
     # external moment on the ring: the mechanical energy carries its potential -M.beta (small tilts); the
     # moment works at the ring's angular velocity omega_i e + J beta' (with the spin too, the drive takes it)
     out["load_moment_power"] = _load_moment_power_correction(model, y)

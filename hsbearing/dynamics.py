@@ -21,6 +21,7 @@ from hsbearing import results
 from hsbearing.errors import Interrupted, SolverError
 from hsbearing.models import hertz
 from hsbearing.models import kernel as K
+from hsbearing.models import kernel_io as kio
 from hsbearing.models.ball import strip_load_weights
 from hsbearing.models.drag import mixture_density
 from hsbearing.models.geometry import curvature_radii, derive
@@ -39,12 +40,12 @@ MODEL_DEFAULTS = {
     "pocket_film_min": 0.5e-6,  # m, pocket film floor h_c (composite roughness ball/polyamide, docs/pocket.md)
     "pocket_stations": 16,  # stations around the pocket wall (models/pocket.py; 0.3 % of the film load)
     "pocket_v0": 0.01,  # m/s, Coulomb regularisation of the pocket friction
-    "pocket_eps": 1e-7,  # m, regularisation of the ball-in-pocket offset near zero
     "drag_coefficient": 0.5,  # C_D of a sphere (Re ~ 1e3..1e5)
     "drag_v0": 0.01,  # m/s
     "land_length": None,  # m, width of each guide-land film (None: the case's lands, geometry.guide_lands)
     "land_eps_max": 0.95,  # saturation of the guide-land eccentricity ratio
     "land_contact_K": 6e9,  # N/m^1.5, elastic rub of the cage on the land beyond the clearance
+    "land_offset_eps": 1e-9,  # m, regularisation of the cage-axis offset from the land centre (film direction at 0)
     "gravity": 9.81,  # m/s^2 along -Y (horizontal shaft); 0 switches it off
 }
 
@@ -95,7 +96,7 @@ class DynamicModel:
 
     case: object
     layout: StateLayout
-    P: np.ndarray
+    P: np.ndarray  #: kernel parameter record (hsbearing.models.kernel_io.PARAM_DTYPE, shape (1,))
     qu: np.ndarray
     qw: np.ndarray
     y0: np.ndarray
@@ -109,6 +110,10 @@ class DynamicModel:
         self._csum = np.zeros(K.N_CONTRIB)
         self._gaux = np.zeros(K.N_GAUX)
         self._work = np.zeros(4 * self.layout.size)
+
+    def param(self, name: str):
+        """Value of the kernel parameter ``name`` (hsbearing.models.kernel_io.PARAMETERS)."""
+        return kio.get(self.P, name)
 
     @property
     def state_names(self) -> list[str]:
@@ -196,38 +201,46 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
     eta, alpha, law = _oil(case)
     op = case.operating
     zeta = opt["contact_damping_ratio"]
-    p = np.zeros(K.N_PARAMS)
+    # every kernel parameter, by name (declared with units in hsbearing/models/kernel_io.py)
     vals = dict(
-        Z=Z, D=D, m_b=mb, I_b=Ib,
+        # balls
+        Z=Z, D=D, m_b=mb, I_b=Ib, dm=dm,
+        # race contacts
         rho_i=0.5 * dm + (fi - 0.5) * D * math.cos(a0), g_i=(fi - 0.5) * D * math.sin(a0), off_i=(fi - 0.5) * D,
         rho_o=0.5 * dm - (fo - 0.5) * D * math.cos(a0), g_o=-(fo - 0.5) * D * math.sin(a0), off_o=(fo - 0.5) * D,
         K_i=float(ci.K), K_o=float(co.K),
         cd_i=2.0 * zeta * math.sqrt(1.5 * float(ci.K) * mb), cd_o=2.0 * zeta * math.sqrt(1.5 * float(co.K) * mb),
-        acoef_i=float(ci.a), acoef_o=float(co.a),
-        omega_i=op.inner_speed, omega_o=op.outer_speed, Ep=Ep, Rx_i=Rxi, Rx_o=Rxo,
-        k_i=float(ci.ellipticity), k_o=float(co.ellipticity), eta_in=eta, alpha=alpha,
-        T_K=case.lubricant.temperature, law_id=law, U_eps=opt["rolling_eps"], s_eps=opt["slip_eps"],
-        friction=1.0 if friction else 0.0, damping=1.0 if damping else 0.0, dm=dm,
-        c_p=g.pocket_clearance, K_c=float(cc.K), eta_film=eta, Rsq_c=Rb * Rb, h_min=opt["pocket_film_min"],
+        acoef_i=float(ci.a), acoef_o=float(co.a), Rx_i=Rxi, Rx_o=Rxo,
+        k_i=float(ci.ellipticity), k_o=float(co.ellipticity), Ep=Ep,
+        omega_i=op.inner_speed, omega_o=op.outer_speed,
+        # lubricant and traction law
+        eta_in=eta, alpha=alpha, eta_film=eta,
+        law_id=law, T_K=case.lubricant.temperature, U_eps=opt["rolling_eps"], s_eps=opt["slip_eps"],
+        # pocket
+        c_p=g.pocket_clearance, K_c=float(cc.K), h_min=opt["pocket_film_min"],
         mu_c=case.friction.cage_coefficient, v0_c=opt["pocket_v0"],
+        R_bore_c=0.5 * cg.bore_diameter, R_out_c=0.5 * cg.outside_diameter, n_pocket=opt["pocket_stations"],
+        # drag
         rho_e=mixture_density(case.lubricant.density, case.lubricant.oil_volume_fraction),
         C_D=opt["drag_coefficient"], v0_D=opt["drag_v0"],
+        # cage body
         m_c=g.cage_mass, Ip_c=g.cage_axial_inertia, Id_c=g.cage_diametral_inertia,
+        # guide lands
+        guide=kio.GUIDANCE[lands.guidance], n_land=lands.count,
         R_land=lands.radius, L_land=lands.width, c_land=lands.clearance,
-        n_land=lands.count, a_land=abs(lands.offsets[0]) if lands.count else 0.0,
-        guide={"outer_ring": 1.0, "inner_ring": 2.0}.get(lands.guidance, 0.0),
-        eps_max=opt["land_eps_max"], K_land=opt["land_contact_K"],
+        a_land=abs(lands.offsets[0]) if lands.count else 0.0,
+        eps_max=opt["land_eps_max"], K_land=opt["land_contact_K"], offset_eps=opt["land_offset_eps"],
+        # inner ring body and loads
         m_i=g.inner_ring_mass, Ip_i=g.inner_ring_axial_inertia, Id_i=g.inner_ring_diametral_inertia,
         F_x=op.axial_load, F_y=op.radial_load, F_z=op.radial_load_z, M_y=op.moment_y, M_z=op.moment_z,
-        ehl=1.0 if (ehl_rolling and damping) else 0.0, drag=1.0 if (drag and friction) else 0.0,
-        e_eps=opt["pocket_eps"], grav=opt["gravity"],
-        R_bore_c=0.5 * cg.bore_diameter,
-        n_pocket=opt["pocket_stations"],
+        # environment and switches
+        grav=opt["gravity"],
+        friction=bool(friction), damping=bool(damping), ehl_rolling=bool(ehl_rolling and damping),
+        drag=bool(drag and friction),
     )
-    for name, v in vals.items():
-        p[K.P_INDEX[name]] = v
+    p = kio.pack(vals)
     for name in ("m_c", "Ip_c", "Id_c", "m_i", "Ip_i", "Id_i"):
-        if not (math.isfinite(p[K.P_INDEX[name]]) and p[K.P_INDEX[name]] > 0):
+        if not (math.isfinite(vals[name]) and vals[name] > 0):
             raise CaseError(case.source, "cage" if name.endswith("_c") else "bearing",
                             f"cannot derive {name} (give the masses/inertias or the dimensions)")
     qu, qw = strip_load_weights(opt["quadrature_points"])
@@ -523,20 +536,21 @@ def to_dataset(model: DynamicModel, t, Y, stats, status="ok", annotate: bool = T
     L = model.layout
     u = L.unpack(Y)
     n = len(t)
-    aux = np.zeros((n, L.Z, K.N_AUX))
-    gaux = np.zeros((n, K.N_GAUX))
+    aux = np.zeros((n, L.Z, kio.N_AUX))
+    gaux = np.zeros((n, kio.N_GAUX))
     for k in range(n):
         aux[k], gaux[k] = model.outputs(Y[k])
-    A = K.AUX_INDEX
-    G = K.GAUX_INDEX
+    A = kio.AUX_INDEX
+    G = kio.GAUX_INDEX
     geom = derive(case)
     wth = theoretical_cage_speed(geom, case.operating.inner_speed, case.operating.outer_speed)
     # ball spin = magnitude of the ball's angular velocity relative to the orbiting (cage) frame, omega_R of
     # Harris (the frame turns at thetadot_b about X = the ball's x axis); the quasi-static dataset uses the same
     spin = np.sqrt((u["omega_x"] - u["thetadot_b"]) ** 2 + u["omega_y"] ** 2 + u["omega_z"] ** 2)
-    data = {
-        "inner_contact_load": aux[..., A["Q_i"]], "outer_contact_load": aux[..., A["Q_o"]],
-        "inner_contact_angle": aux[..., A["alpha_i"]], "outer_contact_angle": aux[..., A["alpha_o"]],
+    # the kernel's outputs that are Dataset variables, by the one declaration (hsbearing/models/kernel_io.py)
+    data = {var: aux[..., A[col]] for var, col in kio.DATASET_BALL.items()}
+    data.update({var: gaux[:, G[col]] for var, col in kio.DATASET_GLOBAL.items()})
+    data.update({
         "cage_speed": u["phidot_c"], "cage_slip_ratio": cage_slip_ratio(u["phidot_c"], wth),
         "cage_center_x": u["x_c"], "cage_center_y": u["y_c"], "cage_center_z": u["z_c"],
         "cage_velocity_y": u["ydot_c"], "cage_velocity_z": u["zdot_c"], "cage_angle": u["phi_c"],
@@ -547,21 +561,10 @@ def to_dataset(model: DynamicModel, t, Y, stats, status="ok", annotate: bool = T
         "ball_center_axial": u["x_b"], "ball_center_radial": L.ball_radius(Y, geom.dm),
         "inner_ring_axial_displacement": u["x_i"], "inner_ring_radial_displacement_y": u["y_i"],
         "inner_ring_radial_displacement_z": u["z_i"], "inner_ring_tilt_y": u["tilt_y_i"], "inner_ring_tilt_z": u["tilt_z_i"],
-        "inner_traction_rolling": aux[..., A["T_roll_i"]], "inner_traction_transverse": aux[..., A["T_trans_i"]],
-        "outer_traction_rolling": aux[..., A["T_roll_o"]], "outer_traction_transverse": aux[..., A["T_trans_o"]],
-        "inner_slide_roll_ratio": aux[..., A["S_i"]], "outer_slide_roll_ratio": aux[..., A["S_o"]],
-        "inner_rolling_speed": aux[..., A["U_i"]], "outer_rolling_speed": aux[..., A["U_o"]],
-        "inner_rolling_force": aux[..., A["F_R_i"]], "outer_rolling_force": aux[..., A["F_R_o"]],
-        "ball_cage_force": aux[..., A["Q_c"]], "ball_cage_friction": aux[..., A["P_S"]],
-        "ball_drag_force": aux[..., A["F_D"]],
-        "ball_cage_film_load": aux[..., A["Q_film"]], "ball_cage_elastic_force": aux[..., A["Q_solid"]],
-        "ball_cage_film_power": aux[..., A["P_pocket_film"]], "ball_cage_boundary_power": aux[..., A["P_pocket_boundary"]],
-        "cage_land_force_y": gaux[:, G["F_cy"]], "cage_land_force_z": gaux[:, G["F_cz"]],
-        "cage_land_moment": gaux[:, G["M_cx"]], "inner_ring_friction_torque": gaux[:, G["ring_torque"]],
-    }
+    })
     from hsbearing import balances  # power loss by source, drive torque (registered there)
 
-    data.update(balances.power_variables(aux, gaux, model.P[K.P_GUIDE] == 1.0))
+    data.update(balances.power_variables(aux, gaux, model.param("guide") == kio.GUIDE_OUTER_RING))
     # contact state per contact over time: spin-to-roll from the kernel, Hertz/EHL/lambda derived
     from hsbearing import contact_state
 

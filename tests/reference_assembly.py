@@ -11,8 +11,8 @@ Leaf laws used (each validated by its own tests): Hertz load ``ball.hertz_normal
 ``pocket.station_film`` with ``pocket.station_angle`` / ``pocket.pocket_edges`` /
 ``pocket.pocket_film_gap`` / ``pocket.pocket_elastic_force`` / ``pocket.pocket_boundary_friction``, the
 guide-land film ``cage.guide_land_forces`` / ``cage.guide_land_torque`` / ``cage.smooth_eccentricity``
-and the drag ``drag.ball_drag_force``.  NOT used: anything of ``kernel.py`` (except the parameter names
-``P_INDEX`` to read the parameter vector filled by ``dynamics.build_model``), ``ball.groove_contact``,
+and the drag ``drag.ball_drag_force``.  NOT used: anything of ``kernel.py`` (the parameters filled by ``dynamics.build_model``
+are read by name through ``kernel_io.as_dict``, a numba-free declaration), ``ball.groove_contact``,
 ``ball.ball_equations_of_motion``, ``ring.*``, ``cage.cage_orientation`` / ``cage_generalised_moments`` /
 ``cage_equations_of_motion``, ``pocket.pocket_film_wrench`` / ``pocket_wrench`` (the station sum around the
 pocket and the pocket frame are assembled here).
@@ -95,22 +95,23 @@ class Prm:
             raise AttributeError(name) from None
 
 
-#: The two places where the kernel's formulation differs from the one written here from the docs; the
+#: The places where the kernel's formulation differs from the one written here from the docs; the
 #: reference follows the docs by default, ``KERNEL_CONVENTIONS`` reproduces the kernel's choice:
 #: * ``pocket_outer_radius``: the pocket wall ends at the cage outside cylinder (docs/pocket.md: "pocket edges
-#:   from the cage bore/outside diameters") -- "case"; the kernel passes the guide-land film radius R_land
-#:   instead ("land"), which equals the cage outside radius for outer-ring guidance only;
+#:   from the cage bore/outside diameters") -- "case", what the kernel does; "land" reproduces the kernel
+#:   before its fix (it passed the guide-land film radius R_land, equal to the cage outside radius for
+#:   outer-ring guidance only: no pocket film with inner-ring guidance, NaN with a ball-piloted cage);
 #: * ``orbit_radial``: the contact centre moves with the ball frame, v_c = v_b + theta' e_x x (s0 - b) (True);
 #:   the kernel keeps the circumferential part (r + rho_r) theta' e_t only (False; a 1e-7 effect on U).
 DOC_CONVENTIONS = {"pocket_outer_radius": "case", "orbit_radial": True}
-KERNEL_CONVENTIONS = {"pocket_outer_radius": "land", "orbit_radial": False}
+KERNEL_CONVENTIONS = {"pocket_outer_radius": "case", "orbit_radial": False}
 
 
 def params_of(model, conventions=None) -> Prm:
-    from hsbearing.models.kernel import P_INDEX  # the parameter *names* only
+    from hsbearing.models.kernel_io import as_dict  # the parameter record read by name only
 
     conv = dict(DOC_CONVENTIONS, **(conventions or {}))
-    v = {n: float(model.P[i]) for n, i in P_INDEX.items()}
+    v = as_dict(model.P)  # switches are bools, counts and the guidance ints
     cg = model.case.cage
     r_out = 0.5 * cg.outside_diameter if conv["pocket_outer_radius"] == "case" else v["R_land"]
     return Prm(v=v, R_out_cage=r_out, R_bore_cage=0.5 * cg.bore_diameter, orbit_radial=bool(conv["orbit_radial"]))
@@ -228,7 +229,7 @@ def race_contact(prm: Prm, side, ball, C, vC, Oc, vO, Om, u_nodes, w_nodes):
             out["T2"] += f * s2
             if k == len(u_nodes) // 2:
                 out["S0"] = s1 / U
-    if prm.ehl > 0.0:
+    if prm.ehl_rolling:
         FR = float(ehl_rolling_force(U, Q, Rx, ke, prm.Ep, prm.eta_in, prm.alpha))
         out["FR"] = FR
         M += np.cross(s0 - b, -FR * (Ut / U) * t1)  # seed Eq. 7: F_R against rolling, F_H through the centre
@@ -374,7 +375,7 @@ def guide_lands(prm: Prm, bodies: Bodies):
     if nl <= 0:
         return dict(F=F, M=M, Mx_axis=0.0, ring_F=np.zeros(3))
     cage, ring = bodies.cage, bodies.ring
-    inner = prm.guide == 2.0
+    inner = prm.guide == 2  # kernel_io.GUIDE_INNER_RING
     if inner:
         oc, vo, wl = ring["pos"], ring["vel"], prm.omega_i
     else:
@@ -388,7 +389,7 @@ def guide_lands(prm: Prm, bodies: Bodies):
         vp = cage["vel"] + np.cross(cage["w"], a * e_ax)
         p = (pnt - oc)[1:]
         v = (vp - vo)[1:]
-        e = math.sqrt(p @ p + (prm.e_eps * 1e-2) ** 2)  # regularised offset (the kernel's choice, issue 30 item 2)
+        e = math.sqrt(p @ p + prm.offset_eps ** 2)  # regularised offset (the kernel's choice)
         u = p / e
         ed = float(p @ v) / e
         whirl = float(p[0] * v[1] - p[1] * v[0]) / e**2
@@ -425,7 +426,7 @@ def ball_terms(prm: Prm, bodies: Bodies, j, u_nodes, w_nodes):
     ci = inner_contact(prm, ball, bodies.ring, u_nodes, w_nodes)
     co = outer_contact(prm, ball, u_nodes, w_nodes)
     pk = pocket_contact(prm, j, ball, bodies.cage)
-    FD = float(ball_drag_force(ball["r"] * ball["thd"], prm.D, prm.rho_e, prm.C_D, prm.v0_D)) if prm.drag > 0 else 0.0
+    FD = float(ball_drag_force(ball["r"] * ball["thd"], prm.D, prm.rho_e, prm.C_D, prm.v0_D)) if prm.drag else 0.0
     grav = np.array([0.0, -m * prm.grav, 0.0])
     return dict(inner=ci, outer=co, pocket=pk, drag=FD * ball["basis"][2], FD=FD, gravity=grav)
 

@@ -37,6 +37,7 @@ import pytest
 import hsbearing
 from hsbearing.dynamics import build_model
 from hsbearing.models import kernel as K
+from hsbearing.models import kernel_io as kio
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import reference_assembly as ref  # noqa: E402
@@ -74,8 +75,10 @@ def random_state(model, rng, k):
     Z = model.layout.Z
     cg, rg = model.layout.cage0, model.layout.ring0
     P = model.P
-    dm, cp = P[K.P_INDEX["dm"]], P[K.P_INDEX["c_p"]]
-    cl = P[K.P_INDEX["c_land"]]
+    dm, cp = kio.get(P, "dm"), kio.get(P, "c_p")
+    cl = kio.get(P, "c_land")
+    if not math.isfinite(cl):  # ball-piloted cage (no land): move its centre on the scale of the pocket clearance
+        cl = cp
     # inner ring: displacement, tilt, rates
     y[rg:rg + 3] += rng.normal(0.0, [0.2e-6, 0.5e-6, 0.5e-6])  # (contact deflections are ~4 um)
     y[rg + 3:rg + 5] += rng.normal(0.0, 3e-5, 2)
@@ -83,7 +86,7 @@ def random_state(model, rng, k):
     # cage: centre at a chosen land eccentricity (relative to the land centre), tilts, rates
     ecc = 1.003 if k == 0 else rng.uniform(0.2, 0.9)
     ang = rng.uniform(0.0, 2.0 * math.pi)
-    land_c = y[rg + 1:rg + 3] if model.P[K.P_INDEX["guide"]] == 2.0 else np.zeros(2)
+    land_c = y[rg + 1:rg + 3] if kio.get(model.P, "guide") == kio.GUIDE_INNER_RING else np.zeros(2)
     y[cg + 1:cg + 3] = land_c + ecc * cl * np.array([math.cos(ang), math.sin(ang)])
     y[cg] += rng.normal(0.0, 2e-6)
     y[cg + 3] += rng.normal(0.0, 0.01)  # (the balls keep their azimuths: radial load sets u_b, x_b by azimuth)
@@ -140,7 +143,7 @@ def kernel_ball_wrench(model, y, ydot, j, bod):
     """Resultant force and moment on ball j (inertial) implied by the kernel's ball rows (Eqs. 5-10 inverted)."""
     Z = model.layout.Z
     P = model.P
-    m, Ib = P[K.P_INDEX["m_b"]], P[K.P_INDEX["I_b"]]
+    m, Ib = kio.get(P, "m_b"), kio.get(P, "I_b")
     ball = bod.balls[j]
     r, vr, thd = ball["r"], ball["vr"], ball["thd"]
     wx, wy, wz = ball["wf"]
@@ -227,11 +230,11 @@ def compare(regime, k, conventions=ref.KERNEL_CONVENTIONS, model=None, y=None):
         add(f"aux {name}", aux[:, A[name]], v, floors.get(name, 1e-3))
     # gravity by difference: the kernel without gravity changes the ball rows by the weight only (Eqs. 5-7)
     Pg = model.P.copy()
-    Pg[K.P_INDEX["grav"]] = 0.0
+    kio.set_value(Pg, "grav", 0.0)
     yd_0 = np.empty_like(y)
     K.rhs_kernel(np.ascontiguousarray(y), Pg, model.qu, model.qw, yd_0, np.zeros((Z, K.N_CONTRIB)),
                  np.zeros((Z, K.N_AUX)), False, np.zeros(K.N_CONTRIB), np.zeros(K.N_GAUX))
-    m_b = model.P[K.P_INDEX["m_b"]]
+    m_b = kio.get(model.P, "m_b")
     grav_k = []
     for j in range(Z):
         ball = bod.balls[j]
@@ -255,15 +258,15 @@ def compare(regime, k, conventions=ref.KERNEL_CONVENTIONS, model=None, y=None):
         add(f"ydot {name}", yd_k[sl], yd_r[sl], 1e-9)
     cg, rg = model.layout.cage0, model.layout.ring0
     P = model.P
-    g = P[K.P_INDEX["grav"]]
+    g = kio.get(P, "grav")
     land = terms["land"]
-    fc = (sum(np.linalg.norm(x["cage_F"]) for x in tb) + np.linalg.norm(land["F"]) + P[K.P_INDEX["m_c"]] * g)
+    fc = (sum(np.linalg.norm(x["cage_F"]) for x in tb) + np.linalg.norm(land["F"]) + kio.get(P, "m_c") * g)
     mc = sum(np.linalg.norm(x["cage_M"]) for x in tb) + np.linalg.norm(land["M"])
-    fr = (sum(np.linalg.norm(x["ring_F"]) for x in tb) + np.linalg.norm(land["F"]) + P[K.P_INDEX["m_i"]] * g
-          + np.linalg.norm(P[[K.P_INDEX[n] for n in ("F_x", "F_y", "F_z")]]))
-    mr = sum(np.linalg.norm(x["ring_M"]) for x in tb) + np.linalg.norm(P[[K.P_INDEX["M_y"], K.P_INDEX["M_z"]]])
-    load_scale = ([0.0] * 6 + [fc / P[K.P_INDEX["m_c"]]] * 3 + [mc / P[K.P_INDEX["Ip_c"]]] + [mc / P[K.P_INDEX["Id_c"]]] * 2
-                  + [0.0] * 5 + [fr / P[K.P_INDEX["m_i"]]] * 3 + [mr / P[K.P_INDEX["Id_i"]]] * 2)
+    fr = (sum(np.linalg.norm(x["ring_F"]) for x in tb) + np.linalg.norm(land["F"]) + kio.get(P, "m_i") * g
+          + np.linalg.norm([kio.get(P, n) for n in ("F_x", "F_y", "F_z")]))
+    mr = sum(np.linalg.norm(x["ring_M"]) for x in tb) + np.linalg.norm([kio.get(P, "M_y"), kio.get(P, "M_z")])
+    load_scale = ([0.0] * 6 + [fc / kio.get(P, "m_c")] * 3 + [mc / kio.get(P, "Ip_c")] + [mc / kio.get(P, "Id_c")] * 2
+                  + [0.0] * 5 + [fr / kio.get(P, "m_i")] * 3 + [mr / kio.get(P, "Id_i")] * 2)
     names = model.state_names
     for i in range(cg, rg + 10):
         add(f"ydot {names[i]}", yd_k[i], yd_r[i], max(load_scale[i - cg], 1e-9))
@@ -288,7 +291,7 @@ def test_states_exercise_every_term():
     for regime in REGIMES:
         model = model_of(regime)
         P = model.P
-        wl = P[K.P_INDEX["omega_i"]] if P[K.P_INDEX["guide"]] == 2.0 else P[K.P_INDEX["omega_o"]]
+        wl = kio.get(P, "omega_i") if kio.get(P, "guide") == kio.GUIDE_INNER_RING else kio.get(P, "omega_o")
         if regime in ("turning_outer", "inner_guided"):
             assert abs(wl) > 200.0, regime  # the land turns: omega_sum = cage + land speed
         land = []
@@ -303,14 +306,13 @@ def test_states_exercise_every_term():
             assert np.max(np.abs(aux[:, A["T_roll_i"]])) > 0.1 and np.max(np.abs(aux[:, A["T_trans_o"]])) > 0.01
             assert np.count_nonzero(aux[:, A["Q_solid"]] > 0.0) >= 1, (regime, k)  # one ball on its pocket wall
             assert np.max(np.abs(y[4 * Z:5 * Z])) > 0.01  # radial ball speeds: the pocket entrainment term
-            if regime != "inner_guided":  # (the kernel's inner-guided pocket film is empty: see the xfail below)
-                assert np.median(aux[:, A["Q_film"]]) > 1e-3, (regime, k)
+            assert np.median(aux[:, A["Q_film"]]) > 1e-3, (regime, k)
             land.append(math.hypot(gaux[G["F_cy"]], gaux[G["F_cz"]]))
         assert np.count_nonzero(np.array(land) > 3e-3) >= N_STATES // 2, (regime, land)  # loaded land films
         _, y0 = state_of(regime, 0)
         cg, rg = model.layout.cage0, model.layout.ring0
-        land_c = y0[rg + 1:rg + 3] if P[K.P_INDEX["guide"]] == 2.0 else np.zeros(2)
-        assert np.hypot(*(y0[cg + 1:cg + 3] - land_c)) > P[K.P_INDEX["c_land"]]  # state 0: the cage rubs its land
+        land_c = y0[rg + 1:rg + 3] if kio.get(P, "guide") == kio.GUIDE_INNER_RING else np.zeros(2)
+        assert np.hypot(*(y0[cg + 1:cg + 3] - land_c)) > kio.get(P, "c_land")  # state 0: the cage rubs its land
 
 
 def test_contact_centre_velocity_simplification_is_negligible():
@@ -324,9 +326,6 @@ def test_contact_centre_velocity_simplification_is_negligible():
             assert worst < 1e-5, (regime, k, worst)
 
 
-@pytest.mark.xfail(strict=True, reason="kernel passes the guide-land radius R_land as the cage outside radius of the "
-                   "pocket edges (kernel.py pocket_wrench(..., P[P_RBOREC], P[P_RLAND], ...)): with inner-ring guidance "
-                   "R_land is the cage bore radius, the pocket wall has zero length and the pocket film vanishes")
 def test_inner_guided_pocket_film_has_the_cage_outside_radius():
     """docs/pocket.md: the pocket wall runs from the cage bore to the cage outside cylinder, whatever the guidance."""
     for k in range(2):
@@ -335,8 +334,6 @@ def test_inner_guided_pocket_film_has_the_cage_outside_radius():
         assert not bad, bad
 
 
-@pytest.mark.xfail(strict=True, reason="ball-piloted cage: R_land is NaN (no lands) and the kernel passes it as the cage "
-                   "outside radius of the pocket edges: the ball and cage rows of the rhs are NaN")
 def test_ball_guided_rhs_is_finite_and_matches_the_reference():
     model = build_model(hsbearing.load_case("zhang2016", **{"cage.guidance": "ball"}))
     rng = np.random.default_rng(7)

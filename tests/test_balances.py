@@ -25,6 +25,7 @@ import pytest
 import hsbearing as h
 from hsbearing import balances as bl
 from hsbearing import dynamics as dy
+from hsbearing.models import kernel_io as kio
 from hsbearing.models import power as pw
 from hsbearing.solvers.cvode import integrate
 
@@ -51,9 +52,9 @@ def _random_states(m, n, seed):
     rng = np.random.default_rng(seed)
     L = m.layout
     Z = L.Z
-    c_land = m.P[dy.K.P_CLAND]
-    c_p = m.P[dy.K.P_CP]
-    rm = 0.5 * m.P[dy.K.P_DM]
+    c_land = kio.get(m.P, "c_land")
+    c_p = kio.get(m.P, "c_p")
+    rm = 0.5 * kio.get(m.P, "dm")
     out = []
     for _ in range(n):
         y = m.y0.copy()
@@ -159,7 +160,7 @@ def test_dissipation_off_conserves_energy_and_angular_momentum(kick):
     J = _impulse(m, res.y, t)
     # scale: the angular momentum exchanged among the bodies (balls <-> cage through the pockets)
     u = L.unpack(res.y)
-    Hc = m.P[dy.K.P_IPC] * u["phidot_c"] + m.P[dy.K.P_MC] * (u["y_c"] * u["zdot_c"] - u["z_c"] * u["ydot_c"])
+    Hc = kio.get(m.P, "Ip_c") * u["phidot_c"] + kio.get(m.P, "m_c") * (u["y_c"] * u["zdot_c"] - u["z_c"] * u["ydot_c"])
     exch = max(np.ptp(Hc), np.ptp(H - Hc))
     err = np.abs((H - H[0]) - J).max()
     tilt = np.hypot(u["tilt_y_c"], u["tilt_z_c"]).max()

@@ -22,6 +22,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from hsbearing.models import kernel_io as kio
 from hsbearing.models.cage import guide_land_forces, guide_land_power, guide_land_torque
 
 sys.path.insert(0, str(Path(__file__).parent))
@@ -229,7 +230,7 @@ def _cage_rows(model, y, lands_on=True):
 
     P = model.P.copy()
     if not lands_on:
-        P[K.P_NLAND] = 0.0
+        kio.set_value(P, "n_land", 0)
     out = np.empty_like(y)
     K.rhs_kernel(y, P, model.qu, model.qw, out, np.zeros((model.layout.Z, K.N_CONTRIB)),
                  np.zeros((model.layout.Z, K.N_AUX)), False, np.zeros(K.N_CONTRIB), np.zeros(K.N_GAUX))
@@ -249,14 +250,13 @@ def test_kernel_land_force_is_the_sum_of_the_land_films(model, state):
     """(rhs with lands - rhs without) x (m_c, I_p, I_d) = sum over the lands of guide_land_forces projected on Y, Z,
     their moments a_k e_x x F_k and the Petroff torques -- evaluated independently here from the case geometry
     (with the kernel's documented smooth saturation of eps, smooth_eccentricity)."""
-    from hsbearing.models import kernel as K
     from hsbearing.models.cage import cage_generalised_moments, cage_orientation, smooth_eccentricity
     from hsbearing.models.geometry import guide_lands
 
     gl = guide_lands(model.case)
     P = model.P
-    sat = P[K.P_INDEX["eps_max"]]
-    c, R_, L_, eta = gl.clearance, gl.radius, gl.width, P[K.P_INDEX["eta_film"]]
+    sat = kio.get(P, "eps_max")
+    c, R_, L_, eta = gl.clearance, gl.radius, gl.width, kio.get(P, "eta_film")
     y = model.y0.copy()
     cg = model.layout.cage0
     w = y[cg + 9]
@@ -281,7 +281,7 @@ def test_kernel_land_force_is_the_sum_of_the_land_films(model, state):
         F += fk
         M += np.cross(a * ex, fk) + guide_land_torque(eps, w, eta, R_, L_, c) * ex
     Q = cage_generalised_moments(M[0], M[1], M[2], Rc, Jc)
-    m, Ip, Id = model.P[K.P_INDEX["m_c"]], model.P[K.P_INDEX["Ip_c"]], model.P[K.P_INDEX["Id_c"]]
+    m, Ip, Id = kio.get(model.P, "m_c"), kio.get(model.P, "Ip_c"), kio.get(model.P, "Id_c")
     scale = math.hypot(F[1], F[2])
     assert d[0] == pytest.approx(0.0, abs=1e-12)
     assert d[1] * m == pytest.approx(F[1], abs=1e-9 * scale) and d[2] * m == pytest.approx(F[2], abs=1e-9 * scale)
@@ -299,14 +299,13 @@ def test_kernel_linearised_cage_whirl_on_the_land_films(model):
     0.15 w -- not the m w << C half-frequency limit of the old 11 mm film).  Linearised at an offset of 1e-3 c:
     at exactly zero offset the kernel's line of centres is undefined and the film damping drops out."""
     from hsbearing.models.geometry import guide_lands
-    from hsbearing.models import kernel as K
 
     gl = guide_lands(model.case)
     y0 = model.y0.copy()
     cg = model.layout.cage0
     w = y0[cg + 9]
     y0[cg + 1] = 1e-3 * gl.clearance
-    eta = model.P[K.P_INDEX["eta_film"]]
+    eta = kio.get(model.P, "eta_film")
     A = np.zeros((4, 4))
     A[0, 2] = A[1, 3] = 1.0
     base = _cage_rows(model, y0) - _cage_rows(model, y0, lands_on=False)
@@ -318,7 +317,7 @@ def test_kernel_linearised_cage_whirl_on_the_land_films(model):
         A[2, col], A[3, col] = d[1] / h, d[2] / h
     lam = np.linalg.eigvals(A)
     s_k = lam[np.argmax(lam.real)]
-    m = model.P[K.P_INDEX["m_c"]]
+    m = kio.get(model.P, "m_c")
     C = gl.count * math.pi * eta * gl.radius * gl.width**3 / (2 * gl.clearance**3)
     roots = np.roots([m, C, -0.5j * C * w])
     s_th = roots[np.argmax(roots.real)]
@@ -330,17 +329,16 @@ def test_kernel_linearised_cage_whirl_on_the_land_films(model):
 def _pocket_at_start(model, n_st=None):
     """pocket_wrench of ball 0 at the start state as a function of (ex, et, s0): the pocket frame of ball 0 is the
     inertial frame at the start (cage untilted, phi_c = 0, ball 0 at psi = 0), relative spin (omega - phi_c' e_x)."""
-    from hsbearing.models import kernel as K
     from hsbearing.models.pocket import pocket_wrench
 
     P, y, Z = model.P, model.y0, model.layout.Z
     names = model.state_names
     wc = y[model.layout.cage0 + 9]
     wx, wr, wt = (y[names.index(f"omega_{a}[0]")] for a in "xyz")
-    D2 = 0.5 * P[K.P_D]
-    args = (0.0, 0.0, 0.0, wx - wc, wr, wt, P[K.P_ETAF], D2, D2 + P[K.P_CP], P[K.P_RBOREC], P[K.P_RLAND],
-            0.5 * P[K.P_DM], int(P[K.P_NPOCKET]) if n_st is None else n_st, P[K.P_HMIN], P[K.P_KC], P[K.P_MUC],
-            P[K.P_V0C])
+    D2 = 0.5 * kio.get(P, "D")
+    args = (0.0, 0.0, 0.0, wx - wc, wr, wt, kio.get(P, "eta_film"), D2, D2 + kio.get(P, "c_p"), kio.get(P, "R_bore_c"), kio.get(P, "R_out_c"),
+            0.5 * kio.get(P, "dm"), int(kio.get(P, "n_pocket")) if n_st is None else n_st, kio.get(P, "h_min"), kio.get(P, "K_c"), kio.get(P, "mu_c"),
+            kio.get(P, "v0_c"))
     s0 = y[names.index("u_b[0]")]
     return lambda ex, et, ds0=0.0: np.array(pocket_wrench(ex, et, s0 + ds0, *args)[:3])  # (Fx, Fr, Ft) on the ball
 
@@ -349,17 +347,16 @@ def _kinetic_shares(model, v):
     """Kinetic-energy shares of an eigenvector v: ball rotation (I_b w^2), ball translation (m_b v^2), cage translation
     (m_c v^2).  Energy weights, not the solver's atol scaling (atol divides lengths by 1e-3 m and angular velocities by
     1e3 rad/s: that scaling made a ball-spin mode look like a cage mode)."""
-    from hsbearing.models import kernel as K
 
     P = model.P
     e = {"ball rotation": 0.0, "ball translation": 0.0, "cage translation": 0.0}
     for i, n in enumerate(model.state_names):
         if n.startswith("omega_"):
-            e["ball rotation"] += P[K.P_INDEX["I_b"]] * abs(v[i]) ** 2
+            e["ball rotation"] += kio.get(P, "I_b") * abs(v[i]) ** 2
         elif n.startswith(("xdot_b", "udot_b")):
-            e["ball translation"] += P[K.P_INDEX["m_b"]] * abs(v[i]) ** 2
+            e["ball translation"] += kio.get(P, "m_b") * abs(v[i]) ** 2
         elif n in ("xdot_c", "ydot_c", "zdot_c"):
-            e["cage translation"] += P[K.P_INDEX["m_c"]] * abs(v[i]) ** 2
+            e["cage translation"] += kio.get(P, "m_c") * abs(v[i]) ** 2
     s = sum(e.values())
     return {k: x / s for k, x in e.items()}
 
@@ -383,16 +380,16 @@ def test_pocket_film_restoring_and_its_quadrature_jump(model):
     assert abs(k_rr) < 0.01 * k_tt
     # the sign and size against the independent 2-D Reynolds solution (tests/pocket_reynolds_fd.py, p >= 0) of the same
     # gap and spin: secant stiffness over e_t = -+0.2 c (measured -2995 N/m 2-D, -3105 N/m model; both restoring)
-    from hsbearing.models import kernel as K
     from pocket_reynolds_fd import solve_pocket_film
+
 
     P, y, names = model.P, model.y0, model.state_names
     w = tuple(y[names.index(f"omega_{a}[0]")] for a in "xyz")
     w = (w[0] - y[model.layout.cage0 + 9], w[1], w[2])
-    D2, c = 0.5 * P[K.P_D], P[K.P_CP]
+    D2, c = 0.5 * kio.get(P, "D"), kio.get(P, "c_p")
     s0 = y[names.index("u_b[0]")]
-    Ft = [solve_pocket_film(0.0, e, s0, (0.0, 0.0, 0.0), w, P[K.P_ETAF], D2, D2 + c, P[K.P_RBOREC], P[K.P_RLAND],
-                            0.5 * P[K.P_DM], n_theta=180, n_u=60)["F"][2] for e in (-0.2 * c, 0.2 * c)]
+    Ft = [solve_pocket_film(0.0, e, s0, (0.0, 0.0, 0.0), w, kio.get(P, "eta_film"), D2, D2 + c, kio.get(P, "R_bore_c"), kio.get(P, "R_out_c"),
+                            0.5 * kio.get(P, "dm"), n_theta=180, n_u=60)["F"][2] for e in (-0.2 * c, 0.2 * c)]
     k_2d = -(Ft[1] - Ft[0]) / (0.4 * c)
     k_model = -(f(0.0, 0.2 * c)[2] - f(0.0, -0.2 * c)[2]) / (0.4 * c)
     assert k_2d > 0 and k_model == pytest.approx(k_2d, rel=0.05)
@@ -420,7 +417,6 @@ def test_full_model_linearised_cage_modes(model):
     start state that is not an equilibrium (the pocket films decelerate the ball spin at ~7e5 rad/s^2).  So the
     cage's departure to the land in the simulation is not a linear instability of the start state.  Linearised
     dynamics, not a trajectory."""
-    from hsbearing.models import kernel as K
     from hsbearing.models.geometry import guide_lands
 
     gl = guide_lands(model.case)
@@ -430,7 +426,7 @@ def test_full_model_linearised_cage_modes(model):
     y[cg + 1] = 1e-2 * gl.clearance
     J = np.zeros((y.size, y.size))
     model.jac(0.0, y, None, J)
-    m = model.P[K.P_INDEX["m_c"]]
+    m = kio.get(model.P, "m_c")
     # cage rows with the balls frozen: m zeta'' = -(k - i k_c) zeta - (c + i c_c) zeta', zeta = y + i z
     k = -0.5 * m * (J[cg + 7, cg + 1] + J[cg + 8, cg + 2])
     k_c = 0.5 * m * (J[cg + 8, cg + 1] - J[cg + 7, cg + 2])
@@ -441,7 +437,7 @@ def test_full_model_linearised_cage_modes(model):
     k_tt = -(f(0.0, h)[2] - f(0.0, -h)[2]) / (2 * h)
     k_rr = -(f(0.0, 0.0, h)[1] - f(0.0, 0.0, -h)[1]) / (2 * h)
     assert k == pytest.approx(0.5 * Z * (k_tt + k_rr), rel=0.03)  # the pockets are the cage's spring
-    C = gl.count * math.pi * model.P[K.P_INDEX["eta_film"]] * gl.radius * gl.width**3 / (2 * gl.clearance**3)
+    C = gl.count * math.pi * kio.get(model.P, "eta_film") * gl.radius * gl.width**3 / (2 * gl.clearance**3)
     assert 0.5 * C * y[cg + 9] < 0.02 * k
     assert c > 0 and k_c > 0  # damping, and a forward-whirl (destabilising) cross-coupling
     roots = np.roots([m, c + 1j * c_c, k - 1j * k_c])
@@ -476,18 +472,18 @@ def test_inner_ring_and_ball_guidance():
     y[cg + 1], y[cg + 8] = 0.5 * gl.clearance, 0.1 * gl.clearance * 600.0
     y[rg + 1] = 0.1 * gl.clearance  # the ring centre moves too: the film sees the relative offset
     P0 = m.P.copy()
-    P0[K.P_NLAND] = 0.0
+    kio.set_value(P0, "n_land", 0)
     scratch = (np.zeros((m.layout.Z, K.N_CONTRIB)), np.zeros((m.layout.Z, K.N_AUX)), False, np.zeros(K.N_CONTRIB))
     on, off = np.empty_like(y), np.empty_like(y)
     g_on, g_off = np.zeros(K.N_GAUX), np.zeros(K.N_GAUX)
     K.rhs_kernel(y, m.P, m.qu, m.qw, on, *scratch, g_on)
     K.rhs_kernel(y, P0, m.qu, m.qw, off, *scratch, g_off)
-    Fc = (on[cg + 7:cg + 9] - off[cg + 7:cg + 9]) * m.P[K.P_INDEX["m_c"]]
-    Fr = (on[rg + 6:rg + 8] - off[rg + 6:rg + 8]) * m.P[K.P_INDEX["m_i"]]
+    Fc = (on[cg + 7:cg + 9] - off[cg + 7:cg + 9]) * kio.get(m.P, "m_c")
+    Fr = (on[rg + 6:rg + 8] - off[rg + 6:rg + 8]) * kio.get(m.P, "m_i")
     assert np.hypot(*Fc) > 1e-5 and Fr == pytest.approx(-Fc, abs=1e-9)  # round-off of the ~1 kN ring-load sum
     assert g_on[K.GAUX_INDEX["M_cx"]] > 0  # the inner ring turns faster than the cage: the film drives it
     assert g_on[K.GAUX_INDEX["P_guide_land"]] > 0
     ball = build_model(hsbearing.load_case("zhang2016", **{"cage.guidance": "ball"}), gravity=0.0)
-    assert ball.P[K.P_NLAND] == 0
+    assert kio.get(ball.P, "n_land") == 0
     _, g = ball.outputs(ball.y0)
     assert np.all(g[[K.GAUX_INDEX[n] for n in ("F_cy", "F_cz", "M_cx", "P_guide_land")]] == 0.0)

@@ -24,6 +24,7 @@ import pytest
 import hsbearing
 from hsbearing.dynamics import build_model
 from hsbearing.models import kernel as K
+from hsbearing.models import kernel_io as kio
 
 DATA = Path(__file__).parent / "data" / "regression" / "kernel_rhs_states.npz"
 T5 = {"operating.radial_load": "1000 N", "lubricant.temperature": "130 degC", "operating.axial_load": "1000 N"}
@@ -46,7 +47,7 @@ def test_jacobian_cage_and_ring_columns_equal_plain_finite_difference(state):
     Z = model.layout.Z
     y = model.y0.copy()
     if state == "film_and_hertz":  # wall contact to wall contact, squeeze, cage off-centre and tilted
-        y[2 * Z:3 * Z] = np.linspace(-1.25, 1.25, Z) * P[K.P_CP] / (0.5 * P[K.P_DM])
+        y[2 * Z:3 * Z] = np.linspace(-1.25, 1.25, Z) * kio.get(P, "c_p") / (0.5 * kio.get(P, "dm"))
         y[3 * Z:4 * Z] = 0.01
         cg = 9 * Z
         y[cg + 1], y[cg + 2], y[cg + 4], y[cg + 5] = 5e-6, -3e-6, 2e-5, -1e-5

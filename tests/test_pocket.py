@@ -15,10 +15,16 @@ import math
 
 import numpy as np
 import pytest
-
-from hsbearing.models.pocket import (pocket_elastic_force, pocket_film_gap, pocket_film_wrench, pocket_wrench,
-                                     station_film)
 from pocket_reynolds_fd import solve_pocket_film
+
+from hsbearing.models import kernel_io as kio
+from hsbearing.models.pocket import (
+    pocket_elastic_force,
+    pocket_film_gap,
+    pocket_film_wrench,
+    pocket_wrench,
+    station_film,
+)
 
 Rb, Rp, R_BORE, R_OUT, HDM, ETA = 4.7625e-3, 4.8125e-3, 22.2e-3, 26e-3, 23e-3, 3.6e-3
 C = Rp - Rb
@@ -190,8 +196,8 @@ def test_kernel_pocket_wrench_closed():
     Z = model.layout.Z
     y = model.y0.copy()
     cg = 9 * Z
-    hdm = 0.5 * P[K.P_DM]
-    y[2 * Z:3 * Z] = np.linspace(-1.25, 1.25, Z) * P[K.P_CP] / hdm  # from contact with one wall, through the film, to the other
+    hdm = 0.5 * kio.get(P, "dm")
+    y[2 * Z:3 * Z] = np.linspace(-1.25, 1.25, Z) * kio.get(P, "c_p") / hdm  # from contact with one wall, through the film, to the other
     y[:Z] = np.linspace(20e-6, -20e-6, Z)  # axial offsets
     y[3 * Z:4 * Z] = 0.01  # axial and radial ball velocities: squeeze and sliding along the pocket axis
     y[4 * Z:5 * Z] = -0.01
@@ -207,11 +213,12 @@ def test_kernel_pocket_wrench_closed():
 
     yd1, c1, aux = run(P)
     P0 = P.copy()
-    P0[K.P_ETAF] = P0[K.P_KC] = P0[K.P_MUC] = 0.0
+    for name in ("eta_film", "K_c", "mu_c"):
+        kio.set_value(P0, name, 0.0)
     yd0, c0, _ = run(P0)
     assert np.all(np.abs(c0[:, K.C_CFX:]) == 0.0)  # nothing else touches the cage in ball_loop
     assert aux[:, K.AUX_INDEX["Q_solid"]].max() > 0.0 and aux[:, K.AUX_INDEX["Q_film"]].min() > 0.0  # both regimes present
-    m, I = P[K.P_MB], P[K.P_IB]
+    m, I = kio.get(P, "m_b"), kio.get(P, "I_b")
     phc = y[cg + 3]
     for j in range(Z):
         r = hdm + y[Z + j]
@@ -315,7 +322,7 @@ def test_jacobian_reuses_pocket_wrench_for_ring_columns_exactly():
     P = model.P
     Z = model.layout.Z
     y = model.y0.copy()
-    y[2 * Z:3 * Z] = np.linspace(-1.25, 1.25, Z) * P[K.P_CP] / (0.5 * P[K.P_DM])  # wall contact to wall contact
+    y[2 * Z:3 * Z] = np.linspace(-1.25, 1.25, Z) * kio.get(P, "c_p") / (0.5 * kio.get(P, "dm"))  # wall contact to wall contact
     y[3 * Z:4 * Z] = 0.01
     N = y.size
     J = np.zeros((N, N))

@@ -36,6 +36,8 @@ from pathlib import Path
 
 import numpy as np
 
+from hsbearing.models import kernel_io as kio
+
 ROOT = Path(__file__).resolve().parents[1]
 OUT = ROOT / "runs" / "cage_whirl"
 FIG = ROOT / "docs" / "validation" / "cage_whirl_figures"
@@ -265,7 +267,6 @@ def analytic_table(results):
     """Free-cage film model of each run: predicted sigma and whirl ratio."""
     import hsbearing
     from hsbearing.dynamics import build_model
-    from hsbearing.models import kernel as K
 
     rows = {}
     for name, res in results.items():
@@ -276,7 +277,7 @@ def analytic_table(results):
             continue
         case = hsbearing.load_case("zhang2016", **over)
         P = build_model(case, **opts).P
-        eta, R, L, c, m = (P[K.P_INDEX[n]] for n in ("eta_film", "R_land", "L_land", "c_land", "m_c"))
+        eta, R, L, c, m = (kio.get(P, n) for n in ("eta_film", "R_land", "L_land", "c_land", "m_c"))
         omega = res["summary"]["mean_cage_speed"]
         C, Kxy = film_coefficients(eta, R, L, c, omega)
         s = free_cage_eigenvalue(m, C, omega)
@@ -404,8 +405,8 @@ def linear_modes(t_settle=0.04, n_snap=3, **opts):
     """
     import hsbearing
     from hsbearing.dynamics import build_model
-    from hsbearing.solvers.cvode import integrate
     from hsbearing.models.state import BALL_STATES, CAGE_STATES
+    from hsbearing.solvers.cvode import integrate
 
     case = hsbearing.load_case("zhang2016")
     model = build_model(case, gravity=0.0, **opts)
@@ -582,6 +583,7 @@ def theory_figure(results):
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+
     import hsbearing
     from hsbearing.models.geometry import derive
 
@@ -652,8 +654,8 @@ def main(argv=None):
               "| m(sigma^2-nu^2), 2 m sigma nu [N/m] | ball-in-pocket offset / e (rms) | pocket force mean, min [N] "
               "| ball inertia (Z/2) m_b [(w-nu)^2-sigma^2], (Z/2) m_b 2 sigma (w-nu) [N/m] |")
         print("|---|---|---|---|---|---|---|---|---|---|")
-        from hsbearing.models.geometry import derive as _derive
         import hsbearing as _h
+        from hsbearing.models.geometry import derive as _derive
         _g = _derive(_h.load_case("zhang2016"))
         mZ = 0.5 * _g.Z * _g.ball_mass
         for q in rows:

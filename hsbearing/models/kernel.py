@@ -6,7 +6,8 @@ lives in the named functions of :mod:`hsbearing.models.ball`,
 :mod:`~hsbearing.models.drag` and the traction law of
 :mod:`hsbearing.models.traction.zhang2016`; this module only assembles them
 over the balls.  State layout: :mod:`hsbearing.models.state`.  Parameter
-vector: the ``P_*`` indices below, filled by :func:`hsbearing.dynamics.build_model`.
+record and output columns: :mod:`hsbearing.models.kernel_io` (declared once, by name, with units), filled by
+:func:`hsbearing.dynamics.build_model`.
 
 Structure (used by the Jacobian): :func:`ball_loop` computes, for each ball
 j, the derivatives of its 9 states (they depend only on ball j, the cage and
@@ -36,57 +37,27 @@ from hsbearing.models.cage import (
     smooth_eccentricity,
 )
 from hsbearing.models.drag import ball_drag_force
+from hsbearing.models.kernel_io import (  # noqa: F401  (AUX_INDEX, GAUX_INDEX, N_AUX, N_GAUX: re-exported)
+    AUX,
+    AUX_INDEX,
+    GAUX,
+    GAUX_INDEX,
+    GUIDE_INNER_RING,
+    N_AUX,
+    N_GAUX,
+)
 from hsbearing.models.pocket import pocket_wrench
 from hsbearing.models.power import couple_power, elastic_energy_hertz, normal_damping_power, sliding_power
 from hsbearing.models.ring import inner_groove_centre, ring_equations_of_motion, tilt_generalised_moments, tilt_rotation
 from hsbearing.models.traction._kernels import coefficients_nb, mu_nb
 
-# ---------------------------------------------------------------------------- parameter indices
-_names = """Z D m_b I_b rho_i g_i off_i rho_o g_o off_o K_i K_o cd_i cd_o acoef_i acoef_o
-omega_i omega_o Ep Rx_i Rx_o k_i k_o eta_in alpha T_K law_id U_eps s_eps friction damping dm
-c_p K_c eta_film Rsq_c h_min mu_c v0_c rho_e C_D v0_D m_c Ip_c Id_c R_land L_land c_land eps_max
-K_land m_i Ip_i Id_i F_x F_y F_z M_y M_z ehl drag e_eps grav
-n_land a_land guide""".split()
-P_INDEX = {n: i for i, n in enumerate(_names)}
-N_PARAMS = len(_names)
-(P_Z, P_D, P_MB, P_IB, P_RHOI, P_GI, P_OFFI, P_RHOO, P_GO, P_OFFO, P_KI, P_KO, P_CDI, P_CDO, P_ACI, P_ACO,
- P_WI, P_WO, P_EP, P_RXI, P_RXO, P_KEI, P_KEO, P_ETAIN, P_ALPHA, P_TK, P_LAW, P_UEPS, P_SEPS, P_FRIC, P_DAMP, P_DM,
- P_CP, P_KC, P_ETAF, P_RSQC, P_HMIN, P_MUC, P_V0C, P_RHOE, P_CDRAG, P_V0D, P_MC, P_IPC, P_IDC, P_RLAND, P_LLAND,
- P_CLAND, P_EPSMAX, P_KLAND, P_MI, P_IPI, P_IDI, P_FX, P_FY, P_FZ, P_MY, P_MZ, P_EHL, P_DRAG, P_EEPS,
- P_GRAV, P_NLAND, P_ALAND, P_GUIDE) = range(N_PARAMS)
-# guide lands: n_land films of width L_land each (0: ball-piloted), centred at +a_land (one land) or +-a_land
-# (two) along the cage axis from its mid-plane; guide = 1 outer ring, 2 inner ring (land speed and reaction)
-
-# pocket film (models/pocket.py): cage bore radius, number of pocket-wall stations
-_names += ["R_bore_c", "n_pocket"]
-P_INDEX = {n: i for i, n in enumerate(_names)}
-P_RBOREC, P_NPOCKET = P_INDEX["R_bore_c"], P_INDEX["n_pocket"]
-P_INDEX = {n: i for i, n in enumerate(_names)}
-N_PARAMS = len(_names)
+# Parameters: the record P (one-element structured array, P[0] read as ``p.<group>.<name>``) and the
+# output columns AUX / GAUX are declared, with units, in hsbearing.models.kernel_io.
 
 # contribution columns: forces/moments on the inner ring (inertial X, Y, Z; moments about its centre)
 # and on the cage (inertial; moments about the cage centre)
 C_RFX, C_RFY, C_RFZ, C_RMY, C_RMZ, C_RMX, C_CFX, C_CFY, C_CFZ, C_CMX, C_CMY, C_CMZ = range(12)
 N_CONTRIB = 12
-
-# per-ball auxiliary outputs (written only when want_aux)
-# P_*: dissipated power by source [W] (models.power; docs/power_loss.md); U_el: elastic energy stored in the
-# ball's race and pocket contacts [J]; tau_o: moment about X (through the origin) of the outer-race actions on
-# the ball [N m] (the outer ring, i.e. the ground, carries -tau_o)
-_aux = """Q_i Q_o alpha_i alpha_o T_roll_i T_trans_i T_roll_o T_trans_o S_i S_o U_i U_o Q_c P_S F_R_i F_R_o F_D
-spin_roll_i spin_roll_o P_trac_i P_trac_o P_ehl_i P_ehl_o P_damp_i P_damp_o P_pocket_film P_pocket_boundary
-P_drag U_el tau_o""".split()
-_aux += ["Q_film", "Q_solid"]  # pocket film load and Hertz (solid) load [N] (models/pocket.py)
-AUX_INDEX = {n: i for i, n in enumerate(_aux)}
-N_AUX = len(_aux)
-# global auxiliary outputs
-# drive_torque: moment about the inner ring's own axis that the shaft supplies to hold the prescribed spin
-# [N m] (positive when it drives); P_drive: its power [W]; P_guide_land: dissipation of the land film and rub
-# [W]; U_land: elastic energy of the cage rubbing the land [J]; land_torque_x: moment about X (through the
-# origin) of the land actions on the cage [N m]
-_gaux = "F_cy F_cz M_cx ring_torque drive_torque P_drive P_guide_land U_land land_torque_x".split()
-GAUX_INDEX = {n: i for i, n in enumerate(_gaux)}
-N_GAUX = len(_gaux)
 
 
 @njit(cache=True, inline="always")
@@ -108,7 +79,7 @@ def _surface_velocities(px_, pr_, pt_, x, r, vx, vr, thd, wx, wy, wz, rvx, rvr, 
 
 
 @njit(cache=True)
-def _race_contact(P, qu, qw, Q, nx, nr, nt, x, r, vx, vr, thd, wx, wy, wz,
+def _race_contact(p, qu, qw, Q, nx, nr, nt, x, r, vx, vr, thd, wx, wy, wz,
                   rvx, rvr, rvt, ox, orr, ot, Wx, Wr, Wt, Rx, ke, acoef):
     """Traction and EHL rolling force of one ball/race contact, in the ball frame (x, r, t).
 
@@ -125,7 +96,7 @@ def _race_contact(P, qu, qw, Q, nx, nr, nt, x, r, vx, vr, thd, wx, wy, wz,
     :func:`models.power.couple_power`).  The race carries the exact opposite
     force system (:func:`reaction_moment`).
     """
-    D2 = 0.5 * P[P_D]
+    D2 = 0.5 * p.ball.D
     fx = fr = ft = 0.0
     mx = mr = mt = 0.0
     T1 = T2 = 0.0
@@ -147,16 +118,15 @@ def _race_contact(P, qu, qw, Q, nx, nr, nt, x, r, vx, vr, thd, wx, wy, wz,
                                                         rvx, rvr, rvt, ox, orr, ot, Wx, Wr, Wt)
     vcx, vcr, vct = vx, vr, (r + r0r) * thd
     Ut = 0.5 * ((vbx + vrx) * t1x + (vbr + vrr) * t1r + (vbt + vrt) * t1t) - (vcx * t1x + vcr * t1r + vct * t1t)
-    ueps = P[P_UEPS]
+    ueps = p.traction.U_eps
     U = math.sqrt(Ut * Ut + ueps * ueps)
     # spin-to-roll ratio (relative angular velocity along the normal / rolling speed)
     spin_roll = -((wx - Wx) * nx + (wy - Wr) * nr + (wz - Wt) * nt) * D2 / U
-    fric = P[P_FRIC]
-    if fric > 0.0:
-        A, B, C, Dd = coefficients_nb(int(P[P_LAW]), Q, U, P[P_TK], P[P_EP], Rx)
+    if p.switches.friction:
+        A, B, C, Dd = coefficients_nb(p.traction.law_id, Q, U, p.traction.T_K, p.race.Ep, Rx)
         a = acoef * np.cbrt(Q)  # semi-major axis, constant ellipticity
         iU = 1.0 / U
-        seps = P[P_SEPS]
+        seps = p.traction.s_eps
         # symmetric nodes (qu[n-1-k] = -qu[k], Gauss-Legendre): phi of the mirror node is exactly -phi, so its
         # cos is the same and its sin changes sign -- half the cos/sin calls; the nodes are visited
         # in the order 0, n-1, 1, n-2, ... (the sums change by round-off only)
@@ -207,8 +177,8 @@ def _race_contact(P, qu, qw, Q, nx, nr, nt, x, r, vx, vr, thd, wx, wy, wz,
                 PT += sliding_power(Fx_, Fr_, Ft_, dvx, dvr, dvt)
                 if k == qu.size // 2:
                     S0 = s1 / U
-    if P[P_EHL] > 0.0:
-        FR = ehl_rolling_force(U, Q, Rx, ke, P[P_EP], P[P_ETAIN], P[P_ALPHA])
+    if p.switches.ehl_rolling:
+        FR = ehl_rolling_force(U, Q, Rx, ke, p.race.Ep, p.lubricant.eta_in, p.lubricant.alpha)
         sg = Ut / U
         # F_R at the contact against the rolling sense, F_H = F_R through the ball centre:
         # a pure couple on the ball (seed Eq. 7 signs; docs/dynamics.md)
@@ -219,6 +189,20 @@ def _race_contact(P, qu, qw, Q, nx, nr, nt, x, r, vx, vr, thd, wx, wy, wz,
         # the race carries the opposite couple: dissipation = couple x relative angular velocity
         PE = couple_power(cx, cr, ct, wx - Wx, wy - Wr, wz - Wt)
     return fx, fr, ft, mx, mr, mt, T1, T2, S0, U, FR, spin_roll, PT, PE
+
+
+@njit(cache=True, inline="always")
+def _sum_wrenches(a, b, c, d, e):
+    """Component sums a + b + c + d + e (left to right) of five wrenches (fx, fr, ft, mx, mr, mt)."""
+    return (a[0] + b[0] + c[0] + d[0] + e[0], a[1] + b[1] + c[1] + d[1] + e[1], a[2] + b[2] + c[2] + d[2] + e[2],
+            a[3] + b[3] + c[3] + d[3] + e[3], a[4] + b[4] + c[4] + d[4] + e[4], a[5] + b[5] + c[5] + d[5] + e[5])
+
+
+@njit(cache=True, inline="always")
+def _sum4_wrenches(a, b, c, d):
+    """Component sums a + b + c + d (left to right) of four wrenches (fx, fy, fz, mx, my, mz)."""
+    return (a[0] + b[0] + c[0] + d[0], a[1] + b[1] + c[1] + d[1], a[2] + b[2] + c[2] + d[2],
+            a[3] + b[3] + c[3] + d[3], a[4] + b[4] + c[4] + d[4], a[5] + b[5] + c[5] + d[5])
 
 
 @njit(cache=True, inline="always")
@@ -244,13 +228,15 @@ def ball_loop(y, P, qu, qw, ydot, contrib, aux, want_aux):
 def ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, pmode, pcache, rmode, rcache):
     """:func:`ball_loop` with the pocket wrench of each ball stored (``pmode`` 1) or reused (``pmode`` 2)
     in ``pcache`` (Z x 11): for Jacobian columns of states the pocket wrench does not depend on (the ring
-    states); ``pmode`` 0 computes it as :func:`ball_loop`.  Likewise ``rmode``/``rcache`` (Z x 12) for gravity
-    and the two race contacts (the ball's force and moment before the pocket, and its ring contribution),
-    which depend on ball and ring states and on the cage angle only: reused for the other 11 cage columns
-    (reuse needs ``want_aux`` False).  Cost only: the arithmetic is unchanged."""
-    Z = int(P[P_Z])
-    D2 = 0.5 * P[P_D]
-    m, I = P[P_MB], P[P_IB]
+    states); ``pmode`` 0 computes it as :func:`ball_loop`.  Likewise ``rmode``/``rcache`` (Z x 18) for the
+    two race contacts (columns 0-5 the inner wrench on the ball, 6-11 its ring contribution, 12-17 the outer
+    wrench), which depend on ball and ring states and on the cage angle only: reused for the other 11 cage
+    columns (reuse needs ``want_aux`` False).  Cost only: the arithmetic is unchanged.  Both couplings are
+    checked by tests/test_kernel_io.py::test_jacobian_reuse_couplings_hold."""
+    p = P[0]
+    Z = p.ball.Z
+    D2 = 0.5 * p.ball.D
+    m, I = p.ball.m_b, p.ball.I_b
     cg = 9 * Z
     xc, yc, zc, phc, psy, psz = y[cg], y[cg + 1], y[cg + 2], y[cg + 3], y[cg + 4], y[cg + 5]
     vxc, vyc, vzc, phd, psyd, pszd = y[cg + 6], y[cg + 7], y[cg + 8], y[cg + 9], y[cg + 10], y[cg + 11]
@@ -262,24 +248,24 @@ def ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, pmode, pcache, 
     wtx = Jm[1] * byd + Jm[2] * bzd  # tilting angular velocity J beta'
     wty = Jm[4] * byd + Jm[5] * bzd
     wtz = Jm[7] * byd + Jm[8] * bzd
-    wi, wo = P[P_WI], P[P_WO]
-    fric, damp = P[P_FRIC], P[P_DAMP]
-    hdm = 0.5 * P[P_DM]
+    wi, wo = p.race.omega_i, p.race.omega_o
+    fric = 1.0 if p.switches.friction else 0.0  # multiplies the friction coefficients
+    damp = 1.0 if p.switches.damping else 0.0  # multiplies the damping coefficients and film viscosity
+    hdm = 0.5 * p.ball.dm
     for j in range(Z):
         # state: u_b (radial displacement from the pitch circle), psi_b (angle from the pocket line)
         x, r, th = y[j], hdm + y[Z + j], phc + 2.0 * math.pi * j / Z + y[2 * Z + j]
         vx, vr, thd = y[3 * Z + j], y[4 * Z + j], y[5 * Z + j]
         wx, wy, wz = y[6 * Z + j], y[7 * Z + j], y[8 * Z + j]
         c, s = math.cos(th), math.sin(th)
-        # gravity along -Y (horizontal shaft): (0, -g, 0) in the ball frame is (0, -g cos th, g sin th)
-        Fx = 0.0
-        Fr = -m * P[P_GRAV] * c
-        Ft = m * P[P_GRAV] * s
-        Mx = Mr = Mt = 0.0
+        # Each action on the ball is a named wrench (force, moment about the ball centre) in the ball frame
+        # (x, r, t): gravity, inner, outer, pocket, drag; the balance below sums them (Eqs. 5-10).
+        # ---------------- gravity along -Y (horizontal shaft): (0, -g, 0) in the ball frame is (0, -g cos th, g sin th)
+        gravity = (0.0, -m * p.env.grav * c, m * p.env.grav * s, 0.0, 0.0, 0.0)
         if rmode == 2 and not want_aux:
-            # reuse: gravity and the race contacts depend on ball and ring states and on the cage angle only
-            Fx, Fr, Ft = rcache[j, 0], rcache[j, 1], rcache[j, 2]
-            Mx, Mr, Mt = rcache[j, 3], rcache[j, 4], rcache[j, 5]
+            # reuse: the race contacts depend on ball and ring states and on the cage angle only
+            inner = (rcache[j, 0], rcache[j, 1], rcache[j, 2], rcache[j, 3], rcache[j, 4], rcache[j, 5])
+            outer = (rcache[j, 12], rcache[j, 13], rcache[j, 14], rcache[j, 15], rcache[j, 16], rcache[j, 17])
             contrib[j, C_RFX], contrib[j, C_RFY], contrib[j, C_RFZ] = rcache[j, 6], rcache[j, 7], rcache[j, 8]
             contrib[j, C_RMY], contrib[j, C_RMZ], contrib[j, C_RMX] = rcache[j, 9], rcache[j, 10], rcache[j, 11]
             Qi = Qo = dlt = dltd = dlt_o = dltd_o = nxi = nri = nxo = nro = 0.0  # (auxiliary outputs only)
@@ -287,11 +273,11 @@ def ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, pmode, pcache, 
             PTi = PTo = PEi = PEo = tau_o = 0.0
         else:
             # ---------------- inner race contact (Eqs. 5-10, Q_i, T_i, F_R,i)
-            dX, dR, dT, vcX, vcR, vcT = inner_groove_centre(x, r, th, P[P_RHOI], P[P_GI], xi, yi, zi, Rm,
+            dX, dR, dT, vcX, vcR, vcT = inner_groove_centre(x, r, th, p.race.rho_i, p.race.g_i, xi, yi, zi, Rm,
                                                             vxi, vyi, vzi, wtx, wty, wtz)
-            dlt, nxi, nri, nti = groove_contact(dX, dR, dT, P[P_OFFI])
+            dlt, nxi, nri, nti = groove_contact(dX, dR, dT, p.race.off_i)
             dltd = nxi * (vcX - vx) + nri * (vcR - vr) + nti * (vcT - r * thd)
-            Qi = hertz_normal_load(dlt, dltd, P[P_KI], P[P_CDI] * damp)
+            Qi = hertz_normal_load(dlt, dltd, p.race.K_i, p.race.cd_i * damp)
             # inner ring kinematics in the ball frame
             rvx, rvr, rvt = vxi, vyi * c + vzi * s, -vyi * s + vzi * c
             ox, orr, ot = xi, yi * c + zi * s, -yi * s + zi * c
@@ -299,17 +285,12 @@ def ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, pmode, pcache, 
             Wsx, Wsy, Wsz = wi * Rm[0] + wtx, wi * Rm[3] + wty, wi * Rm[6] + wtz
             Wx, Wr, Wt = Wsx, Wsy * c + Wsz * s, -Wsy * s + Wsz * c
             (tfx, tfr, tft, tmx, tmr, tmt, Ti1, Ti2, Si, Ui, FRi, sri, PTi, PEi) = _race_contact(
-                P, qu, qw, Qi, nxi, nri, nti, x, r, vx, vr, thd, wx, wy, wz,
-                rvx, rvr, rvt, ox, orr, ot, Wx, Wr, Wt, P[P_RXI], P[P_KEI], P[P_ACI])
+                p, qu, qw, Qi, nxi, nri, nti, x, r, vx, vr, thd, wx, wy, wz,
+                rvx, rvr, rvt, ox, orr, ot, Wx, Wr, Wt, p.race.Rx_i, p.race.k_i, p.race.acoef_i)
             fbx = Qi * nxi + tfx  # force of the inner race on the ball (ball frame)
             fbr = Qi * nri + tfr
             fbt = Qi * nti + tft
-            Fx += fbx
-            Fr += fbr
-            Ft += fbt
-            Mx += tmx
-            Mr += tmr
-            Mt += tmt
+            inner = (fbx, fbr, fbt, tmx, tmr, tmt)  # normal load + traction, spin and EHL rolling couples
             # reaction on the inner ring: the opposite of the whole force system on the ball (normal load,
             # traction with its spin couple, EHL rolling couple), inertial frame, moment about the ring centre
             gx, gy, gz = -fbx, -(fbr * c - fbt * s), -(fbr * s + fbt * c)
@@ -322,22 +303,19 @@ def ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, pmode, pcache, 
             contrib[j, C_RMZ] = mrz
             contrib[j, C_RMX] = mrx
             # ---------------- outer race contact (fixed outer ring, speed wo about X)
-            dlt_o, nxo, nro, nto = groove_contact(P[P_GO] - x, P[P_RHOO] - r, 0.0, P[P_OFFO])
+            dlt_o, nxo, nro, nto = groove_contact(p.race.g_o - x, p.race.rho_o - r, 0.0, p.race.off_o)
             dltd_o = -nxo * vx - nro * vr
-            Qo = hertz_normal_load(dlt_o, dltd_o, P[P_KO], P[P_CDO] * damp)
+            Qo = hertz_normal_load(dlt_o, dltd_o, p.race.K_o, p.race.cd_o * damp)
             (tfx, tfr, tft, tmx, tmr, tmt, To1, To2, So, Uo, FRo, sro, PTo, PEo) = _race_contact(
-                P, qu, qw, Qo, nxo, nro, nto, x, r, vx, vr, thd, wx, wy, wz,
-                0.0, 0.0, 0.0, 0.0, 0.0, 0.0, wo, 0.0, 0.0, P[P_RXO], P[P_KEO], P[P_ACO])
-            Fx += Qo * nxo + tfx
-            Fr += Qo * nro + tfr
-            Ft += tft
-            Mx += tmx
-            Mr += tmr
-            Mt += tmt
+                p, qu, qw, Qo, nxo, nro, nto, x, r, vx, vr, thd, wx, wy, wz,
+                0.0, 0.0, 0.0, 0.0, 0.0, 0.0, wo, 0.0, 0.0, p.race.Rx_o, p.race.k_o, p.race.acoef_o)
+            outer = (Qo * nxo + tfx, Qo * nro + tfr, tft, tmx, tmr, tmt)  # (the outer normal has no t component)
             # moment about X through the origin of the outer-race actions on the ball: (b x F)_X = r F_t, plus M_x
             tau_o = r * tft + tmx
             if rmode == 1:
-                rcache[j, 0], rcache[j, 1], rcache[j, 2], rcache[j, 3], rcache[j, 4], rcache[j, 5] = Fx, Fr, Ft, Mx, Mr, Mt
+                for k in range(6):
+                    rcache[j, k] = inner[k]
+                    rcache[j, 12 + k] = outer[k]
                 rcache[j, 6], rcache[j, 7], rcache[j, 8] = contrib[j, C_RFX], contrib[j, C_RFY], contrib[j, C_RFZ]
                 rcache[j, 9], rcache[j, 10], rcache[j, 11] = contrib[j, C_RMY], contrib[j, C_RMZ], contrib[j, C_RMX]
         # ---------------- cage pocket (Q_c, P_S), inertial vectors; pocket axes turn and tilt with the cage
@@ -379,8 +357,8 @@ def ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, pmode, pcache, 
             Qf, Qs, Ppf, Ppb, PS = pcache[j, 6], pcache[j, 7], pcache[j, 8], pcache[j, 9], pcache[j, 10]
         else:
             (pFx, pFr, pFt, pMx, pMr, pMt, Qf, Qs, Ppf, Ppb, PS) = pocket_wrench(
-                dxp, dtp, drp, ddx, ddr, ddt, wpx, wpr, wpt, P[P_ETAF] * damp, D2, D2 + P[P_CP], P[P_RBOREC],
-                P[P_RLAND], hdm, int(P[P_NPOCKET]), P[P_HMIN], P[P_KC], P[P_MUC] * fric, P[P_V0C])
+                dxp, dtp, drp, ddx, ddr, ddt, wpx, wpr, wpt, p.lubricant.eta_film * damp, D2, D2 + p.pocket.c_p, p.pocket.R_bore_c,
+                p.pocket.R_out_c, hdm, p.pocket.n_pocket, p.pocket.h_min, p.pocket.K_c, p.pocket.mu_c * fric, p.pocket.v0_c)
             if pmode == 1:
                 pcache[j, 0], pcache[j, 1], pcache[j, 2], pcache[j, 3] = pFx, pFr, pFt, pMx
                 pcache[j, 4], pcache[j, 5], pcache[j, 6], pcache[j, 7] = pMr, pMt, Qf, Qs
@@ -394,12 +372,7 @@ def ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, pmode, pcache, 
         mbz = pMx * ex_z + pMr * er_z + pMt * et_z
         Qc = math.sqrt(pFx * pFx + pFt * pFt)  # pocket force on the ball in the pocket plane
         # to the ball frame
-        Fx += gx_
-        Fr += gy_ * c + gz_ * s
-        Ft += -gy_ * s + gz_ * c
-        Mx += mbx
-        Mr += mby * c + mbz * s
-        Mt += -mby * s + mbz * c
+        pocket = (gx_, gy_ * c + gz_ * s, -gy_ * s + gz_ * c, mbx, mby * c + mbz * s, -mby * s + mbz * c)
         # reaction on the cage: the opposite wrench on the same line of action (through the ball
         # centre b), moment about the cage centre -(M + (b - c) x F): force and moment closed exactly
         Xx, Xy, Xz = bx_ - xc, by_ - yc, bz_ - zc
@@ -412,26 +385,29 @@ def ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, pmode, pcache, 
         contrib[j, C_CMZ] = -(mbz + mcz)
         # ---------------- drag in the air-oil mixture (F_D, Eq. 7)
         FD = 0.0
-        if P[P_DRAG] > 0.0:
-            FD = ball_drag_force(r * thd, P[P_D], P[P_RHOE], P[P_CDRAG], P[P_V0D])
-            Ft += FD
+        if p.switches.drag:
+            FD = ball_drag_force(r * thd, p.ball.D, p.drag.rho_e, p.drag.C_D, p.drag.v0_D)
+        drag = (0.0, 0.0, FD, 0.0, 0.0, 0.0)  # circumferential, through the ball centre
         if want_aux:
             # ---------------- dissipated power by source (models.power) and stored elastic energy
-            Kdi = P[P_KI] * dlt * math.sqrt(dlt) if dlt > 0.0 else 0.0
-            Kdo = P[P_KO] * dlt_o * math.sqrt(dlt_o) if dlt_o > 0.0 else 0.0
-            aux[j, 19] = PTi
-            aux[j, 20] = PTo
-            aux[j, 21] = PEi
-            aux[j, 22] = PEo
-            aux[j, 23] = normal_damping_power(Qi, Kdi, dltd)
-            aux[j, 24] = normal_damping_power(Qo, Kdo, dltd_o)
-            aux[j, 25] = Ppf  # pocket film: entraining shear + squeeze (models.pocket.pocket_film_power)
-            aux[j, 26] = Ppb  # pocket boundary friction P_S x sliding speed
-            aux[j, 27] = sliding_power(0.0, 0.0, FD, 0.0, 0.0, r * thd)  # mixture at rest
-            aux[j, 28] = (elastic_energy_hertz(P[P_KI], dlt) + elastic_energy_hertz(P[P_KO], dlt_o)
-                          + (0.4 * Qs * (Qs / P[P_KC]) ** (2.0 / 3.0) if Qs > 0.0 else 0.0))  # pocket Hertz part
-            aux[j, 29] = tau_o
-        # ---------------- equations of motion (Eqs. 5-10)
+            Kdi = p.race.K_i * dlt * math.sqrt(dlt) if dlt > 0.0 else 0.0
+            Kdo = p.race.K_o * dlt_o * math.sqrt(dlt_o) if dlt_o > 0.0 else 0.0
+            aux[j, AUX.P_trac_i] = PTi
+            aux[j, AUX.P_trac_o] = PTo
+            aux[j, AUX.P_ehl_i] = PEi
+            aux[j, AUX.P_ehl_o] = PEo
+            aux[j, AUX.P_damp_i] = normal_damping_power(Qi, Kdi, dltd)
+            aux[j, AUX.P_damp_o] = normal_damping_power(Qo, Kdo, dltd_o)
+            aux[j, AUX.P_pocket_film] = Ppf  # pocket film: entraining shear + squeeze (models.pocket.pocket_film_power)
+            aux[j, AUX.P_pocket_boundary] = Ppb  # pocket boundary friction P_S x sliding speed
+            aux[j, AUX.P_drag] = sliding_power(0.0, 0.0, FD, 0.0, 0.0, r * thd)  # mixture at rest
+            aux[j, AUX.U_el] = (elastic_energy_hertz(p.race.K_i, dlt) + elastic_energy_hertz(p.race.K_o, dlt_o)
+                          + (0.4 * Qs * (Qs / p.pocket.K_c) ** (2.0 / 3.0) if Qs > 0.0 else 0.0))  # pocket Hertz part
+            aux[j, AUX.tau_o] = tau_o
+        # ---------------- ball balance (Eqs. 5-10): forces (Eqs. 5-7) and moments about the ball centre (Eqs. 8-10)
+        # F = gravity + Q_i n_i + T_i + Q_o n_o + T_o + pocket (Q_c, P_S) + F_D;  M = race couples (traction spin,
+        # EHL rolling F_R) + pocket moment.  The sum is taken left to right in this order.
+        Fx, Fr, Ft, Mx, Mr, Mt = _sum_wrenches(gravity, inner, outer, pocket, drag)
         xdd, rdd, thdd, wxd, wyd, wzd = ball_equations_of_motion(Fx, Fr, Ft, Mx, Mr, Mt, r, vr, thd, wy, wz, m, I)
         ydot[j] = vx
         ydot[Z + j] = vr
@@ -443,27 +419,27 @@ def ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, pmode, pcache, 
         ydot[7 * Z + j] = wyd
         ydot[8 * Z + j] = wzd
         if want_aux:
-            aux[j, 0] = Qi
-            aux[j, 1] = Qo
-            aux[j, 2] = math.atan2(nxi, nri)
-            aux[j, 3] = math.atan2(-nxo, -nro)
-            aux[j, 4] = Ti1
-            aux[j, 5] = Ti2
-            aux[j, 6] = To1
-            aux[j, 7] = To2
-            aux[j, 8] = Si
-            aux[j, 9] = So
-            aux[j, 10] = Ui
-            aux[j, 11] = Uo
-            aux[j, 12] = Qc
-            aux[j, 13] = PS
-            aux[j, 14] = FRi
-            aux[j, 15] = FRo
-            aux[j, 16] = FD
-            aux[j, 17] = sri
-            aux[j, 18] = sro
-            aux[j, 30] = Qf
-            aux[j, 31] = Qs
+            aux[j, AUX.Q_i] = Qi
+            aux[j, AUX.Q_o] = Qo
+            aux[j, AUX.alpha_i] = math.atan2(nxi, nri)
+            aux[j, AUX.alpha_o] = math.atan2(-nxo, -nro)
+            aux[j, AUX.T_roll_i] = Ti1
+            aux[j, AUX.T_trans_i] = Ti2
+            aux[j, AUX.T_roll_o] = To1
+            aux[j, AUX.T_trans_o] = To2
+            aux[j, AUX.S_i] = Si
+            aux[j, AUX.S_o] = So
+            aux[j, AUX.U_i] = Ui
+            aux[j, AUX.U_o] = Uo
+            aux[j, AUX.Q_c] = Qc
+            aux[j, AUX.P_S] = PS
+            aux[j, AUX.F_R_i] = FRi
+            aux[j, AUX.F_R_o] = FRo
+            aux[j, AUX.F_D] = FD
+            aux[j, AUX.spin_roll_i] = sri
+            aux[j, AUX.spin_roll_o] = sro
+            aux[j, AUX.Q_film] = Qf
+            aux[j, AUX.Q_solid] = Qs
 
 
 @njit(cache=True)
@@ -481,43 +457,44 @@ def guide_land_loads(y, P, Rc, wcx, wcy, wcz):
     reaction moment about X on the land's ring [N m] (inner guidance, else 0), dissipated power [W],
     elastic energy of the rub [J]).
     """
-    Z = int(P[P_Z])
+    p = P[0]
+    Z = p.ball.Z
     cg = 9 * Z
     rg = cg + 12
-    nl = int(P[P_NLAND])
+    nl = p.land.n_land
     Fly = Flz = Mlx = Mtx = Mty = Mtz = Mring = Pland = Uland = 0.0
     if nl <= 0:
         return Fly, Flz, Mlx, Mtx, Mty, Mtz, Mring, Pland, Uland
     yc, zc, vyc, vzc, phd = y[cg + 1], y[cg + 2], y[cg + 7], y[cg + 8], y[cg + 9]
-    if P[P_GUIDE] == 2.0:  # inner ring: land centre = ring centre, land speed = ring speed
-        yr, zr, vyr, vzr, wl = y[rg + 1], y[rg + 2], y[rg + 6], y[rg + 7], P[P_WI]
+    if p.land.guide == GUIDE_INNER_RING:  # inner ring: land centre = ring centre, land speed = ring speed
+        yr, zr, vyr, vzr, wl = y[rg + 1], y[rg + 2], y[rg + 6], y[rg + 7], p.race.omega_i
     else:
-        yr, zr, vyr, vzr, wl = 0.0, 0.0, 0.0, 0.0, P[P_WO]
-    cl = P[P_CLAND]
-    R = P[P_RLAND]
-    Kl = P[P_KLAND] / nl  # the rub stiffness is shared by the lands (unchanged for an untilted cage)
+        yr, zr, vyr, vzr, wl = 0.0, 0.0, 0.0, 0.0, p.race.omega_o
+    cl = p.land.c_land
+    R = p.land.R_land
+    Kl = p.land.K_land / nl  # the rub stiffness is shared by the lands (unchanged for an untilted cage)
     ex, ey, ez = Rc[0], Rc[3], Rc[6]
     ew = ex * wcx + ey * wcy + ez * wcz  # cage angular velocity along its axis
     for k in range(nl):
-        a = P[P_ALAND] if k == 0 else -P[P_ALAND]
+        a = p.land.a_land if k == 0 else -p.land.a_land
         py = yc + a * ey - yr
         pz = zc + a * ez - zr
         vy = vyc + a * (wcz * ex - wcx * ez) - vyr
         vz = vzc + a * (wcx * ey - wcy * ex) - vzr
-        e = math.sqrt(py * py + pz * pz + (P[P_EEPS] * 1e-2) ** 2)
+        e = math.sqrt(py * py + pz * pz + p.land.offset_eps ** 2)
         uy, uz = py / e, pz / e
         ed = (py * vy + pz * vz) / e
         whirl = (py * vz - pz * vy) / (e * e)
-        eps = smooth_eccentricity(e / cl, P[P_EPSMAX])
+        eps = smooth_eccentricity(e / cl, p.land.eps_max)
         fy = fz = mx = 0.0
-        if P[P_DAMP] > 0.0:
-            Fr, Ft = guide_land_forces(eps, ed / cl, phd + wl, whirl, P[P_ETAF], R, P[P_LLAND], cl)
+        if p.switches.damping:
+            Fr, Ft = guide_land_forces(eps, ed / cl, phd + wl, whirl, p.lubricant.eta_film, R, p.land.L_land, cl)
             fy = Fr * uy - Ft * uz
             fz = Fr * uz + Ft * uy
         else:
             Fr = Ft = 0.0
-        if P[P_FRIC] > 0.0:
-            mx = guide_land_torque(eps, phd - wl, P[P_ETAF], R, P[P_LLAND], cl)
+        if p.switches.friction:
+            mx = guide_land_torque(eps, phd - wl, p.lubricant.eta_film, R, p.land.L_land, cl)
         # film dissipation: the Petroff moment acts along the cage axis e, so its power uses e.omega_c on
         # the cage and e_x omega_land on the land (exact for a tilted cage, as the cage equations use it)
         Pland += guide_land_power(Fr, Ft, e, ed, whirl, 0.0, 0.0, wl) - mx * (ew - wl * ex)
@@ -529,14 +506,14 @@ def guide_land_loads(y, P, Rc, wcx, wcy, wcz):
             Uland += 0.4 * Kl * pen * pen * math.sqrt(pen)  # elastic energy 2/5 K pen^2.5
             fy -= Fe * uy
             fz -= Fe * uz
-            if P[P_FRIC] > 0.0:
+            if p.switches.friction:
                 # sliding speed of the cage surface on the land: tangential speed of the axis point relative to
                 # the land material there (omega_land e), plus the cage's spin relative to the land times R
                 # The contact is on the +u side of the cage (outer-ring guidance: its outside diameter on the ring
                 # land) or on its -u side (inner-ring guidance: the cage bore on the ring land), sgn = +1 / -1
-                sgn = -1.0 if P[P_GUIDE] == 2.0 else 1.0
+                sgn = -1.0 if p.land.guide == GUIDE_INNER_RING else 1.0
                 vt = -vy * uz + vz * uy - wl * e + sgn * (ew - wl * ex) * R
-                ff = -Fe * pocket_friction_factor(vt, P[P_MUC], P[P_V0C]) * vt
+                ff = -Fe * pocket_friction_factor(vt, p.pocket.mu_c, p.pocket.v0_c) * vt
                 fy += -ff * uz
                 fz += ff * uy
                 mx += sgn * ff * R
@@ -549,7 +526,7 @@ def guide_land_loads(y, P, Rc, wcx, wcy, wcz):
         Mtx += a * (ey * fz - ez * fy)
         Mty += -a * ex * fz
         Mtz += a * ex * fy
-    if P[P_GUIDE] != 2.0:
+    if p.land.guide != GUIDE_INNER_RING:
         Mring = 0.0
     return Fly, Flz, Mlx, Mtx, Mty, Mtz, Mring, Pland, Uland
 
@@ -557,27 +534,32 @@ def guide_land_loads(y, P, Rc, wcx, wcy, wcz):
 @njit(cache=True)
 def global_rows(y, P, csum, ydot, gaux):
     """Cage and inner-ring rows of ydot from the summed ball contributions ``csum`` (Eqs. 11-21)."""
-    Z = int(P[P_Z])
+    p = P[0]
+    Z = p.ball.Z
     cg = 9 * Z
     rg = cg + 12
     yc, zc = y[cg + 1], y[cg + 2]
     phd, psyd, pszd = y[cg + 9], y[cg + 10], y[cg + 11]
     Rc, (wcx, wcy, wcz), Jc = cage_orientation(y[cg + 3], y[cg + 4], y[cg + 5], phd, psyd, pszd)
     Fly, Flz, Mlx, Mtx, Mty, Mtz, Mring, Pland, Uland = guide_land_loads(y, P, Rc, wcx, wcy, wcz)
-    inner_guided = P[P_GUIDE] == 2.0
-    gaux[0] = Fly
-    gaux[1] = Flz
-    gaux[2] = Mlx
-    gaux[3] = csum[C_RMX] + Mring
+    inner_guided = p.land.guide == GUIDE_INNER_RING
+    gaux[GAUX.F_cy] = Fly
+    gaux[GAUX.F_cz] = Flz
+    gaux[GAUX.M_cx] = Mlx
+    gaux[GAUX.ring_torque] = csum[C_RMX] + Mring
     # land dissipation (film + rub friction, models.cage.guide_land_power), elastic rub energy, and the moment
     # about X (through the origin) of the land actions on the cage: c x F + the lands' offsets + Petroff torque
-    gaux[6] = Pland
-    gaux[7] = Uland
-    gaux[8] = yc * Flz - zc * Fly + Mtx + Mlx * Rc[0]
-    Qph, Qpy, Qpz = cage_generalised_moments(csum[C_CMX] + Mlx * Rc[0] + Mtx, csum[C_CMY] + Mlx * Rc[3] + Mty,
-                                             csum[C_CMZ] + Mlx * Rc[6] + Mtz, Rc, Jc)
-    a = cage_equations_of_motion(csum[C_CFX], csum[C_CFY] + Fly - P[P_MC] * P[P_GRAV], csum[C_CFZ] + Flz, Qph,
-                                 Qpy, Qpz, phd, psyd, pszd, P[P_MC], P[P_IPC], P[P_IDC])
+    gaux[GAUX.P_guide_land] = Pland
+    gaux[GAUX.U_land] = Uland
+    gaux[GAUX.land_torque_x] = yc * Flz - zc * Fly + Mtx + Mlx * Rc[0]
+    # ---------------- cage balance (Eqs. 11-16): named wrenches, inertial axes, moments about the cage centre
+    pockets = (csum[C_CFX], csum[C_CFY], csum[C_CFZ], csum[C_CMX], csum[C_CMY], csum[C_CMZ])  # reactions of the balls
+    land = (0.0, Fly, Flz, Mlx * Rc[0], Mlx * Rc[3], Mlx * Rc[6])  # land films + rub; axial moment along the cage axis
+    land_offset = (0.0, 0.0, 0.0, Mtx, Mty, Mtz)  # moment of the land forces applied at the lands' axial offsets
+    gravity_c = (0.0, -p.cage.m_c * p.env.grav, 0.0, 0.0, 0.0, 0.0)
+    Fcx, Fcy, Fcz, Mcx, Mcy, Mcz = _sum4_wrenches(pockets, land, land_offset, gravity_c)
+    Qph, Qpy, Qpz = cage_generalised_moments(Mcx, Mcy, Mcz, Rc, Jc)
+    a = cage_equations_of_motion(Fcx, Fcy, Fcz, Qph, Qpy, Qpz, phd, psyd, pszd, p.cage.m_c, p.cage.Ip_c, p.cage.Id_c)
     for k in range(6):
         ydot[cg + k] = y[cg + 6 + k]
         ydot[cg + 6 + k] = a[k]
@@ -585,17 +567,23 @@ def global_rows(y, P, csum, ydot, gaux):
     # drive: the moment along the ring's own axis e = R e_x that holds the prescribed spin against the
     # ball actions and the external moment; its power at the ring's angular velocity omega_i e + J beta'
     ex, ey, ez = Rm[0], Rm[3], Rm[6]
-    Td = -((csum[C_RMX] + Mring) * ex + (P[P_MY] + csum[C_RMY]) * ey + (P[P_MZ] + csum[C_RMZ]) * ez)
+    Td = -((csum[C_RMX] + Mring) * ex + (p.ring.M_y + csum[C_RMY]) * ey + (p.ring.M_z + csum[C_RMZ]) * ez)
     byd, bzd = y[rg + 8], y[rg + 9]
-    we = P[P_WI] + ex * (Jm[1] * byd + Jm[2] * bzd) + ey * (Jm[4] * byd + Jm[5] * bzd) + ez * (Jm[7] * byd + Jm[8] * bzd)
-    gaux[4] = Td
-    gaux[5] = Td * we
-    Qy, Qz = tilt_generalised_moments(csum[C_RMX], P[P_MY] + csum[C_RMY], P[P_MZ] + csum[C_RMZ], Rm, Jm)
+    we = p.race.omega_i + ex * (Jm[1] * byd + Jm[2] * bzd) + ey * (Jm[4] * byd + Jm[5] * bzd) + ez * (Jm[7] * byd + Jm[8] * bzd)
+    gaux[GAUX.drive_torque] = Td
+    gaux[GAUX.P_drive] = Td * we
+    # ---------------- inner-ring balance (Eqs. 17-21): named wrenches, inertial axes, moments about the ring centre
     Rly = Rlz = 0.0
     if inner_guided:  # the land film's reaction on the inner ring (its moment about the ring centre is neglected)
         Rly, Rlz = -Fly, -Flz
-    b = ring_equations_of_motion(P[P_FX] + csum[C_RFX], P[P_FY] + csum[C_RFY] + Rly - P[P_MI] * P[P_GRAV], P[P_FZ] + csum[C_RFZ] + Rlz,
-                                 Qy, Qz, P[P_WI], y[rg + 8], y[rg + 9], P[P_MI], P[P_IPI], P[P_IDI])
+    loads = (p.ring.F_x, p.ring.F_y, p.ring.F_z, 0.0, p.ring.M_y, p.ring.M_z)  # external loads and moments
+    balls = (csum[C_RFX], csum[C_RFY], csum[C_RFZ], csum[C_RMX], csum[C_RMY], csum[C_RMZ])  # inner-race reactions
+    land_reaction = (0.0, Rly, Rlz, 0.0, 0.0, 0.0)
+    gravity_i = (0.0, -p.ring.m_i * p.env.grav, 0.0, 0.0, 0.0, 0.0)
+    Fix, Fiy, Fiz, Mix, Miy, Miz = _sum4_wrenches(loads, balls, land_reaction, gravity_i)
+    Qy, Qz = tilt_generalised_moments(Mix, Miy, Miz, Rm, Jm)
+    b = ring_equations_of_motion(Fix, Fiy, Fiz, Qy, Qz, p.race.omega_i, y[rg + 8], y[rg + 9], p.ring.m_i, p.ring.Ip_i,
+                                 p.ring.Id_i)
     for k in range(5):
         ydot[rg + k] = y[rg + 5 + k]
         ydot[rg + 5 + k] = b[k]
@@ -605,7 +593,8 @@ def global_rows(y, P, csum, ydot, gaux):
 def summed_global_rows(y, P, contrib, csum, ydot, gaux):
     """Sum the balls' contributions to the cage and ring loads over the balls (``csum``, one entry per
     ``C_*`` column of ``contrib``) and evaluate the cage and ring rows of ``ydot`` (:func:`global_rows`)."""
-    Z = int(P[P_Z])
+    p = P[0]
+    Z = p.ball.Z
     for k in range(N_CONTRIB):
         acc = 0.0
         for j in range(Z):
@@ -640,7 +629,8 @@ def jac_kernel(y, P, qu, qw, J, hscale, work):
     hscale : per-state typical magnitudes (the perturbation is
     sqrt(eps) max(|y|, hscale)); work : scratch array of length >= 4 N.
     """
-    Z = int(P[P_Z])
+    p = P[0]
+    Z = p.ball.Z
     N = y.size
     nb = 9 * Z
     f0 = work[0:N]
@@ -659,13 +649,14 @@ def jac_kernel(y, P, qu, qw, J, hscale, work):
     for i in range(N):
         h[i] = sq * max(abs(y[i]), hscale[i])
     pc = np.empty((Z, 11))  # pocket wrench at y, reused for the ring columns (it does not depend on them)
-    rc = np.empty((Z, 12))  # gravity + race contacts at y, reused for the cage columns but the cage angle
+    rc = np.empty((Z, 18))  # race contacts at y (inner wrench, ring contribution, outer wrench), reused for the
+    # cage columns but the cage angle
     ball_loop_cached(y, P, qu, qw, f0, c0, aux, False, 1, pc, 1, rc)
     summed_global_rows(y, P, c0, csum, f0, gaux)
     cg = nb
     rg = nb + 12
-    inv_c = (1.0 / P[P_MC], 1.0 / P[P_MC], 1.0 / P[P_MC], 1.0 / P[P_IPC], 1.0 / P[P_IDC], 1.0 / P[P_IDC])
-    inv_r = (1.0 / P[P_MI], 1.0 / P[P_MI], 1.0 / P[P_MI], 1.0 / P[P_IDI], 1.0 / P[P_IDI])
+    inv_c = (1.0 / p.cage.m_c, 1.0 / p.cage.m_c, 1.0 / p.cage.m_c, 1.0 / p.cage.Ip_c, 1.0 / p.cage.Id_c, 1.0 / p.cage.Id_c)
+    inv_r = (1.0 / p.ring.m_i, 1.0 / p.ring.m_i, 1.0 / p.ring.m_i, 1.0 / p.ring.Id_i, 1.0 / p.ring.Id_i)
     ccols = (C_CFX, C_CFY, C_CFZ, C_CMX, C_CMY, C_CMZ)
     rcols = (C_RFX, C_RFY, C_RFZ, C_RMY, C_RMZ)
     Rm, Jm = tilt_rotation(y[rg + 3], y[rg + 4])
