@@ -22,7 +22,7 @@ from hsbearing.errors import Interrupted, SolverError
 from hsbearing.models import hertz
 from hsbearing.models import kernel as K
 from hsbearing.models.ball import strip_load_weights
-from hsbearing.models.drag import mixture_density
+from hsbearing.models.drag import cavity_oil_fraction, mixture_density
 from hsbearing.models.geometry import curvature_radii, derive
 from hsbearing.models.state import StateLayout
 
@@ -210,7 +210,9 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
         friction=1.0 if friction else 0.0, damping=1.0 if damping else 0.0, dm=dm,
         c_p=g.pocket_clearance, K_c=float(cc.K), eta_film=eta, Rsq_c=Rb * Rb, h_min=opt["pocket_film_min"],
         mu_c=case.friction.cage_coefficient, v0_c=opt["pocket_v0"],
-        rho_e=mixture_density(case.lubricant.density, case.lubricant.oil_volume_fraction),
+        rho_e=mixture_density(case.lubricant.density, cavity_oil_fraction(
+            case.lubricant.oil_volume_fraction, case.lubricant.oil_flow_rate, op.inner_speed - op.outer_speed, dm,
+            case.lubricant.lubrication)[0]),
         C_D=opt["drag_coefficient"], v0_D=opt["drag_v0"],
         m_c=g.cage_mass, Ip_c=g.cage_axial_inertia, Id_c=g.cage_diametral_inertia,
         R_land=lands.radius, L_land=lands.width, c_land=lands.clearance,
