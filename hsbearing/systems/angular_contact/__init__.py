@@ -68,6 +68,17 @@ def friction_command(case, args) -> int:
                 f"{ds.skf_rolling_torque.values[i] * 1e3:14.4g}", f"{ds.skf_sliding_torque.values[i] * 1e3:14.4g}",
                 f"{ds.skf_total_torque.values[i] * 1e3:14.4g}", f"{ds.skf_total_torque.values[i] * abs(wi):14.4g}"]
         print("  ".join(row))
+    print("split of both totals into the SKF terms [W] (ours: rolling = ehl_rolling + contact_damping; sliding = "
+          "race_traction + pocket_film + pocket_boundary + guide_land; drag = ball drag; seals: none modelled)")
+    print("  ".join(f"{h:>14s}" for h in ["n [r/min]", "model", "rolling", "sliding", "drag", "seal", "total"]))
+    for i, wi in enumerate(ds["speed"].values):
+        for label, pre, tot in (("ours", "qs_power_as_skf_", ds.qs_power_loss.values[i]),
+                                ("SKF 2004", "skf_power_", ds.skf_total_torque.values[i] * abs(wi))):
+            print("  ".join([f"{_rpm(wi):14.0f}", f"{label:>14s}"] + [f"{ds[pre + t].values[i]:14.4g}" for t in
+                                                                      ("rolling", "sliding", "drag", "seal")] + [f"{tot:14.4g}"]))
+    X, Re = ds["cavity_oil_fraction"].values, ds["drag_reynolds_number"].values
+    print(f"drag: cavity oil fraction {', '.join(f'{x:.4g}' for x in X)} ({ds.attrs.get('cavity_oil_fraction_source', '')}); "
+          f"ball Reynolds number {', '.join(f'{r:.3g}' for r in Re)} (C_D = 0.5 is the sphere's value for 1e3 < Re < 2e5)")
     print("note: " + _NOTE_QS)
     print("note: " + _NOTE_SKF)
     if case.friction.law == "coulomb":
