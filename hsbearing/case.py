@@ -229,8 +229,8 @@ SCHEMA: dict[str, dict[str, Field]] = {
         "oil_inlet_temperature": _f("temperature", "oil supply temperature (default: lubricant.temperature)"),
         "oil_specific_heat": _f("specific_heat", "oil specific heat c_p (default 2000 J/(kg K): synthetic ester "
                                 "aviation oils, 1.9-2.1 kJ/(kg K) at 100-150 degC)", default="2000 J/(kg*K)", positive=True),
-        "oil_thermal_conductivity": _f("thermal_conductivity", "oil thermal conductivity (default 0.14 W/(m K): esters and "
-                                       "mineral oils 0.13-0.15)", default="0.14 W/(m*K)", positive=True),
+        "oil_thermal_conductivity": _f("thermal_conductivity", "oil thermal conductivity (default: the oil's K of the traction "
+                                       "model, Zhang et al. 2016 Table 1: 0.0966 W/(m K) for 4109)", positive=True),
         "steel_thermal_conductivity": _f("thermal_conductivity", "rings, balls and shaft (default 42 W/(m K): AISI 52100 / "
                                          "GCr15, 40-46)", default="42 W/(m*K)", positive=True),
         "housing_thermal_conductivity": _f("thermal_conductivity", "housing (default 50 W/(m K): carbon steel)",

@@ -337,6 +337,13 @@ def cmd_friction(args) -> int:
     return system.friction(case, args)
 
 
+def cmd_thermal(args) -> int:
+    from hsbearing import thermal
+
+    _check_output_option(args)
+    return thermal.thermal_cli(args)
+
+
 def cmd_life(args) -> int:
     from hsbearing import rating
 
@@ -495,6 +502,12 @@ def build_parser() -> argparse.ArgumentParser:
                                                    "(default: 500,5000,15000rpm deep groove; the case speed angular contact)")
     sp.add_argument("-o", "--output", help="netCDF archive")
     sp.set_defaults(func=cmd_friction)
+
+    sp = sub.add_parser("thermal", help="steady thermal network (rings, balls, cage, oil, housing, shaft) at the "
+                                        "quasi-static power loss, iterated with the lubricant temperature (docs/thermal.md)")
+    with_case(sp, optional=False, examples=", e.g. zhang2016")
+    sp.add_argument("-o", "--output", help="netCDF archive")
+    sp.set_defaults(func=cmd_thermal)
 
     sp = sub.add_parser("life", help="ISO 281 rating life and ISO/TS 16281 reference life of a radial ball-bearing case")
     with_case(sp, optional=False, examples=", e.g. zhang2016")

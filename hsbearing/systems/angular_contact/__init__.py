@@ -96,7 +96,10 @@ def friction_command(case, args) -> int:
 
 
 def archive_kind(ds) -> str | None:
-    """``"run"`` (a time series) or ``"quasistatic"`` (per-ball contact loads): the fallback kinds, asked last."""
+    """``"thermal"`` (a thermal network), ``"run"`` (a time series) or ``"quasistatic"`` (per-ball contact loads):
+    the fallback kinds, asked last."""
+    if ds.attrs.get("archive_kind") == "thermal" or "node_temperature" in ds:
+        return "thermal"
     if "time" in ds.dims:
         return "run"
     if "inner_contact_load" in ds or "outer_contact_load" in ds:
@@ -116,8 +119,15 @@ def _plot_quasistatic(ds, path):
     return plot_quasistatic(ds, path)
 
 
+def _plot_thermal(ds, path):
+    from hsbearing.systems.angular_contact.thermal_figure import plot_thermal
+
+    return plot_thermal(ds, path)
+
+
 def _register_outputs():
     import hsbearing.analysis.orbit  # noqa: F401 - the run summary variables
+    import hsbearing.thermal  # noqa: F401 - the thermal network variables
 
 
 SYSTEM = System(
@@ -125,5 +135,6 @@ SYSTEM = System(
     description="angular-contact ball bearing: 6-DOF dynamics with cage (Zhang et al. 2016), quasi-static equilibrium",
     friction=friction_command, simulate=simulate, build_model=build_model, summary_lines=summary_lines,
     run_summary=run_summary, archive_kind=archive_kind, fallback=True,
-    figures={"run": _plot_dynamic, "quasistatic": _plot_quasistatic}, register_outputs=_register_outputs,
+    figures={"run": _plot_dynamic, "quasistatic": _plot_quasistatic, "thermal": _plot_thermal},
+    register_outputs=_register_outputs,
 )
