@@ -157,6 +157,14 @@ def cmd_run(args) -> int:
     if getattr(args, "continue_from", None):
         return _cmd_continue(args)
     case = _load(args)
+    if getattr(args, "thermal", False):  # start at the thermal equilibrium's lubricant temperature (docs/thermal.md)
+        from hsbearing.thermal import thermal_equilibrium
+
+        th = thermal_equilibrium(case)
+        T = float(th.lubricant_temperature)
+        print(f"thermal equilibrium: lubricant temperature {T - 273.15:.3f} degC (oil outlet "
+              f"{float(th.oil_outlet_temperature) - 273.15:.3f} degC, {float(th.heat_generated):.4g} W); the run uses it")
+        case = case.with_overrides(**{"lubricant.temperature": f"{T} K"})
     duration = _duration_arg(args.duration)
     if duration is not None:
         check_output_samples(case, duration, source="--duration", key="duration")
@@ -415,6 +423,8 @@ def build_parser() -> argparse.ArgumentParser:
     sp.add_argument("--no-figure", "--no-plot", dest="no_plot", action="store_true",
                     help="do not draw the PNG figure (--no-plot is the older spelling)")
     sp.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
+    sp.add_argument("--thermal", action="store_true", help="solve the thermal network first (hsbearing thermal) and run "
+                    "at its lubricant temperature (traction and viscosity); needs lubricant.oil_flow_rate")
     sp.add_argument("--continue", dest="continue_from", metavar="ARCHIVE.nc",
                     help="extend the run in ARCHIVE.nc from its last state by --duration (default: to the duration "
                          "it was started with, e.g. after Ctrl-C); written back to ARCHIVE.nc unless -o")
