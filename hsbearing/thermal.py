@@ -38,7 +38,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from hsbearing.results import make_dataset, register, standard_attrs
+from hsbearing.results import make_dataset, register, register_attr_units, standard_attrs
 
 __all__ = ["NODES", "Network", "solve_network", "cylinder_resistance", "constriction_resistance", "fin_conductance",
            "rotating_cylinder_h", "harris_oil_h", "bearing_network", "heat_by_body", "thermal_equilibrium",
@@ -333,6 +333,14 @@ _SRC = ("race_traction_inner", "race_traction_outer", "ehl_rolling_inner", "ehl_
         "contact_damping_outer", "pocket_film", "pocket_boundary", "guide_land", "drag")
 for _s in _SRC:
     register(f"thermal_power_loss_{_s}", (), "W", f"quasi-static power loss {_s} at the thermal equilibrium")
+_ATTR_UNITS = {"network_residual_W": "W", "network_G_ball_inner": "W/K", "network_G_ball_outer": "W/K",
+               "network_R_inner_ring": "K/W", "network_R_outer_ring": "K/W", "network_R_housing": "K/W",
+               "network_h_shaft": "W/(m^2*K)", "network_G_shaft": "W/K", "network_G_housing": "W/K",
+               "network_oil_heat_capacity_rate": "W/K", "network_gamma": "1",
+               **{f"network_{k}": "m" for k in ("D", "dm", "B", "d", "Do", "DH", "BH", "Ls")},
+               **{f"network_{k}": "m^2" for k in ("A_ir", "A_or", "A_balls", "A_cage", "A_housing")}}
+for _a, _u in _ATTR_UNITS.items():
+    register_attr_units(_a, _u)
 
 
 def thermal_equilibrium(case, *, progress=None):

@@ -100,3 +100,24 @@ def test_thermal_needs_a_flow():
     case = load_case("zhang2016", **{"lubricant.oil_flow_rate": "0 L/min"})
     with pytest.raises(CaseError, match="oil_flow_rate"):
         thermal_equilibrium(case)
+
+
+def test_run_thermal_starts_at_the_equilibrium_temperature(monkeypatch, capsys, tmp_path):
+    """hsbearing run --thermal hands the dynamics the case at the thermal equilibrium's lubricant temperature."""
+    import hsbearing
+
+    seen = {}
+
+    class Stop(Exception):
+        pass
+
+    def fake_simulate(case, **kw):
+        seen["T"] = case.lubricant.temperature
+        raise Stop
+
+    monkeypatch.setattr(hsbearing, "simulate", fake_simulate)
+    with pytest.raises(Stop):
+        cli.main(["run", "zhang2016", "--thermal", "--duration", "1ms", "-o", str(tmp_path / "r.nc"), "-q", "--no-figure"])
+    out = capsys.readouterr().out
+    assert "thermal equilibrium: lubricant temperature" in out
+    assert seen["T"] - 273.15 == pytest.approx(133.385, abs=0.05)  # docs/thermal.md
