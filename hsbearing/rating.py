@@ -337,6 +337,10 @@ def friction_angular_contact(case, speeds):
     data["drag_reynolds_number"] = np.array([drag_model.ball_reynolds_number(
         drag_model.mixture_density(lub.density, x), v, D, drag_model.mixture_viscosity(eta, x)) for x, v in zip(X, v_orbit)])
     warns += [x for x in skf_validity_warnings(case, wa * 30.0 / math.pi) if x not in warns]
+    Re_max = float(np.max(data["drag_reynolds_number"])) if len(w) else 0.0
+    if Re_max > 2e5:
+        warns.append(f"ball Reynolds number up to {Re_max:.3g} in the air-oil mixture: above 2e5 (drag crisis of a sphere, "
+                     "C_D falls to ~0.1-0.2) the constant C_D = 0.5 of the drag overestimates it (docs/power_loss.md)")
     attrs = standard_attrs(case, "ok", title="hsbearing friction: quasi-static power loss by source, SKF 2004 model",
                            note_quasi_static=_NOTE_QS, note_skf=_NOTE_SKF, cavity_oil_fraction_source=xsrc,
                            warnings=" | ".join(warns) if warns else "none")
