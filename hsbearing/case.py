@@ -2,7 +2,7 @@
 
 A case is a TOML file with the tables ``[case]``, ``[bearing]``, ``[cage]``,
 ``[materials.ball]``, ``[materials.races]``, ``[materials.cage]``,
-``[lubricant]``, ``[operating]``, ``[simulation]`` and ``[friction]``.
+``[lubricant]``, ``[operating]``, ``[simulation]``, ``[friction]`` and ``[thermal]``.
 Quantities are strings with units (``"9.525 mm"``, ``"14000 rpm"``,
 ``"130 degC"``, ``"1 kN"``); dimensionless numbers are plain numbers.  Every
 value is converted once, here, to SI (m, kg, s, N, rad, rad/s, K, Pa).
@@ -69,6 +69,9 @@ DIMENSIONS: dict[str, str] = {
     "temperature_coefficient": "1/K",
     "velocity": "m/s",
     "frequency": "Hz",
+    "volume_flow_rate": "m**3/s",
+    "specific_heat": "J/(kg*K)",
+    "heat_transfer_coefficient": "W/(m**2*K)",
 }
 
 
@@ -175,10 +178,17 @@ SCHEMA: dict[str, dict[str, Field]] = {
         "dynamic_viscosity": _f("dynamic_viscosity", "ambient-pressure dynamic viscosity eta_0 (overrides the oil's)", positive=True),
         "pressure_viscosity_coefficient": _f("pressure_coefficient", "alpha (overrides the oil's)", positive=True),
         "density": _f("density", "oil density", default="850 kg/m^3", positive=True),
-        "lubrication": _f("choice", "lubrication method", default="oil_jet", choices=("oil_jet", "oil_bath", "oil_air", "grease", "dry")),
+        "lubrication": _f("choice", "oil supply / lubrication method: oil_jet (jet), oil_air (mist / air-oil), oil_bath "
+                          "(bath / splash), grease, dry; with oil_flow_rate it selects the cavity oil fraction law "
+                          "(docs/power_loss.md)", default="oil_jet", choices=("oil_jet", "oil_bath", "oil_air", "grease", "dry")),
+        "oil_flow_rate": _f("volume_flow_rate", "oil flow through the bearing (jet or air-oil supply), e.g. \"1.5 L/min\": "
+                            "cavity oil fraction of the drag (Parker, NASA TP-2275) and the heat the oil carries "
+                            "(hsbearing thermal)", nonneg=True),
         "contamination_factor": _f("number", "ISO 281 contamination factor e_C (Table 13; 0.5-0.6 normal cleanliness)",
                                    default=0.5, minimum=0.0, maximum=1.0),
-        "oil_volume_fraction": _f("number", "oil fraction of the air-oil mixture in the cavity (drag)", default=0.05, minimum=0.0, maximum=1.0),
+        "oil_volume_fraction": _f("number", "oil fraction of the air-oil mixture in the cavity (drag); an override: absent, it "
+                                  "comes from oil_flow_rate (Parker's correlation, jet / air-oil) or is 0.05",
+                                  minimum=0.0, maximum=1.0),
     },
     "operating": {
         "inner_speed": _f("angular_speed", "inner-ring speed n_i", default="0 rpm"),
@@ -212,6 +222,31 @@ SCHEMA: dict[str, dict[str, Field]] = {
         "skf_reading": _f("choice", "G_sl under combined load: SKF catalogue, or the seed 003 reading", default="catalogue", choices=("catalogue", "seed003")),
         "skf_drag_variable": _f("number", "SKF drag-loss variable V_M read from the catalogue diagram (oil bath only)", nonneg=True),
         "spin_torque_reading": _f("choice", "seed 003 spinning torque: dissipated power m_s omega_s / omega, or Tong-Hong projection sum |m_s| sin(alpha)", default="power", choices=("power", "projection")),
+    },
+    "thermal": {  # hsbearing thermal (docs/thermal.md); defaults are typical values, each with its origin
+        "ambient_temperature": _f("temperature", "air around the housing and the shaft (default 20 degC: a test-rig room; "
+                                  "an engine bearing chamber is hotter)", default="20 degC"),
+        "oil_inlet_temperature": _f("temperature", "oil supply temperature (default: lubricant.temperature)"),
+        "oil_specific_heat": _f("specific_heat", "oil specific heat c_p (default 2000 J/(kg K): synthetic ester "
+                                "aviation oils, 1.9-2.1 kJ/(kg K) at 100-150 degC)", default="2000 J/(kg*K)", positive=True),
+        "oil_thermal_conductivity": _f("thermal_conductivity", "oil thermal conductivity (default: the oil's K of the traction "
+                                       "model, Zhang et al. 2016 Table 1: 0.0966 W/(m K) for 4109)", positive=True),
+        "steel_thermal_conductivity": _f("thermal_conductivity", "rings, balls and shaft (default 42 W/(m K): AISI 52100 / "
+                                         "GCr15, 40-46)", default="42 W/(m*K)", positive=True),
+        "housing_thermal_conductivity": _f("thermal_conductivity", "housing (default 50 W/(m K): carbon steel)",
+                                           default="50 W/(m*K)", positive=True),
+        "housing_outside_diameter": _f("length", "housing outside diameter (default: 2 x bearing outside diameter, assumed)",
+                                       positive=True),
+        "housing_width": _f("length", "housing axial width (default: 2 x bearing width, assumed)", positive=True),
+        "shaft_length": _f("length", "exposed shaft length, half each side of the bearing (default: 10 x bearing width, "
+                           "assumed)", positive=True),
+        "housing_convection": _f("heat_transfer_coefficient", "housing outer surfaces to the air (default 10 W/(m^2 K): "
+                                 "free convection plus radiation, Incropera & DeWitt typical 2-25)", default="10 W/(m^2*K)",
+                                 positive=True),
+        "oil_convection": _f("heat_transfer_coefficient", "bearing surfaces to the oil; overrides the Harris & Kotzalas "
+                             "correlation (docs/thermal.md)", positive=True),
+        "tolerance": _f("number", "fixed-point tolerance on the lubricant temperature [K]", default=0.01, positive=True),
+        "max_iterations": _f("int", "most fixed-point iterations (power <-> temperatures)", default=30, positive=True),
     },
     "simulation": {
         "duration": _f("time", "simulated time", default="0.05 s", positive=True),
@@ -301,6 +336,7 @@ MAX_MAGNITUDE: dict[str, float] = {
     "time": 1e7, "pressure": 1e13, "density": 1e5, "mass": 1e7, "inertia": 1e7, "dynamic_viscosity": 1e8,
     "kinematic_viscosity": 1e2, "stiffness": 1e15, "damping": 1e12, "pressure_coefficient": 1e-3,
     "thermal_conductivity": 1e4, "temperature_coefficient": 1e2, "velocity": 1e5, "frequency": 1e9,
+    "volume_flow_rate": 10.0, "specific_heat": 1e6, "heat_transfer_coefficient": 1e8,
 }
 
 #: Longest quantity string accepted (a case value is a number and a unit).
@@ -337,6 +373,7 @@ def _example_unit(kind: str) -> str:
         "length": "mm", "angle": "deg", "angular_speed": "rpm", "force": "N", "moment": "N*m",
         "temperature": "degC", "time": "s", "pressure": "GPa", "density": "kg/m^3", "mass": "kg",
         "inertia": "kg*m^2", "dynamic_viscosity": "Pa*s", "kinematic_viscosity": "mm^2/s",
+        "volume_flow_rate": "L/min", "specific_heat": "J/(kg*K)", "heat_transfer_coefficient": "W/(m^2*K)",
     }.get(kind, DIMENSIONS[kind])
 
 
@@ -361,6 +398,7 @@ Lubricant = _make_dataclass("Lubricant", SCHEMA["lubricant"])
 Operating = _make_dataclass("Operating", SCHEMA["operating"])
 Friction = _make_dataclass("Friction", SCHEMA["friction"])
 Simulation = _make_dataclass("Simulation", SCHEMA["simulation"])
+Thermal = _make_dataclass("Thermal", SCHEMA["thermal"])
 CaseInfo = _make_dataclass("CaseInfo", SCHEMA["case"])
 
 
@@ -383,6 +421,7 @@ class Case:
     operating: Any
     friction: Any
     simulation: Any
+    thermal: Any = None  #: the [thermal] table (hsbearing thermal)
     text: str = ""  #: the TOML text (with overrides appended as comments)
     source: str = "<string>"
     raw: Any = None  #: the raw TOML dict after overrides (for re-serialisation)
@@ -592,6 +631,7 @@ def _build_checked(text: str, source: str, overrides: Mapping[str, Any]) -> Case
         operating=Operating(**values["operating"]),
         friction=Friction(**values["friction"]),
         simulation=Simulation(**values["simulation"]),
+        thermal=Thermal(**values["thermal"]),
         text=full_text,
         source=source,
         raw=raw,

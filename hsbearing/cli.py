@@ -165,6 +165,14 @@ def cmd_run(args) -> int:
     if getattr(args, "continue_from", None):
         return _cmd_continue(args)
     case = _load(args)
+    if getattr(args, "thermal", False):  # start at the thermal equilibrium's lubricant temperature (docs/thermal.md)
+        from hsbearing.thermal import thermal_equilibrium
+
+        th = thermal_equilibrium(case)
+        T = float(th.lubricant_temperature)
+        print(f"thermal equilibrium: lubricant temperature {T - 273.15:.3f} degC (oil outlet "
+              f"{float(th.oil_outlet_temperature) - 273.15:.3f} degC, {float(th.heat_generated):.4g} W); the run uses it")
+        case = case.with_overrides(**{"lubricant.temperature": f"{T} K"})
     duration = _duration_arg(args.duration)
     if duration is not None:
         check_output_samples(case, duration, source="--duration", key="duration")
@@ -350,6 +358,13 @@ def cmd_friction(args) -> int:
     return system.friction(case, args)
 
 
+def cmd_thermal(args) -> int:
+    from hsbearing import thermal
+
+    _check_output_option(args)
+    return thermal.thermal_cli(args)
+
+
 def cmd_life(args) -> int:
     from hsbearing import rating
 
@@ -421,6 +436,8 @@ def build_parser() -> argparse.ArgumentParser:
     sp.add_argument("--no-figure", "--no-plot", dest="no_plot", action="store_true",
                     help="do not draw the PNG figure (--no-plot is the older spelling)")
     sp.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
+    sp.add_argument("--thermal", action="store_true", help="solve the thermal network first (hsbearing thermal) and run "
+                    "at its lubricant temperature (traction and viscosity); needs lubricant.oil_flow_rate")
     sp.add_argument("--continue", dest="continue_from", metavar="ARCHIVE.nc",
                     help="extend the run in ARCHIVE.nc from its last state by --duration (default: to the duration "
                          "it was started with, e.g. after Ctrl-C); written back to ARCHIVE.nc unless -o")
@@ -508,6 +525,12 @@ def build_parser() -> argparse.ArgumentParser:
                                                    "(default: 500,5000,15000rpm deep groove; the case speed angular contact)")
     sp.add_argument("-o", "--output", help="netCDF archive")
     sp.set_defaults(func=cmd_friction)
+
+    sp = sub.add_parser("thermal", help="steady thermal network (rings, balls, cage, oil, housing, shaft) at the "
+                                        "quasi-static power loss, iterated with the lubricant temperature (docs/thermal.md)")
+    with_case(sp, optional=False, examples=", e.g. zhang2016")
+    sp.add_argument("-o", "--output", help="netCDF archive")
+    sp.set_defaults(func=cmd_thermal)
 
     sp = sub.add_parser("life", help="ISO 281 rating life and ISO/TS 16281 reference life of a radial ball-bearing case")
     with_case(sp, optional=False, examples=", e.g. zhang2016")

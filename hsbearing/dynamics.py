@@ -23,7 +23,7 @@ from hsbearing.models import hertz
 from hsbearing.models import kernel as K
 from hsbearing.models import kernel_io as kio
 from hsbearing.models.ball import strip_load_weights
-from hsbearing.models.drag import mixture_density
+from hsbearing.models.drag import cavity_oil_fraction, mixture_density
 from hsbearing.models.geometry import curvature_radii, derive
 from hsbearing.models.state import StateLayout
 
@@ -221,7 +221,9 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
         mu_c=case.friction.cage_coefficient, v0_c=opt["pocket_v0"],
         R_bore_c=0.5 * cg.bore_diameter, R_out_c=0.5 * cg.outside_diameter, n_pocket=opt["pocket_stations"],
         # drag
-        rho_e=mixture_density(case.lubricant.density, case.lubricant.oil_volume_fraction),
+        rho_e=mixture_density(case.lubricant.density, cavity_oil_fraction(
+            case.lubricant.oil_volume_fraction, case.lubricant.oil_flow_rate, op.inner_speed - op.outer_speed, dm,
+            case.lubricant.lubrication)[0]),
         C_D=opt["drag_coefficient"], v0_D=opt["drag_v0"],
         # cage body
         m_c=g.cage_mass, Ip_c=g.cage_axial_inertia, Id_c=g.cage_diametral_inertia,

@@ -228,11 +228,45 @@ def quasi_static_power_loss(case, speed=None, with_state: bool = False):
 
 # ----------------------------------------------------------------------------- hsbearing friction CASE (every ball bearing)
 
-_NOTE_QS = ("quasi-static model: power lost at the quasi-static state with the dynamic model's contact laws "
-            "(race traction rolling+spin from the oil's traction law, EHL rolling couple, ball drag, guide-land film of the "
-            "centred cage); excludes ball-pocket contact and contact damping (zero at that state) and the cage whirl")
-_NOTE_SKF = ("SKF 2004 model: catalogue frictional moment M = M_rr + M_sl (+ M_drag in an oil bath), an empirical fit "
-             "for the bearing series; no seals; independent of this package's traction law")
+_NOTE_QS = ("quasi-static model: (ours) power lost at the quasi-static state with the dynamic model's contact laws: race "
+            "traction (rolling, transverse slip and spin, the oil's traction law), EHL rolling couple, the pocket film of the "
+            "centred balls (entraining shear of the turning ball in its pocket), guide-land film of the centred cage, ball "
+            "drag in the air-oil mixture (cavity oil fraction above); excludes pocket boundary friction and contact damping "
+            "(zero at that state), the cage whirl, seals (none modelled) and churning/jet-pumping of the oil beyond ball drag")
+_NOTE_SKF = ("SKF 2004 model: catalogue frictional moment M = M_rr + M_sl + M_seal + M_drag (SKF General Catalogue 6000 EN, "
+             "'Friction'), an empirical fit for the bearing series at mu_EHL (friction.ehl_coefficient, default 0.05: the "
+             "catalogue's mineral-oil value, 0.04 for synthetic oils); M_seal = 0 (open "
+             "bearing), M_drag only for an oil bath (V_M from the catalogue diagram); independent of this package's traction law")
+
+#: ours -> the SKF terms: which of our sources sit with which SKF term (docs/power_loss.md, "SKF 2004 side by side")
+OURS_AS_SKF = {
+    "rolling": ("ehl_rolling", "contact_damping"),
+    "sliding": ("race_traction", "pocket_film", "pocket_boundary", "guide_land"),
+    "drag": ("drag",),
+    "seal": (),
+}
+
+#: Surrogate of the SKF speed ratings for the validity warning [mm r/min]: the model is stated for "constant speed,
+#: below the speed ratings" (SKF, "The SKF model for calculating the frictional moment", conditions of validity);
+#: a case gives no speed rating, so n d_m above 1e6 (above the catalogue reference speeds of single-row angular
+#: contact ball bearings, order 0.7-1e6 mm r/min; assumed, not read from the tables) is flagged.
+SKF_NDM_LIMIT = 1.0e6
+
+
+def skf_validity_warnings(case, n_rpm) -> list[str]:
+    """Where the SKF 2004 model is used outside its stated range (speed / n d_m, lubrication, oil)."""
+    out = []
+    dm_mm = case.bearing.pitch_diameter * 1e3
+    ndm = float(np.max(np.abs(n_rpm))) * dm_mm
+    if ndm > SKF_NDM_LIMIT:
+        out.append(f"SKF 2004 model outside its range: n d_m = {ndm:.3g} mm r/min above {SKF_NDM_LIMIT:.0e} (the model is "
+                   "stated for constant speed below the bearing's speed ratings; SKF, 'The SKF model for calculating the "
+                   "frictional moment'); its G_rr, G_sl were not fitted there: order of magnitude only")
+    lub = case.lubricant.lubrication
+    if lub not in ("oil_jet", "oil_bath", "oil_air", "grease"):
+        out.append(f"SKF 2004 model outside its range: lubrication = {lub} (the model is for grease, oil bath, oil-air "
+                   "or oil jet lubrication)")
+    return out
 
 
 def _register_qs_power():
@@ -240,6 +274,14 @@ def _register_qs_power():
 
     register("qs_power_loss", ("speed",), "W", "power loss at the quasi-static state, sum of the qs_power_loss_<source>")
     register("qs_friction_torque", ("speed",), "N*m", "friction torque of the quasi-static power loss, qs_power_loss / |omega_i - omega_o|")
+    register("cavity_oil_fraction", ("speed",), "1", "oil volume fraction of the air-oil mixture the ball drag uses "
+             "(lubricant.oil_volume_fraction, or Parker's correlation from lubricant.oil_flow_rate)")
+    register("drag_reynolds_number", ("speed",), "1", "Reynolds number of the ball in the air-oil mixture, "
+             "rho_e v D / mu_e at the cage orbital speed (C_D = 0.5 holds for 1e3..2e5)")
+    for term in ("rolling", "sliding", "drag", "seal"):
+        register(f"qs_power_as_skf_{term}", ("speed",), "W", f"our quasi-static power loss grouped as the SKF "
+                 f"{term} term (rating.OURS_AS_SKF)")
+        register(f"skf_power_{term}", ("speed",), "W", f"SKF 2004 {term} term of the frictional moment x speed")
     for s in SOURCES:
         register(f"qs_power_loss_{s}", ("speed",), "W", f"power loss at the quasi-static state by source {s} (hsbearing.balances.SOURCES)")
 
@@ -253,6 +295,7 @@ def friction_angular_contact(case, speeds):
     Returns a Dataset over ``speed`` (qs_power_loss_<source>, qs_power_loss [W],
     qs_friction_torque, skf_* [N m]).
     """
+    import hsbearing.systems.deep_groove.friction  # noqa: F401 - registers the skf_* output variables
     from hsbearing.balances import SOURCES
     from hsbearing.models.friction import skf2004
 
@@ -261,8 +304,10 @@ def friction_angular_contact(case, speeds):
     from hsbearing import contact_state
 
     warns = []
+    cage_speeds = []
     for r in rows:
         q = r.pop("state")
+        cage_speeds.append(float(np.asarray(q["cage_speed"]).ravel()[0]))
         for x in contact_state.warnings_for(q.assign(**{k: ("ball", v) for k, v in
                                                         contact_state.quasi_static_contact_state(r.pop("case"), q).items()}), case):
             if x not in warns:
@@ -271,6 +316,32 @@ def friction_angular_contact(case, speeds):
     data["qs_power_loss"] = np.array([r["power_loss"] for r in rows])
     data["qs_friction_torque"] = np.array([r["friction_torque"] for r in rows])
     data.update(skf2004.skf_moments(case, w))
+    for term, srcs in OURS_AS_SKF.items():
+        data[f"qs_power_as_skf_{term}"] = sum((data[f"qs_power_loss_{x}"] for x in srcs), np.zeros(len(w)))
+    wa = np.abs(w)
+    data["skf_power_rolling"] = data["skf_rolling_torque"] * wa
+    data["skf_power_sliding"] = data["skf_sliding_torque"] * wa
+    data["skf_power_drag"] = data["skf_drag_torque"] * wa
+    data["skf_power_seal"] = np.zeros(len(w))  # open bearing: no seal moment
+    from hsbearing.models import drag as drag_model
+    from hsbearing.models import ehl
+
+    lub, g_dm, D = case.lubricant, case.bearing.pitch_diameter, case.bearing.ball_diameter
+    eta = ehl.lubricant_parameters(case)["eta"]
+    X = np.array([drag_model.cavity_oil_fraction(lub.oil_volume_fraction, lub.oil_flow_rate, wi - case.operating.outer_speed,
+                                                 g_dm, lub.lubrication)[0] for wi in w])
+    xsrc = drag_model.cavity_oil_fraction(lub.oil_volume_fraction, lub.oil_flow_rate, w[0] if len(w) else 0.0, g_dm,
+                                          lub.lubrication)[1]
+    data["cavity_oil_fraction"] = X
+    v_orbit = np.array(cage_speeds) * 0.5 * g_dm
+    data["drag_reynolds_number"] = np.array([drag_model.ball_reynolds_number(
+        drag_model.mixture_density(lub.density, x), v, D, drag_model.mixture_viscosity(eta, x)) for x, v in zip(X, v_orbit)])
+    warns += [x for x in skf_validity_warnings(case, wa * 30.0 / math.pi) if x not in warns]
+    Re_max = float(np.max(data["drag_reynolds_number"])) if len(w) else 0.0
+    if Re_max > 2e5:
+        warns.append(f"ball Reynolds number up to {Re_max:.3g} in the air-oil mixture: above 2e5 (drag crisis of a sphere, "
+                     "C_D falls to ~0.1-0.2) the constant C_D = 0.5 of the drag overestimates it (docs/power_loss.md)")
     attrs = standard_attrs(case, "ok", title="hsbearing friction: quasi-static power loss by source, SKF 2004 model",
-                           note_quasi_static=_NOTE_QS, note_skf=_NOTE_SKF, warnings=" | ".join(warns) if warns else "none")
+                           note_quasi_static=_NOTE_QS, note_skf=_NOTE_SKF, cavity_oil_fraction_source=xsrc,
+                           warnings=" | ".join(warns) if warns else "none")
     return make_dataset(data, coords={"speed": w}, attrs=attrs)

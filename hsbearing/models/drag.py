@@ -10,6 +10,18 @@ References
     above the printed coefficient.  The 1.95 exponent makes the formula
     unit-dependent anyway; the drag is a minor term here (docs/validation/cage_whirl.md).
 [2] Zhang W. et al., Chin. J. Aeronaut. 29 (2016), Eq. (7) (F_D).
+[3] Parker R. J., *Comparison of predicted and experimental thermal performance of
+    angular-contact ball bearings*, NASA TP-2275 (1984): the empirical fraction of oil in
+    the air-oil mixture of the cavity of a jet-lubricated bearing,
+    X = 1e5 W^0.37 / (n d_m^1.7), W oil flow [cm^3/min], n shaft speed [r/min], d_m pitch
+    diameter [mm]; reproduced in [1] (ball drag) and used by Pouly et al. (2010) and later
+    thermal-network papers.  NOT read here from TP-2275 or from [1]: the form and the
+    constants are those of the secondary reproductions; whether X is a fraction or a
+    percentage is not printed consistently in them.  It is read as a fraction: it then gives
+    0.01-0.15 for jet-lubricated bearings of d_m 40-150 mm at 1-3e6 n d_m and 0.5-4 L/min,
+    the range of the cavity oil fractions of CFD studies of jet-lubricated bearings
+    (e.g. Wu et al., Appl. Therm. Eng. 105 (2016) 217); as a percentage drag would vanish.
+    docs/power_loss.md, "Oil supply and the cavity oil fraction".
 """
 
 from __future__ import annotations
@@ -20,15 +32,83 @@ from numba import njit
 
 from hsbearing.compile_cache import check_compile_cache
 
-__all__ = ["mixture_density", "ball_drag_force"]
+__all__ = ["mixture_density", "ball_drag_force", "parker_cavity_oil_fraction", "cavity_oil_fraction",
+           "DEFAULT_OIL_FRACTION", "mixture_viscosity", "ball_reynolds_number", "AIR_VISCOSITY"]
 
 #: air density at the bearing temperature is small; 1.1 kg/m^3 (about 50-130 degC) is used.
 AIR_DENSITY = 1.1
+
+#: cavity oil fraction used when the case gives neither ``lubricant.oil_volume_fraction`` nor an
+#: ``oil_flow_rate`` (the constant every earlier release used; not from a correlation).
+DEFAULT_OIL_FRACTION = 0.05
+
+
+def parker_cavity_oil_fraction(flow_rate: float, speed: float, pitch_diameter: float) -> float:
+    """Oil volume fraction X of the bearing cavity of a jet-lubricated ball bearing ([3]) [-].
+
+    X = 1e5 W^0.37 / (n d_m^1.7)  with W [cm^3/min], n [r/min], d_m [mm]  ([3], as reproduced in [1]).
+
+    Arguments in SI: ``flow_rate`` [m^3/s] (W = 6e7 flow_rate), ``speed`` [rad/s] of the inner ring
+    relative to the outer (n = 30 |speed| / pi), ``pitch_diameter`` [m].  Zero flow gives 0 (dry
+    cavity: air only); the result is capped at 1 (a flooded cavity); n = 0 with oil flowing gives 1.
+    """
+    if flow_rate < 0.0:
+        raise ValueError("flow_rate must not be negative")
+    if flow_rate == 0.0:
+        return 0.0
+    W = flow_rate * 6.0e7  # m^3/s -> cm^3/min
+    n = abs(speed) * 30.0 / math.pi  # rad/s -> r/min
+    if n == 0.0:
+        return 1.0
+    X = 1.0e5 * W**0.37 / (n * (pitch_diameter * 1.0e3) ** 1.7)  # [3]
+    return min(X, 1.0)
+
+
+def cavity_oil_fraction(oil_volume_fraction, oil_flow_rate, speed: float, pitch_diameter: float,
+                        lubrication: str = "oil_jet") -> tuple[float, str]:
+    """The cavity oil fraction the drag uses, and where it comes from: (X, source).
+
+    - ``oil_volume_fraction`` given (not None): that value (an explicit override, any supply);
+    - else ``oil_flow_rate`` given, ``lubrication`` oil_jet or oil_air (mist / air-oil): Parker's
+      correlation :func:`parker_cavity_oil_fraction` ([3]);
+    - else :data:`DEFAULT_OIL_FRACTION` (oil bath, grease, or no flow given: no correlation of
+      these supplies is implemented; ``dry`` gives 0).
+    Both the quasi-static power loss (``hsbearing friction``) and the dynamic model call this
+    through :func:`hsbearing.dynamics.build_model` (kernel parameter ``rho_e``).
+    """
+    if oil_volume_fraction is not None:
+        return float(oil_volume_fraction), "lubricant.oil_volume_fraction"
+    if lubrication == "dry":
+        return 0.0, "lubrication = dry"
+    if oil_flow_rate is not None and lubrication in ("oil_jet", "oil_air"):
+        return parker_cavity_oil_fraction(oil_flow_rate, speed, pitch_diameter), "Parker (NASA TP-2275) from oil_flow_rate"
+    return DEFAULT_OIL_FRACTION, "default 0.05 (no oil_volume_fraction, no oil_flow_rate for a jet / air-oil supply)"
 
 
 def mixture_density(oil_density: float, oil_volume_fraction: float, air_density: float = AIR_DENSITY) -> float:
     """Effective density of the air-oil mixture rho_e = X rho_oil + (1 - X) rho_air [kg/m^3] ([1])."""
     return oil_volume_fraction * oil_density + (1.0 - oil_volume_fraction) * air_density
+
+
+#: dynamic viscosity of air at 50-130 degC [Pa s] (1.95e-5 .. 2.3e-5; 2.1e-5 used).
+AIR_VISCOSITY = 2.1e-5
+
+
+def mixture_viscosity(oil_viscosity: float, oil_volume_fraction: float, air_viscosity: float = AIR_VISCOSITY) -> float:
+    """Effective viscosity of the air-oil mixture mu_e = X mu_oil + (1 - X) mu_air [Pa s] (same volume
+    weighting as :func:`mixture_density`, [1])."""
+    return oil_volume_fraction * oil_viscosity + (1.0 - oil_volume_fraction) * air_viscosity
+
+
+def ball_reynolds_number(rho_e: float, v: float, D: float, mu_e: float) -> float:
+    """Reynolds number of the ball in the mixture Re = rho_e |v| D / mu_e [-].
+
+    The drag coefficient C_D is kept constant (0.5, ``dynamics.DEFAULT_OPTIONS``): the drag
+    coefficient of a sphere is 0.4-0.5 over 1e3 < Re < 2e5 (Newton regime, below the drag crisis;
+    e.g. White, *Fluid Mechanics*, Fig. 7.16), and the bearing cavity stays in that range
+    (``hsbearing friction`` prints Re; docs/power_loss.md).
+    """
+    return rho_e * abs(v) * D / mu_e
 
 
 @njit(cache=True)

@@ -68,6 +68,17 @@ def friction_command(case, args) -> int:
                 f"{ds.skf_rolling_torque.values[i] * 1e3:14.4g}", f"{ds.skf_sliding_torque.values[i] * 1e3:14.4g}",
                 f"{ds.skf_total_torque.values[i] * 1e3:14.4g}", f"{ds.skf_total_torque.values[i] * abs(wi):14.4g}"]
         print("  ".join(row))
+    print("split of both totals into the SKF terms [W] (ours: rolling = ehl_rolling + contact_damping; sliding = "
+          "race_traction + pocket_film + pocket_boundary + guide_land; drag = ball drag; seals: none modelled)")
+    print("  ".join(f"{h:>14s}" for h in ["n [r/min]", "model", "rolling", "sliding", "drag", "seal", "total"]))
+    for i, wi in enumerate(ds["speed"].values):
+        for label, pre, tot in (("ours", "qs_power_as_skf_", ds.qs_power_loss.values[i]),
+                                ("SKF 2004", "skf_power_", ds.skf_total_torque.values[i] * abs(wi))):
+            print("  ".join([f"{_rpm(wi):14.0f}", f"{label:>14s}"] + [f"{ds[pre + t].values[i]:14.4g}" for t in
+                                                                      ("rolling", "sliding", "drag", "seal")] + [f"{tot:14.4g}"]))
+    X, Re = ds["cavity_oil_fraction"].values, ds["drag_reynolds_number"].values
+    print(f"drag: cavity oil fraction {', '.join(f'{x:.4g}' for x in X)} ({ds.attrs.get('cavity_oil_fraction_source', '')}); "
+          f"ball Reynolds number {', '.join(f'{r:.3g}' for r in Re)} (C_D = 0.5 is the sphere's value for 1e3 < Re < 2e5)")
     print("note: " + _NOTE_QS)
     print("note: " + _NOTE_SKF)
     if case.friction.law == "coulomb":
@@ -85,7 +96,10 @@ def friction_command(case, args) -> int:
 
 
 def archive_kind(ds) -> str | None:
-    """``"run"`` (a time series) or ``"quasistatic"`` (per-ball contact loads): the fallback kinds, asked last."""
+    """``"thermal"`` (a thermal network), ``"run"`` (a time series) or ``"quasistatic"`` (per-ball contact loads):
+    the fallback kinds, asked last."""
+    if ds.attrs.get("archive_kind") == "thermal" or "node_temperature" in ds:
+        return "thermal"
     if "time" in ds.dims:
         return "run"
     if "inner_contact_load" in ds or "outer_contact_load" in ds:
@@ -105,8 +119,15 @@ def _plot_quasistatic(ds, path):
     return plot_quasistatic(ds, path)
 
 
+def _plot_thermal(ds, path):
+    from hsbearing.systems.angular_contact.thermal_figure import plot_thermal
+
+    return plot_thermal(ds, path)
+
+
 def _register_outputs():
     import hsbearing.analysis.orbit  # noqa: F401 - the run summary variables
+    import hsbearing.thermal  # noqa: F401 - the thermal network variables
 
 
 SYSTEM = System(
@@ -114,5 +135,6 @@ SYSTEM = System(
     description="angular-contact ball bearing: 6-DOF dynamics with cage (Zhang et al. 2016), quasi-static equilibrium",
     friction=friction_command, simulate=simulate, build_model=build_model, summary_lines=summary_lines,
     run_summary=run_summary, archive_kind=archive_kind, fallback=True,
-    figures={"run": _plot_dynamic, "quasistatic": _plot_quasistatic}, register_outputs=_register_outputs,
+    figures={"run": _plot_dynamic, "quasistatic": _plot_quasistatic, "thermal": _plot_thermal},
+    register_outputs=_register_outputs,
 )

@@ -1,0 +1,123 @@
+"""Steady thermal network (issue 29 items 4-5): analytical limit cases, energy balance, CLI + archive + figure."""
+
+import math
+
+import numpy as np
+import pytest
+
+from hsbearing import cli
+from hsbearing.thermal import (Network, constriction_resistance, cylinder_resistance, fin_conductance, harris_oil_h,
+                               rotating_cylinder_h, solve_network)
+
+
+def test_one_conduction_path_to_a_convective_sink():
+    """T = T_inf + Q (R_cond + 1/(hA)): a heated ring conducting through a cylindrical wall to a surface cooled by air."""
+    Q, T_inf, h, A = 25.0, 300.0, 40.0, 0.02
+    R_cond = cylinder_resistance(0.02, 0.05, 0.03, 45.0)
+    assert R_cond == pytest.approx(math.log(2.5) / (2 * math.pi * 45.0 * 0.03))
+    net = Network(nodes=["ring", "surface"], fixed={"air": T_inf},
+                  links=[("ring", "surface", 1.0 / R_cond, "conduction"), ("surface", "air", h * A, "convection")],
+                  sources={"ring": Q})
+    T, R = solve_network(net)
+    assert T["ring"] == pytest.approx(T_inf + Q * (R_cond + 1.0 / (h * A)), rel=1e-10)
+    assert T["surface"] == pytest.approx(T_inf + Q / (h * A), rel=1e-10)
+    assert np.max(np.abs(R)) < 1e-8
+
+
+def test_advection_and_nonlinear_link():
+    """Oil node heated by Q, carried away by m c_p: T = T_in + Q / (m c_p); a temperature-dependent link still closes."""
+    net = Network(nodes=["oil"], fixed={"in": 350.0}, advection=[("oil", "in", 20.0)], sources={"oil": 10.0})
+    T, _ = solve_network(net)
+    assert T["oil"] == pytest.approx(350.5, rel=1e-12)
+    # G(T) = 0.1 (T - 290)^0.5 from a body to air: solve Q = G(T) (T - 300), check the balance
+    net = Network(nodes=["b"], fixed={"air": 300.0}, links=[("b", "air", lambda T: 0.1 * (T["b"] - 290.0) ** 0.5, "c")],
+                  sources={"b": 50.0})
+    T, R = solve_network(net)
+    assert 0.1 * (T["b"] - 290.0) ** 0.5 * (T["b"] - 300.0) == pytest.approx(50.0, rel=1e-9)
+
+
+def test_elements():
+    assert constriction_resistance(1e-3, 40.0) == pytest.approx(1.0 / 0.16)
+    # long fin: sqrt(h P k A)
+    d, h, k = 0.02, 50.0, 40.0
+    assert fin_conductance(h, d, k, 100.0) == pytest.approx(math.sqrt(h * math.pi * d * k * math.pi * d * d / 4))
+    # short fin: ~ h P L (all the surface at the base temperature)
+    assert fin_conductance(h, d, k, 1e-4) == pytest.approx(h * math.pi * d * 1e-4, rel=1e-3)
+    # Nu = 0.133 Re^(2/3) Pr^(1/3), Re = omega d^2 / nu
+    Re = 1000.0 * 0.03**2 / 1.8e-5
+    assert rotating_cylinder_h(1000.0, 0.03) == pytest.approx(0.133 * Re ** (2 / 3) * 0.71 ** (1 / 3) * 0.028 / 0.03)
+    assert harris_oil_h(1000.0, 1e-5, 0.14, 50.0, 1.0) == pytest.approx(0.0986 * 0.14 * 50 ** (1 / 3) * 1e4)
+
+
+@pytest.fixture(scope="module")
+def zhang_archive(tmp_path_factory):
+    out = tmp_path_factory.mktemp("thermal") / "t.nc"
+    rc = cli.main(["thermal", "zhang2016", "-o", str(out)])
+    return rc, out
+
+
+def test_zhang2016_converges_and_balances(zhang_archive, capsys):
+    from hsbearing import open_run
+
+    rc, out = zhang_archive
+    assert rc == 0
+    ds = open_run(out)
+    assert ds.attrs["converged"] == 1
+    P = float(ds.heat_generated)
+    removed = float(ds.heat_removed_by_oil) + float(ds.heat_removed_by_conduction)
+    assert abs(P - removed) / P < 1e-3  # issue: < 0.1 %
+    assert abs(float(ds.heat_balance_error)) < 1e-9  # measured ~3e-15
+    # the heat generated is the sum of the sources at equilibrium
+    srcs = [v for k, v in ds.data_vars.items() if k.startswith("thermal_power_loss_")]
+    assert sum(float(v) for v in srcs) == pytest.approx(P, rel=1e-12)
+    assert float(ds.node_heat_input.sum()) == pytest.approx(P, rel=1e-12)
+    # temperatures in kelvin, above the inlet: the bearing heats on its own heat
+    for name in [k for k in ds.data_vars if "temperature" in k]:
+        assert ds[name].attrs["units"] == "K"
+    assert float(ds.oil_outlet_temperature) > float(ds.oil_inlet_temperature)
+    assert (ds.node_temperature.values > 273.15).all()
+    # the fixed point: the last lubricant temperature reproduces the network's contact temperature
+    T = dict(zip([str(n) for n in ds.node.values], ds.node_temperature.values))
+    Tc = 0.25 * (T["inner_ring"] + T["outer_ring"] + 2 * T["balls"])
+    assert abs(Tc - float(ds.lubricant_temperature)) < 0.01
+
+
+def test_zhang2016_archive_plots(zhang_archive, tmp_path):
+    from hsbearing import plotting
+    from hsbearing.results import open_run
+
+    rc, out = zhang_archive
+    assert plotting.archive_kind(open_run(out)) == "thermal"
+    png = tmp_path / "t.png"
+    assert cli.main(["plot", str(out), "-o", str(png)]) == 0
+    assert png.stat().st_size > 10_000
+
+
+def test_thermal_needs_a_flow():
+    from hsbearing.case import CaseError, load_case
+    from hsbearing.thermal import thermal_equilibrium
+
+    case = load_case("zhang2016", **{"lubricant.oil_flow_rate": "0 L/min"})
+    with pytest.raises(CaseError, match="oil_flow_rate"):
+        thermal_equilibrium(case)
+
+
+def test_run_thermal_starts_at_the_equilibrium_temperature(monkeypatch, capsys, tmp_path):
+    """hsbearing run --thermal hands the dynamics the case at the thermal equilibrium's lubricant temperature."""
+    import hsbearing
+
+    seen = {}
+
+    class Stop(Exception):
+        pass
+
+    def fake_simulate(case, **kw):
+        seen["T"] = case.lubricant.temperature
+        raise Stop
+
+    monkeypatch.setattr(hsbearing, "simulate", fake_simulate)
+    with pytest.raises(Stop):
+        cli.main(["run", "zhang2016", "--thermal", "--duration", "1ms", "-o", str(tmp_path / "r.nc"), "-q", "--no-figure"])
+    out = capsys.readouterr().out
+    assert "thermal equilibrium: lubricant temperature" in out
+    assert seen["T"] - 273.15 == pytest.approx(133.385, abs=0.05)  # docs/thermal.md
