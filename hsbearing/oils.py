@@ -129,7 +129,7 @@ def plot_traction(case, qs, path) -> Path:
     g = derive(case)
     D = g.D
     wm, rb = qs["ball_orbit_speed"].values, qs["ball_center_radial"].values
-    S = np.linspace(0.0, 0.2, 401)
+    S = np.logspace(-5, np.log10(0.2), 400)
     fig = Figure(figsize=(6.4, 4.2))
     ax = fig.add_subplot(111)
     for side, color in (("inner", "tab:blue"), ("outer", "tab:red")):
@@ -143,7 +143,7 @@ def plot_traction(case, qs, path) -> Path:
             U = abs(case.operating.outer_speed - wm[i]) * (rb[i] + 0.5 * D * np.cos(a))
             Rx = 0.5 * D * (1.0 + D * np.cos(a) / g.dm)
         mu = traction.contact_mu(lub.oil, S, Q[i], U, lub.temperature, Ep, Rx, law=lub.traction_law)
-        ax.plot(S * 100.0, mu, color=color, label=f"{side}: Q = {Q[i]:.0f} N, U = {U:.1f} m/s")
+        ax.semilogx(S * 100.0, mu, color=color, label=f"{side}: Q = {Q[i]:.0f} N, U = {U:.1f} m/s")
     ax.set_xlabel("slide-roll ratio S [%]")
     ax.set_ylabel("traction coefficient mu [-]")
     name = lub.definition.name if lub.definition is not None else lub.oil
