@@ -258,3 +258,14 @@ def test_oils_at_a_case_prints_the_contacts_and_draws_mu(oil_file, tmp_path, cap
     assert rc == 0, err
     assert "inner contact" in out and "outer contact" in out and "lambda" in out and "ESTIMATED" in out
     assert png.is_file() and png.read_bytes()[:4] == b"\x89PNG"
+
+
+@pytest.mark.slow
+def test_short_dynamic_run_with_a_user_oil_file(oil_file, tmp_path, capsys):
+    """Done-when of issue 26: `hsbearing run --set lubricant.file=my_oil.toml` (1 ms; slow: numba compile when the
+    cache is cold).  Run by hand this session: status ok, 386 CVODE steps."""
+    out = tmp_path / "run.nc"
+    rc, stdout, err = _cli(["run", "--set", f"lubricant.file={oil_file}", "--duration", "1ms", "--no-figure", "-q",
+                            "-o", str(out)], capsys)
+    assert rc == 0, err
+    assert "status: ok" in stdout and out.is_file()
