@@ -617,8 +617,6 @@ def _apply_lubricant_file(raw: dict, values: dict, source: str, overridden: set 
     temperature (nu, rho, alpha) that the case does not give itself, and names the traction law.  None
     when the oil is a built-in name (4109, 4106, 4050).  The file's text is embedded in ``raw`` (key
     ``lubricant.file_text``), so the archived case and its hash carry the oil's data."""
-    if raw.get("case", {}).get("system") not in ROLLING:
-        return None
     from hsbearing.models import lubricant as lubmod
     from hsbearing.models import traction
 
