@@ -170,7 +170,9 @@ SCHEMA: dict[str, dict[str, Field]] = {
     "materials.races": dict(_MATERIAL),
     "materials.cage": dict(_MATERIAL),
     "lubricant": {
-        "oil": _f("str", "oil name (closed vocabulary, see hsbearing.models.traction)", default="4109"),
+        "oil": _f("str", "oil name: 4109, 4106, 4050 (built in, see hsbearing.models.traction), or a bundled lubricant name or a lubricant .toml file (as lubricant.file)", default="4109"),
+        "file": _f("str", "lubricant file (TOML, docs/traction.md \"Lubricant files\") or bundled lubricant name; replaces lubricant.oil; path relative to the case file, then the working directory"),
+        "file_text": _f("str", "the lubricant file's text, embedded by hsbearing when the case is loaded (archives stay self-contained; used only when the file cannot be found); not written by hand"),
         "temperature": _f("temperature", "oil inlet / bearing temperature", default="20 degC"),
         "traction_law": _f("str", "reading of the traction law (see docs/traction.md)", default="default"),
         "viscosity_law": _f("choice", "viscosity-temperature law: walther (ASTM D341 through the oil class's 40/100 degC data) or table1 (seed 004 Table 1 exponential)", default="walther", choices=("walther", "table1")),
@@ -381,11 +383,12 @@ def _example_unit(kind: str) -> str:
 # dataclasses generated from the schema
 
 
-def _make_dataclass(name: str, fields: Mapping[str, Field]):
+def _make_dataclass(name: str, fields: Mapping[str, Field], extra: tuple = ()):
     spec = []
     for key, fld in fields.items():
         typ = {"int": int, "str": str, "choice": str, "bool": bool}.get(fld.kind, float)
         spec.append((key, typ | None, dataclasses.field(default=None, metadata={"schema": fld})))
+    spec.extend(extra)  # derived attributes that are not case-file keys (no "schema" metadata)
     cls = dataclasses.make_dataclass(name, spec, frozen=True)
     cls.__module__ = __name__  # picklable as hsbearing.case.<name> (process pools, dask)
     return cls
@@ -394,7 +397,10 @@ def _make_dataclass(name: str, fields: Mapping[str, Field]):
 Bearing = _make_dataclass("Bearing", SCHEMA["bearing"])
 Cage = _make_dataclass("Cage", SCHEMA["cage"])
 Material = _make_dataclass("Material", SCHEMA["materials.ball"])
-Lubricant = _make_dataclass("Lubricant", SCHEMA["lubricant"])
+#: ``case.lubricant.definition`` is the parsed lubricant file (:class:`hsbearing.models.lubricant.LubricantDefinition`)
+#: when the oil comes from one, else None.
+Lubricant = _make_dataclass("Lubricant", SCHEMA["lubricant"],
+                            extra=(("definition", Any, dataclasses.field(default=None, compare=False)),))
 Operating = _make_dataclass("Operating", SCHEMA["operating"])
 Friction = _make_dataclass("Friction", SCHEMA["friction"])
 Simulation = _make_dataclass("Simulation", SCHEMA["simulation"])
@@ -616,6 +622,9 @@ def _build_checked(text: str, source: str, overrides: Mapping[str, Any]) -> Case
         override_lines.append(f"# {table}.{leaf} = {v!r}")
     full_text = text if not override_lines else text.rstrip("\n") + "\n# --- overrides ---\n" + "\n".join(override_lines) + "\n"
     values = _validate_tables(raw, source)
+    over_lub = {resolve_key(k, source=f"{source} (override)")[1] for k in (overrides or {})
+                if resolve_key(k, source=f"{source} (override)")[0] == "lubricant"}
+    oil_definition = _apply_lubricant_file(raw, values, source, over_lub)
     info = CaseInfo(**values["case"])
     mats = Materials(
         ball=Material(**values["materials.ball"]),
@@ -627,7 +636,7 @@ def _build_checked(text: str, source: str, overrides: Mapping[str, Any]) -> Case
         bearing=Bearing(**values["bearing"]),
         cage=Cage(**values["cage"]),
         materials=mats,
-        lubricant=Lubricant(**values["lubricant"]),
+        lubricant=Lubricant(**values["lubricant"], definition=oil_definition),
         operating=Operating(**values["operating"]),
         friction=Friction(**values["friction"]),
         simulation=Simulation(**values["simulation"]),
@@ -640,6 +649,74 @@ def _build_checked(text: str, source: str, overrides: Mapping[str, Any]) -> Case
     _check_physical(case, source)
     _check_possible(case, source)
     return case
+
+
+def _apply_lubricant_file(raw: dict, values: dict, source: str, overridden: set | None = None):
+    """A lubricant file (``lubricant.file``, or ``lubricant.oil`` naming a bundled lubricant or a .toml file)
+    -> its :class:`~hsbearing.models.lubricant.LubricantDefinition`; fills the lubricant values at the case
+    temperature (nu, rho, alpha) that the case does not give itself, and names the traction law.  None
+    when the oil is a built-in name (4109, 4106, 4050).  The file's text is embedded in ``raw`` (key
+    ``lubricant.file_text``), so the archived case and its hash carry the oil's data."""
+    from hsbearing.models import lubricant as lubmod
+    from hsbearing.models import traction
+
+    lub = values["lubricant"]
+    node = raw.get("lubricant", {}) if isinstance(raw.get("lubricant"), dict) else {}
+    spec, key = lub.get("file"), "lubricant.file"
+    if spec is None:
+        oil = lub.get("oil")
+        if oil is None or oil in traction.OILS:
+            return None
+        if not (str(oil).endswith(".toml") or lubmod.bundled_path(oil) is not None):
+            return None  # unknown name: _check_physical says so, listing the known ones
+        spec, key = oil, "lubricant.oil"
+    base = Path(source).parent if Path(source).suffix == ".toml" and Path(source).is_file() else None
+    path = lubmod.resolve_lubricant(spec, base_dir=base)
+    if path is not None:
+        definition = lubmod.load_lubricant(path)
+    elif lub.get("file_text"):  # the file is gone: the copy embedded when the case was saved
+        definition = lubmod.loads_lubricant(lub["file_text"], f"{source} ({key} = {spec!r}, embedded copy)",
+                                            default_name=Path(str(spec)).stem)
+    else:
+        raise CaseError(source, key, lubmod.unresolved_message(spec))
+    raw.setdefault("lubricant", {})["file_text"] = definition.text
+    lub["file_text"] = definition.text
+    T = lub["temperature"]
+    # Which of the case's own oil-property keys win over the file's values: those given as overrides; and
+    # those of the case file itself when the case file names the lubricant (a case file that names another oil
+    # and gets this one by --set/--vary described the other oil: its keys the file supplies are dropped from
+    # raw, so that the saved case reloads to the same values).
+    supplied = {"kinematic_viscosity", "dynamic_viscosity", "pressure_viscosity_coefficient", "traction_law"}
+    if definition.density_ref is not None:
+        supplied.add("density")
+    overridden = overridden or set()
+    explicit = (set(node) & supplied) if not overridden & {"file", "oil"} else set()
+    explicit |= overridden & supplied
+    for k in supplied - explicit:
+        if k in node:
+            del node[k]
+            lub[k] = SCHEMA["lubricant"][k].default and _convert(SCHEMA["lubricant"][k].default, SCHEMA["lubricant"][k],
+                                                                  source, f"lubricant.{k}")
+    lub["oil"] = definition.traction_oil
+    if "traction_law" not in explicit:
+        lub["traction_law"] = definition.traction_law
+    if definition.density_ref is not None and "density" not in explicit:
+        lub["density"] = definition.density(T)
+    rho = lub["density"]
+    try:
+        if not explicit & {"kinematic_viscosity", "dynamic_viscosity"}:
+            lub["kinematic_viscosity"] = float(definition.kinematic_viscosity(T, rho))
+            lub["dynamic_viscosity"] = None
+        if "pressure_viscosity_coefficient" not in explicit:
+            lub["pressure_viscosity_coefficient"] = definition.alpha(T, rho)
+    except (ValueError, FloatingPointError) as exc:
+        raise CaseError(source, key, f"{definition.name} at {T - 273.15:g} degC: {exc}") from None
+    for k in ("kinematic_viscosity", "pressure_viscosity_coefficient", "density"):
+        v = lub.get(k)
+        if v is not None and not (math.isfinite(v) and v > 0):
+            raise CaseError(source, key, f"{definition.name} at {T - 273.15:g} degC gives {k.replace('_', ' ')} {v!r}: "
+                                         "outside the range its data support")
+    return definition
 
 
 def _validate_tables(raw: dict, source: str) -> dict[str, dict[str, Any]]:
@@ -759,7 +836,10 @@ def _check_physical(case: Case, source: str) -> None:
         if oil not in traction.OILS:
             close = difflib.get_close_matches(oil, list(traction.OILS), n=1)
             hint = f"; did you mean {close[0]!r}?" if close else ""
-            raise CaseError(source, "lubricant.oil", f"unknown oil {oil!r}{hint} (known: {', '.join(traction.OILS)})")
+            from hsbearing.models.lubricant import bundled_lubricants
+
+            raise CaseError(source, "lubricant.oil", f"unknown oil {oil!r}{hint} (known: {', '.join(traction.OILS)}; "
+                            f"bundled lubricants: {', '.join(bundled_lubricants())}; or a lubricant file path ending in .toml)")
         law = case.lubricant.traction_law
         if law not in traction.KNOWN_LAWS[oil]:
             raise CaseError(source, "lubricant.traction_law",

@@ -124,6 +124,45 @@ def cmd_check(args) -> int:
     print(f"case {case.name} ({case.system}) from {case.source}: valid")
     for line in geometry.describe(case):
         print("  " + line)
+    if case.system in ("angular_contact", "deep_groove", "gyro_ribbon_cage"):
+        from hsbearing.models import lubricant
+
+        for line in lubricant.describe(case):  # the oil at the case temperature; a warning if alpha is estimated
+            print("  " + line)
+    return 0
+
+
+def cmd_oils(args) -> int:
+    """``hsbearing oils``: the bundled lubricants; ``hsbearing oils NAME --at CASE``: one oil at a case."""
+    from hsbearing import oils
+
+    if args.name is None:
+        if args.at:
+            raise CaseError("--at", None, "give the lubricant: hsbearing oils NAME --at CASE")
+        for line in oils.format_library(oils.library_rows()):
+            print(line)
+        return 0
+    if not args.at:
+        from hsbearing.models import lubricant
+
+        path = lubricant.resolve_lubricant(args.name)
+        if path is None:
+            raise CaseError(args.name, None, lubricant.unresolved_message(args.name))
+        d = lubricant.load_lubricant(path)
+        print(f"{d.name} ({d.oil_class}) from {path}")
+        print(d.text.rstrip())
+        return 0
+    if args.output:
+        from hsbearing.results import check_output_path
+
+        check_output_path(args.output)
+    case, qs, derived = oils.at_case(args.name, args.at, _parse_sets(args.set))
+    for line in oils.format_at_case(case, derived):
+        print(line)
+    stem = Path(args.name).stem
+    out = Path(args.output) if args.output else Path("runs") / f"oil-{stem}-{case.name}.png"
+    oils.plot_traction(case, qs, out)
+    print(f"figure: {out}")
     return 0
 
 
@@ -544,6 +583,14 @@ def build_parser() -> argparse.ArgumentParser:
     sp.add_argument("--target-torque", default=None, help="starting-torque window lo..hi, e.g. 90..100N*m -> preload window")
     sp.add_argument("-o", "--output", help="netCDF archive")
     sp.set_defaults(func=cmd_preload)
+
+    sp = sub.add_parser("oils", help="list the bundled lubricants; NAME --at CASE: an oil's viscosity, alpha, film "
+                                     "thickness and mu(S) at the case's contacts (quasi-static)")
+    sp.add_argument("name", nargs="?", default=None, help="bundled lubricant name or lubricant .toml file")
+    sp.add_argument("--at", metavar="CASE", help="bundled case name or case file to evaluate the oil at")
+    sp.add_argument("--set", action="append", metavar="KEY=VALUE", help="override a case value (repeatable)")
+    sp.add_argument("-o", "--output", help="PNG of mu(S) (default runs/oil-NAME-CASE.png)")
+    sp.set_defaults(func=cmd_oils)
 
     sp = sub.add_parser("plot", help="draw the figures of a run, quasi-static, friction, preload, gyro archive "
                                      "or a sweep/study summary")

@@ -2,7 +2,8 @@
 
 Literature: the specification-class points of hsbearing.models.viscosity.OIL_SPEC -- MIL-PRF-7808 grade 3
 (11.5 mm^2/s at 40 degC, 3.0 mm^2/s at 100 degC) for 4109; MIL-PRF-23699 (Mobil Jet Oil II typical
-27.6 and 5.1 mm^2/s) for 4106 and 4050 -- and seed 004's Table 1 (tests/data/seed004_oils.csv).
+27.6 and 5.1 mm^2/s) for 4106; for 4050 (issue 26) those 4106 points times Table 1's 4050/4106 viscosity
+ratio at 40 and 100 degC -- and seed 004's Table 1 (tests/data/seed004_oils.csv).
 """
 
 import math
@@ -13,11 +14,37 @@ import pytest
 from hsbearing.case import CaseError, load_case
 from hsbearing.models import ehl, traction, viscosity
 
+def _table1_ratio_independent(T_degC):
+    """eta_4050 / eta_4106 of Table 1's exponential law, from the CSV transcription (not from the package)."""
+    import csv
+    from pathlib import Path
+
+    rows = {}
+    with open(Path(__file__).parent / "data" / "seed004_oils.csv") as fh:
+        for r in csv.DictReader(line for line in fh if not line.startswith("#")):
+            rows[r["oil"]] = (float(r["eta0_Pa_s"]), float(r["beta_per_degC"]))
+    (e1, b1), (e2, b2) = rows["4050"], rows["4106"]
+    return e1 / e2 * math.exp(-(b1 - b2) * (T_degC - 27.0))
+
+
 CLASS_POINTS = {  # oil: (nu40, nu100) [mm^2/s], the published class values quoted in the module docstring
     "4109": (11.5, 3.0),
     "4106": (27.6, 5.1),
-    "4050": (27.6, 5.1),
+    # 4050 (issue 26): 4106's class points x Table 1's eta(4050)/eta(4106) at 40 and 100 degC
+    "4050": (27.6 * _table1_ratio_independent(40.0), 5.1 * _table1_ratio_independent(100.0)),
 }
+
+
+def test_4050_is_an_oil_of_its_own():
+    """Issue 26: 4050 no longer shares 4106's class curve.  Its points are 28.78 and 4.319 mm^2/s (Table 1 ratios
+    1.0428 at 40 degC, 0.8469 at 100 degC): thicker than 4106 cold, thinner hot (2.40 vs 2.94 mPa s at 130 degC
+    at 960 kg/m^3)."""
+    assert CLASS_POINTS["4050"] == pytest.approx((28.781, 4.3190), rel=1e-4)
+    eta = {o: float(viscosity.dynamic_viscosity(o, 403.15, "walther", density=960.0)) for o in ("4106", "4050")}
+    assert eta["4050"] == pytest.approx(2.401e-3, rel=2e-3) and eta["4106"] == pytest.approx(2.936e-3, rel=2e-3)
+    c6 = ehl.lubricant_parameters(load_case("zhang2016", oil="4106"))
+    c5 = ehl.lubricant_parameters(load_case("zhang2016", oil="4050"))
+    assert c5["eta"] < 0.85 * c6["eta"] and c5["alpha"] == 2.02e-8 and c6["alpha"] == 1.85e-8
 
 
 @pytest.mark.parametrize("oil", ["4109", "4106", "4050"])
@@ -48,8 +75,8 @@ def test_walther_coefficients_against_an_independent_solution():
 
 def test_table1_law_contradicts_the_class_data():
     """The reason for the walther default: over 27-180 degC Table 1's exponential law is 1.9-2.5 times the
-    MIL-PRF-7808 grade-3 class for 4109 at 27-130 degC, 3.6-5.7 times below the MIL-PRF-23699 class for
-    4106/4050 at 180 degC, and ranks 4109 above 4106 at 130 degC (3.60 vs 2.14 mPa s) where the classes
+    MIL-PRF-7808 grade-3 class for 4109 at 27-130 degC, 3.6 times below the MIL-PRF-23699 class for 4106 at
+    180 degC (4.5 times below 4050's own curve, issue 26), and ranks 4109 above 4106 at 130 degC (3.60 vs 2.14 mPa s) where the classes
     rank 4106 (5 cSt) above 4109 (3 cSt)."""
     rho = 960.0
     T = np.array([27.0, 40.0, 100.0, 130.0, 180.0]) + 273.15
@@ -57,7 +84,7 @@ def test_table1_law_contradicts_the_class_data():
     t = {o: viscosity.dynamic_viscosity(o, T, "table1") for o in traction.OILS}
     r4109 = t["4109"] / w["4109"]
     assert np.all(r4109[:4] > 1.8) and np.all(r4109[:4] < 2.6)
-    assert t["4106"][-1] < w["4106"][-1] / 3.0 and t["4050"][-1] < w["4050"][-1] / 5.0
+    assert t["4106"][-1] < w["4106"][-1] / 3.0 and t["4050"][-1] < w["4050"][-1] / 4.0
     assert t["4109"][3] > t["4106"][3] and w["4109"][3] < w["4106"][3]
     assert float(t["4109"][3]) == pytest.approx(3.604e-3, rel=1e-3) and float(t["4106"][3]) == pytest.approx(2.138e-3, rel=1e-3)
     # Table 1 misses the class data by far more than the round-off the walther law is held to

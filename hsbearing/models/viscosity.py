@@ -1,5 +1,8 @@
 """Ambient-pressure viscosity of the aviation oils 4109, 4106 and 4050 against temperature.
 
+(Oils defined in a lubricant file -- ``lubricant.file``, issue 26 -- use the same Walther relation
+through their own points: :mod:`hsbearing.models.lubricant`.)
+
 Two laws, selected by the case key ``lubricant.viscosity_law`` (decision and evidence in
 docs/traction.md, "Viscosity"):
 
@@ -38,6 +41,7 @@ __all__ = [
     "VISCOSITY_LAWS",
     "SpecPoints",
     "OIL_SPEC",
+    "table1_ratio",
     "walther_coefficients",
     "walther_kinematic_viscosity",
     "exponential_dynamic_viscosity",
@@ -61,12 +65,31 @@ class SpecPoints:
     source: str  #: where the numbers come from (docs/traction.md, "Viscosity")
 
 
+def table1_ratio(oil, ref, T):
+    """Zhang et al. 2016 Table 1 viscosity of ``oil`` over that of ``ref`` at T [K] ([1]):
+    (eta0_oil / eta0_ref) exp(-(beta_oil - beta_ref) (T - T_ref)), T_ref = 27 degC.
+
+    The ratio of two fits of one form from one source: the form's systematic error against the class
+    data (docs/traction.md, "Viscosity") largely cancels in it, unlike in either law alone.
+    """
+    from hsbearing.models.traction import OILS
+
+    a, b = OILS[oil], OILS[ref]
+    return float(a.eta0 / b.eta0 * np.exp(-(a.beta - b.beta) * (float(T) - 300.15)))
+
+
 # 4109 ("low viscosity", Table 1 beta 0.0215/degC) -> 3 cSt diester class (MIL-PRF-7808 grade 3) [4];
-# 4106, 4050 ("medium viscosity") -> 5 cSt polyol-ester class (MIL-PRF-23699) [3].
+# 4106 ("medium viscosity") -> 5 cSt polyol-ester class (MIL-PRF-23699) [3];
+# 4050 ("medium viscosity, high-temperature resistant", issue 26) -> its own points: the 4106 class points
+# times Table 1's 4050/4106 viscosity ratio at 40 and 100 degC (table1_ratio: 1.043 and 0.847), i.e.
+# 28.8 and 4.32 mm^2/s (decision and evidence: docs/traction.md, "4050 as an oil of its own").
+_NU40_23699, _NU100_23699 = 27.6e-6, 5.1e-6
 OIL_SPEC: dict[str, SpecPoints] = {
     "4109": SpecPoints("MIL-PRF-7808 grade 3", 11.5e-6, 3.0e-6, "MIL-PRF-7808L grade 3 minima [4]"),
-    "4106": SpecPoints("MIL-PRF-23699", 27.6e-6, 5.1e-6, "Mobil Jet Oil II typical (MIL-PRF-23699 STD) [3]"),
-    "4050": SpecPoints("MIL-PRF-23699", 27.6e-6, 5.1e-6, "Mobil Jet Oil II typical (MIL-PRF-23699 STD) [3]"),
+    "4106": SpecPoints("MIL-PRF-23699", _NU40_23699, _NU100_23699, "Mobil Jet Oil II typical (MIL-PRF-23699 STD) [3]"),
+    "4050": SpecPoints("4050 (Table 1 relative to 4106)", _NU40_23699 * table1_ratio("4050", "4106", 313.15),
+                       _NU100_23699 * table1_ratio("4050", "4106", 373.15),
+                       "MIL-PRF-23699 class points [3] x Table 1 eta(4050)/eta(4106) at 40 and 100 degC [1]"),
 }
 
 

@@ -1,0 +1,442 @@
+"""Lubricant definitions as data: one TOML file per oil (issue 26).
+
+A lubricant file (format: docs/traction.md, "Lubricant files"; bundled files in
+``hsbearing/lubricants/``) gives an oil's name and class, its kinematic (or dynamic) viscosity at two
+or more temperatures (Walther / ASTM D341 through them [1]), its density (a value at a stated
+temperature with a thermal-expansion coefficient, or two points), its pressure-viscosity coefficient
+(a value, ``[T, alpha]`` points, or an estimate from the So & Klaus 1980 correlation [2]), its thermal
+conductivity and the traction law it uses (one of the laws registered in
+:mod:`hsbearing.models.traction`, named by the registered oil whose laws it borrows).
+
+Every quantity is a string with units, parsed by :func:`hsbearing.case.parse_quantity`; every error is
+a :class:`hsbearing.errors.CaseError` naming the lubricant file and the key (the CLI prints it as
+``hsbearing: error: FILE: KEY: message`` and exits with code 2).
+
+How a case uses it (``hsbearing.case``): ``lubricant.file = "my_oil.toml"`` (or ``lubricant.oil`` set to
+a bundled lubricant name or a ``.toml`` path) replaces the oil.  At the case temperature T the file's
+kinematic viscosity nu(T), density rho(T) and alpha(T) fill ``lubricant.kinematic_viscosity``,
+``lubricant.density`` and ``lubricant.pressure_viscosity_coefficient`` -- unless the case gives those
+keys itself, which then win -- and ``lubricant.oil`` / ``lubricant.traction_law`` name the traction
+law.  :func:`hsbearing.models.ehl.lubricant_parameters` (the one entry point of the dynamic model, the
+quasi-static solver and the friction models) then sees eta = nu(T) rho(T) and alpha(T).
+
+References
+----------
+[1] ASTM D341: log10 log10(nu + 0.7) = A - B log10(T), nu in mm^2/s, T in K
+    (:mod:`hsbearing.models.viscosity`).
+[2] So B.Y.C., Klaus E.E., "Viscosity-pressure correlation of liquids", ASLE Trans. 23(4) (1980)
+    409-421: alpha [1e-8 1/Pa] = 1.216 + 4.143 L^3.0627 + 2.848e-4 b^5.1903 L^1.5976
+    - 3.999 L^3.0975 rho^0.1162, L = log10(nu [mm^2/s]) at the temperature of interest, rho [g/cm^3]
+    at that temperature, b the ASTM D341 slope (B above).  Constants as reproduced in tribology
+    texts; the paper itself was not re-read here (docs/traction.md, "Lubricant files").
+"""
+
+from __future__ import annotations
+
+import difflib
+import math
+import tomllib
+from dataclasses import dataclass, field
+from importlib import resources
+from pathlib import Path
+
+import numpy as np
+
+from hsbearing.errors import CaseError
+
+__all__ = [
+    "LubricantDefinition",
+    "ALPHA_ESTIMATES",
+    "bundled_lubricants",
+    "bundled_path",
+    "load_lubricant",
+    "loads_lubricant",
+    "resolve_lubricant",
+    "so_klaus_alpha",
+    "describe",
+]
+
+#: Correlations accepted as ``pressure_viscosity_coefficient = "<name>"`` (an estimate, flagged as such).
+ALPHA_ESTIMATES = ("so_klaus_1980",)
+
+#: Top-level keys of a lubricant file.
+KEYS = ("name", "class", "description", "source", "density", "density_temperature",
+        "density_temperature_coefficient", "viscosity", "viscosity_index", "pressure_viscosity_coefficient",
+        "thermal_conductivity", "traction")
+TRACTION_KEYS = ("oil", "law")
+
+WALTHER_OFFSET = 0.7  # [mm^2/s], ASTM D341 [1]
+T40, T100 = 313.15, 373.15
+
+
+def so_klaus_alpha(nu, rho, b):
+    """Pressure-viscosity coefficient from the So & Klaus 1980 correlation [2] [1/Pa].
+
+    Parameters
+    ----------
+    nu : kinematic viscosity at the temperature of interest [m^2/s] (> 1 mm^2/s)
+    rho : density at that temperature [kg/m^3]
+    b : ASTM D341 slope B of the oil [-] (:func:`hsbearing.models.viscosity.walther_coefficients`)
+    """
+    L = math.log10(float(nu) * 1e6)
+    if not L > 0.0:
+        raise ValueError(f"the So & Klaus correlation needs nu > 1 mm^2/s (got {float(nu) * 1e6:.3g} mm^2/s)")
+    r = float(rho) * 1e-3  # g/cm^3
+    a = 1.216 + 4.143 * L**3.0627 + 2.848e-4 * b**5.1903 * L**1.5976 - 3.999 * L**3.0975 * r**0.1162  # [2]
+    return a * 1e-8
+
+
+@dataclass(frozen=True)
+class LubricantDefinition:
+    """A parsed, validated lubricant file (SI)."""
+
+    name: str
+    oil_class: str
+    path: str  #: file it was read from ("<bundled>/NAME.toml" names a bundled one)
+    viscosity_points: tuple  #: ((T [K], value), ...) sorted by T
+    viscosity_kind: str  #: "kinematic" [m^2/s] or "dynamic" [Pa s]
+    traction_oil: str  #: registered oil whose traction laws the oil uses
+    traction_law: str  #: law name (KNOWN_LAWS of traction_oil)
+    description: str = ""
+    source: str = ""
+    density_ref: float | None = None  #: density at density_temperature [kg/m^3]; None: the case's lubricant.density
+    density_temperature: float = 288.15  #: [K]
+    density_coefficient: float | None = None  #: rho = rho_ref (1 - k (T - T_ref)) [1/K]; None: constant
+    alpha_value: float | None = None  #: given pressure-viscosity coefficient [1/Pa]
+    alpha_points: tuple | None = None  #: ((T [K], alpha [1/Pa]), ...), linear in T, held at the ends
+    alpha_estimate: str | None = None  #: name of the correlation (ALPHA_ESTIMATES) when estimated
+    conductivity: float | None = None  #: thermal conductivity [W/(m K)]
+    viscosity_index: float | None = None  #: VI as stated by the source (reported, not used)
+    text: str = field(default="", repr=False)  #: the file's TOML text
+
+    @property
+    def alpha_estimated(self) -> bool:
+        return self.alpha_estimate is not None
+
+    def density(self, T, fallback=None) -> float:
+        """rho(T) [kg/m^3]; the file's, or ``fallback`` (the case's lubricant.density) when it gives none."""
+        if self.density_ref is None:
+            if fallback is None:
+                raise ValueError(f"lubricant {self.name!r} gives no density and no fallback was given")
+            return float(fallback)
+        k = self.density_coefficient or 0.0
+        return float(self.density_ref * (1.0 - k * (float(T) - self.density_temperature)))
+
+    def walther(self, fallback_density=None) -> tuple[float, float]:
+        """ASTM D341 coefficients (A, B) through the viscosity points (least squares beyond two) [1]."""
+        T = np.array([p[0] for p in self.viscosity_points])
+        v = np.array([p[1] for p in self.viscosity_points])
+        if self.viscosity_kind == "dynamic":
+            v = v / np.array([self.density(t, fallback_density) for t in T])
+        z = np.log10(np.log10(v * 1e6 + WALTHER_OFFSET))
+        x = np.log10(T)
+        if len(T) == 2:  # exact through two points (as models.viscosity.walther_coefficients)
+            B = (z[0] - z[1]) / (x[1] - x[0])
+            A = z[0] + B * x[0]
+        else:
+            slope, A = np.polyfit(x, z, 1)
+            B = -slope
+        return float(A), float(B)
+
+    def kinematic_viscosity(self, T, fallback_density=None):
+        """nu(T) [m^2/s] (vectorised in T)."""
+        A, B = self.walther(fallback_density)
+        z = A - B * np.log10(np.asarray(T, dtype=float))
+        return (10.0 ** (10.0**z) - WALTHER_OFFSET) * 1e-6
+
+    def dynamic_viscosity(self, T, fallback_density=None) -> float:
+        """eta(T) = nu(T) rho(T) [Pa s]."""
+        return float(self.kinematic_viscosity(T, fallback_density)) * self.density(T, fallback_density)
+
+    def alpha(self, T, fallback_density=None) -> float:
+        """Pressure-viscosity coefficient at T [1/Pa] (given, interpolated, or estimated [2])."""
+        if self.alpha_value is not None:
+            return float(self.alpha_value)
+        if self.alpha_points is not None:
+            Ts = [p[0] for p in self.alpha_points]
+            return float(np.interp(float(T), Ts, [p[1] for p in self.alpha_points]))
+        _, B = self.walther(fallback_density)
+        return so_klaus_alpha(self.kinematic_viscosity(T, fallback_density), self.density(T, fallback_density), B)
+
+    def at(self, T, fallback_density=None) -> dict:
+        """Derived values at T: nu, rho, eta, alpha (and whether alpha is estimated)."""
+        nu = float(self.kinematic_viscosity(T, fallback_density))
+        rho = self.density(T, fallback_density)
+        return {"T": float(T), "nu": nu, "rho": rho, "eta": nu * rho, "alpha": self.alpha(T, fallback_density),
+                "alpha_estimated": self.alpha_estimated, "K": self.conductivity}
+
+
+# ----------------------------------------------------------------------------
+# bundled library
+
+
+def _bundled_dir() -> Path:
+    return Path(str(resources.files("hsbearing") / "lubricants"))
+
+
+def bundled_lubricants() -> dict[str, Path]:
+    """Bundled lubricant names -> file paths (``hsbearing/lubricants/*.toml``)."""
+    return {p.stem: p for p in sorted(_bundled_dir().glob("*.toml"))}
+
+
+def bundled_path(name: str) -> Path | None:
+    return bundled_lubricants().get(str(name))
+
+
+def resolve_lubricant(spec: str, *, base_dir: str | Path | None = None) -> Path | None:
+    """A lubricant file path from ``spec``: a path (relative to ``base_dir``, the case file's directory,
+    then to the working directory) or a bundled name; None if neither exists."""
+    spec = str(spec).strip()
+    if not spec:
+        return None
+    p = Path(spec).expanduser()
+    cands = []
+    if not p.is_absolute() and base_dir is not None:
+        cands.append(Path(base_dir) / p)
+    cands.append(p)
+    for c in cands:
+        if c.is_file():
+            return c
+    if p.suffix != ".toml" and "/" not in spec and "\\" not in spec:
+        return bundled_path(spec)
+    return None
+
+
+def unresolved_message(spec: str) -> str:
+    names = list(bundled_lubricants())
+    close = difflib.get_close_matches(str(spec), names, n=1)
+    hint = f"; did you mean {close[0]!r}?" if close else ""
+    return (f"no such lubricant file or bundled lubricant {str(spec)!r}{hint} "
+            f"(bundled: {', '.join(names)}; a file path is read relative to the case file, then the working directory)")
+
+
+# ----------------------------------------------------------------------------
+# parsing
+
+
+def load_lubricant(path: str | Path) -> LubricantDefinition:
+    """Read and validate a lubricant file; :class:`CaseError` naming the file and the key."""
+    path = Path(path)
+    src = str(path)
+    if path.is_dir():
+        raise CaseError(src, None, "is a directory, not a lubricant file")
+    try:
+        text = path.read_bytes().decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise CaseError(src, None, f"not a UTF-8 text file (byte {exc.start}); lubricant files are TOML") from None
+    except OSError as exc:
+        raise CaseError(src, None, f"cannot read the lubricant file ({exc.strerror or type(exc).__name__})") from None
+    return loads_lubricant(text, src, default_name=path.stem)
+
+
+def _q(value, kind, src, key, *, positive=True):
+    from hsbearing.case import parse_quantity
+
+    x = parse_quantity(value, kind, source=src, key=key)
+    if positive and not x > 0:
+        raise CaseError(src, key, f"must be positive, got {value!r}")
+    return x
+
+
+def _pair(item, src, key, kinds):
+    """``["40 degC", "27.6 mm^2/s"]`` -> (T [K], value SI, kind) with kind the first of ``kinds`` that parses."""
+    if not (isinstance(item, list) and len(item) == 2):
+        raise CaseError(src, key, f"expected a [temperature, value] pair like [\"40 degC\", \"27.6 mm^2/s\"], got {item!r}")
+    T = _q(item[0], "temperature", src, key)
+    last = None
+    for kind in kinds:
+        try:
+            return T, _q(item[1], kind, src, key), kind
+        except CaseError as exc:
+            last = exc
+            if "must be positive" in exc.message or "absurd" in exc.message:
+                raise
+    if len(kinds) > 1:
+        want = " or ".join(_KIND_WORDS.get(k, k) for k in kinds)
+        raise CaseError(src, key, f"{item[1]!r} is not {want}")
+    raise last
+
+
+_KIND_WORDS = {"kinematic_viscosity": "a kinematic viscosity (mm^2/s)", "dynamic_viscosity": "a dynamic viscosity (Pa*s)",
+               "pressure_coefficient": "a pressure-viscosity coefficient (1/Pa)"}
+
+
+def loads_lubricant(text: str, source: str = "<lubricant>", *, default_name: str = "") -> LubricantDefinition:
+    """Parse a lubricant file's TOML text (see :func:`load_lubricant`)."""
+    from hsbearing.models import traction
+
+    src = source
+    try:
+        raw = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise CaseError(src, None, f"malformed TOML: {exc}") from None
+    for key in raw:
+        if key not in KEYS:
+            close = difflib.get_close_matches(key, KEYS, n=1)
+            hint = f"; did you mean {close[0]!r}?" if close else ""
+            raise CaseError(src, key, f"unknown key{hint} (known: {', '.join(KEYS)})")
+
+    def text_key(key, default=""):
+        v = raw.get(key, default)
+        if not isinstance(v, str):
+            raise CaseError(src, key, f"expected a string, got {v!r}")
+        return v
+
+    name = text_key("name", default_name) or default_name
+    if not name:
+        raise CaseError(src, "name", "missing required key (the oil's name)")
+    oil_class = text_key("class")
+
+    # --- viscosity: two or more [T, nu] (or [T, eta]) points, all of one kind
+    if "viscosity" not in raw:
+        raise CaseError(src, "viscosity", 'missing required key: two or more [temperature, viscosity] points, '
+                                          'e.g. viscosity = [["40 degC", "27.6 mm^2/s"], ["100 degC", "5.1 mm^2/s"]]')
+    pts = raw["viscosity"]
+    if not isinstance(pts, list) or len(pts) < 2:
+        raise CaseError(src, "viscosity", f"expected two or more [temperature, viscosity] points, got {pts!r}")
+    parsed = [_pair(item, src, f"viscosity[{i}]", ("kinematic_viscosity", "dynamic_viscosity")) for i, item in enumerate(pts)]
+    kinds = {p[2] for p in parsed}
+    if len(kinds) > 1:
+        raise CaseError(src, "viscosity", "mixes kinematic (mm^2/s) and dynamic (Pa*s) viscosities: give one kind")
+    parsed.sort(key=lambda p: p[0])
+    Ts = [p[0] for p in parsed]
+    if len(set(Ts)) != len(Ts):
+        raise CaseError(src, "viscosity", "two points at the same temperature")
+    vals = [p[1] for p in parsed]
+    if any(b >= a for a, b in zip(vals, vals[1:])):
+        raise CaseError(src, "viscosity", "viscosity must fall as the temperature rises (ASTM D341 needs it)")
+    vkind = kinds.pop().replace("_viscosity", "")
+
+    # --- density
+    density_ref, density_T, density_k = None, 288.15, None
+    if "density" in raw:
+        d = raw["density"]
+        if isinstance(d, list):
+            if "density_temperature" in raw or "density_temperature_coefficient" in raw:
+                raise CaseError(src, "density", "give either density points or density with density_temperature(_coefficient), not both")
+            if len(d) != 2:
+                raise CaseError(src, "density", f"expected two [temperature, density] points, got {d!r}")
+            (T1, r1, _), (T2, r2, _) = (_pair(item, src, f"density[{i}]", ("density",)) for i, item in enumerate(d))
+            if T1 == T2:
+                raise CaseError(src, "density", "two points at the same temperature")
+            density_ref, density_T = r1, T1
+            density_k = -(r2 - r1) / (r1 * (T2 - T1))
+        else:
+            density_ref = _q(d, "density", src, "density")
+            if "density_temperature" in raw:
+                density_T = _q(raw["density_temperature"], "temperature", src, "density_temperature")
+            if "density_temperature_coefficient" in raw:
+                density_k = _q(raw["density_temperature_coefficient"], "temperature_coefficient", src,
+                               "density_temperature_coefficient", positive=False)
+                if not 0.0 <= density_k < 5e-3:
+                    raise CaseError(src, "density_temperature_coefficient",
+                                    f"expected 0 to 5e-3 1/K (oils: about 6e-4 to 8e-4 1/K), got {raw['density_temperature_coefficient']!r}")
+        if not 300.0 <= density_ref <= 2500.0:
+            raise CaseError(src, "density", f"{density_ref:g} kg/m^3 is not the density of a lubricant (300-2500 kg/m^3)")
+    elif "density_temperature" in raw or "density_temperature_coefficient" in raw:
+        raise CaseError(src, "density", "missing: density_temperature / density_temperature_coefficient need a density")
+
+    # --- pressure-viscosity coefficient
+    alpha_value = alpha_points = alpha_estimate = None
+    key = "pressure_viscosity_coefficient"
+    if key not in raw:
+        raise CaseError(src, key, 'missing required key: a value ("1.8e-8 1/Pa"), [temperature, value] points, '
+                                  f'or the name of a correlation ({", ".join(ALPHA_ESTIMATES)}; flagged as estimated)')
+    a = raw[key]
+    if isinstance(a, list):
+        if not a:
+            raise CaseError(src, key, "empty list")
+        ap = sorted((_pair(item, src, f"{key}[{i}]", ("pressure_coefficient",))[:2] for i, item in enumerate(a)))
+        if len({p[0] for p in ap}) != len(ap):
+            raise CaseError(src, key, "two points at the same temperature")
+        alpha_points = tuple(ap)
+    elif isinstance(a, str) and a.strip() in ALPHA_ESTIMATES:
+        alpha_estimate = a.strip()
+    elif isinstance(a, str) and a.strip() and a.strip()[0].isalpha():
+        close = difflib.get_close_matches(a.strip(), ALPHA_ESTIMATES, n=1)
+        hint = f"; did you mean {close[0]!r}?" if close else ""
+        raise CaseError(src, key, f"unknown correlation {a!r}{hint} (known: {', '.join(ALPHA_ESTIMATES)}), "
+                                  "or give a value with units such as \"1.8e-8 1/Pa\"")
+    else:
+        alpha_value = _q(a, "pressure_coefficient", src, key)
+    for v in ([alpha_value] if alpha_value is not None else []) + [p[1] for p in (alpha_points or ())]:
+        if not 1e-9 <= v <= 1e-7:
+            raise CaseError(src, key, f"{v:.3g} 1/Pa is outside 1e-9 to 1e-7 1/Pa (1 to 100 GPa^-1), the range of oils")
+
+    # --- thermal conductivity, VI
+    K = None
+    if "thermal_conductivity" in raw:
+        K = _q(raw["thermal_conductivity"], "thermal_conductivity", src, "thermal_conductivity")
+        if not 0.01 <= K <= 1.0:
+            raise CaseError(src, "thermal_conductivity", f"{K:g} W/(m K) is not an oil's (0.01-1 W/(m K); oils about 0.1-0.15)")
+    vi = raw.get("viscosity_index")
+    if vi is not None and (isinstance(vi, bool) or not isinstance(vi, (int, float))):
+        raise CaseError(src, "viscosity_index", f"expected a plain number, got {vi!r}")
+
+    # --- traction
+    tr = raw.get("traction")
+    if tr is None:
+        raise CaseError(src, "traction", "missing required table [traction] with oil = one of "
+                                         f"{', '.join(traction.OILS)} (whose registered laws the oil uses) and law")
+    if not isinstance(tr, dict):
+        raise CaseError(src, "traction", f"expected a table [traction], got {tr!r}")
+    for k in tr:
+        if k not in TRACTION_KEYS:
+            close = difflib.get_close_matches(k, TRACTION_KEYS, n=1)
+            hint = f"; did you mean 'traction.{close[0]}'?" if close else ""
+            raise CaseError(src, f"traction.{k}", f"unknown key{hint} (known: {', '.join(TRACTION_KEYS)})")
+    toil = tr.get("oil")
+    if toil is None:
+        raise CaseError(src, "traction.oil", f"missing required key (one of {', '.join(traction.OILS)}: the registered "
+                                             "oil whose traction laws this oil uses; no physical traction model yet)")
+    toil = str(toil)
+    if toil not in traction.OILS:
+        raise CaseError(src, "traction.oil", f"unknown registered oil {toil!r} (known: {', '.join(traction.OILS)})")
+    law = tr.get("law", "default")
+    if not isinstance(law, str) or law not in traction.KNOWN_LAWS[toil]:
+        raise CaseError(src, "traction.law", f"unknown traction law {law!r} for oil {toil} "
+                                             f"(known: {', '.join(traction.KNOWN_LAWS[toil])})")
+
+    d = LubricantDefinition(
+        name=name, oil_class=oil_class, path=source, viscosity_points=tuple((T, v) for T, v, _ in parsed),
+        viscosity_kind=vkind, traction_oil=toil, traction_law=law, description=text_key("description"),
+        source=text_key("source"), density_ref=density_ref, density_temperature=density_T,
+        density_coefficient=density_k, alpha_value=alpha_value, alpha_points=alpha_points,
+        alpha_estimate=alpha_estimate, conductivity=K, viscosity_index=None if vi is None else float(vi), text=text,
+    )
+    # a Walther line must come out of the points (falling viscosity, finite coefficients)
+    try:
+        A, B = d.walther(fallback_density=density_ref or 900.0)
+    except (FloatingPointError, ValueError):
+        A = B = float("nan")
+    if not (math.isfinite(A) and math.isfinite(B) and B > 0):
+        raise CaseError(src, "viscosity", "no ASTM D341 (Walther) line through these points")
+    return d
+
+
+# ----------------------------------------------------------------------------
+# description (hsbearing check / hsbearing oils)
+
+
+def describe(case) -> list[str]:
+    """Lines for ``hsbearing check``: the case's lubricant at its temperature (and a warning if alpha is estimated)."""
+    from hsbearing.models import ehl
+
+    lub = case.lubricant
+    d = getattr(lub, "definition", None)
+    lines = []
+    lp = ehl.lubricant_parameters(case)
+    T = lp["T"]
+    if d is None:
+        lines.append(f"lubricant: oil {lub.oil} (built-in), traction law {lub.traction_law}")
+    else:
+        lines.append(f"lubricant: {d.name} ({d.oil_class or 'class not given'}) from {d.path}; "
+                     f"traction: laws of oil {d.traction_oil}, law {d.traction_law}")
+    lines.append(f"  at {T - 273.15:.4g} degC: eta = {lp['eta'] * 1e3:.4g} mPa s, nu = {lp['eta'] / lub.density * 1e6:.4g} mm^2/s, "
+                 f"rho = {lub.density:.4g} kg/m^3, alpha = {lp['alpha'] * 1e9:.4g} GPa^-1")
+    if d is not None and d.density_ref is None and (case.raw or {}).get("lubricant", {}).get("density") is None:
+        lines.append(f"  note: {d.name} gives no density; the case's lubricant.density {lub.density:g} kg/m^3 is used")
+    if d is not None and d.alpha_estimated and lub.pressure_viscosity_coefficient is not None \
+            and "pressure_viscosity_coefficient" not in (case.raw or {}).get("lubricant", {}):
+        lines.append(f"  warning: alpha of {d.name} is ESTIMATED ({d.alpha_estimate} correlation), not measured")
+    return lines
