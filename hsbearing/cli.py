@@ -13,7 +13,7 @@ from pathlib import Path
 
 from hsbearing._version import __version__
 from hsbearing.case import DEFAULT_CASE, CaseError, list_cases, load_case, parse_quantity, parse_sets
-from hsbearing.errors import SolverError
+from hsbearing.errors import OutputWriteError, SolverError
 
 
 class _UsageError(Exception):
@@ -146,8 +146,8 @@ def cmd_run(args) -> int:
     duration = _duration_arg(args.duration)
     if duration is not None:
         check_output_samples(case, duration, source="--duration", key="duration")
-    out = Path(args.output) if args.output else _default_out(case, ".nc", f"duration={duration}")
-    check_output_path(out, source="-o" if args.output else "output")
+    out = Path(args.output) if args.output is not None else _default_out(case, ".nc", f"duration={duration}")
+    check_output_path(out, source="-o" if args.output is not None else "output", derived=_run_figures(out, args))
     try:
         ds = simulate(case, duration=duration, progress=not args.quiet)
     except Interrupted as exc:
@@ -155,6 +155,16 @@ def cmd_run(args) -> int:
     except SolverError as exc:
         return _run_failed(exc, out)
     return _finish_run(ds, out, args)
+
+
+def _run_figures(out: Path, args) -> list[Path]:
+    """The figures a run writes next to its archive (checked with the archive before the compute)."""
+    if getattr(args, "no_plot", False):
+        return []
+    from hsbearing.systems.angular_contact.power_figure import power_figure_path
+
+    png = out.with_suffix(".png")
+    return [png, power_figure_path(png)]
 
 
 def _run_failed(exc, out: Path) -> int:
@@ -173,9 +183,14 @@ def _run_failed(exc, out: Path) -> int:
 
 
 def _finish_run(ds, out: Path, args) -> int:
+    from hsbearing.errors import OutputWriteError
     from hsbearing.results import write_netcdf
 
-    write_netcdf(ds, out)
+    try:
+        write_netcdf(ds, out)
+    except OutputWriteError:
+        _print_summary(ds, None)  # the numbers are printed; the archive went to the fallback the error names
+        raise
     _print_summary(ds, out)
     if not args.no_plot:
         from hsbearing import plotting
@@ -210,8 +225,8 @@ def _cmd_continue(args) -> int:
         prev = open_run(src)
     except Exception as exc:  # noqa: BLE001 - any netCDF/HDF failure is bad input here
         raise CaseError(str(src), None, f"not a readable netCDF archive ({type(exc).__name__})") from None
-    out = Path(args.output) if args.output else src
-    check_output_path(out, source="-o" if args.output else "--continue")
+    out = Path(args.output) if args.output is not None else src
+    check_output_path(out, source="-o" if args.output is not None else "--continue", derived=_run_figures(out, args))
     try:
         ds = dynamics.continue_run(prev, _duration_arg(args.duration), progress=not args.quiet, source=str(src))
     except Interrupted as exc:
@@ -226,12 +241,12 @@ def cmd_quasistatic(args) -> int:
     from hsbearing.results import check_output_path, write_netcdf
 
     case = _load(args)
-    if args.output:
+    if args.output is not None:
         check_output_path(args.output)
     try:
         ds = quasi_static(case)
     except SolverError as exc:
-        if exc.partial is not None and args.output:
+        if exc.partial is not None and args.output is not None:
             write_netcdf(exc.partial, args.output)
             print(f"hsbearing: numerical failure: {exc}; partial result in {args.output}", file=sys.stderr)
         else:
@@ -246,7 +261,7 @@ def cmd_quasistatic(args) -> int:
     warn = contact_pressure_warning(p_all) if p_all else None
     if warn:
         print(warn, file=sys.stderr)
-    if args.output:
+    if args.output is not None:
         write_netcdf(ds, args.output)
         print(f"archive: {args.output}")
     return 0
@@ -269,7 +284,8 @@ def cmd_sweep(args) -> int:
     from hsbearing import sweeps
     from hsbearing.results import check_output_path
 
-    check_output_path(args.output, directory=True)
+    out = Path(args.output)
+    check_output_path(out, directory=True, derived=[out / "sweep.nc"] + ([] if args.no_figure else [out / "sweep.png"]))
     if args.scheduler:
         sweeps.check_scheduler_address(args.scheduler)
 
@@ -290,7 +306,11 @@ def cmd_study(args) -> int:
     from hsbearing import study, sweeps
     from hsbearing.results import check_output_path
 
-    check_output_path(args.output, directory=True)
+    out = Path(args.output)
+    derived = [out / "report.md", out / "report_bands.md"]
+    for t in study.load_study(args.name).tables:  # an unknown study is refused here, before anything else
+        derived += [out / f"{t['id']}.nc", out / f"{t['id']}.png", out / f"{t['id']}_bands.nc"]
+    check_output_path(out, directory=True, derived=derived)
     if args.scheduler:
         sweeps.check_scheduler_address(args.scheduler)
 
@@ -307,7 +327,7 @@ def cmd_study(args) -> int:
 def _check_output_option(args) -> None:
     from hsbearing.results import check_output_path
 
-    if getattr(args, "output", None):
+    if getattr(args, "output", None) is not None:
         check_output_path(args.output)
 
 
@@ -337,6 +357,17 @@ def cmd_preload(args) -> int:
     return wire_race.preload_command(_load(args), args)
 
 
+def _check_figure_format(output) -> None:
+    """The figure format is the file suffix; refuse one matplotlib cannot write (before anything is drawn)."""
+    from matplotlib.backend_bases import FigureCanvasBase
+
+    fmt = Path(output).suffix.lstrip(".").lower() or "png"
+    kinds = FigureCanvasBase.get_supported_filetypes()
+    if fmt not in kinds:
+        raise CaseError(f"-o {output}", None, f"figure format {fmt!r} is not supported (use one of: "
+                                              f"{', '.join(sorted(kinds))})")
+
+
 def cmd_plot(args) -> int:
     from hsbearing import plotting
     from hsbearing.results import open_run
@@ -345,6 +376,8 @@ def cmd_plot(args) -> int:
     if not path.exists():
         raise CaseError(str(path), None, "no such archive")
     _check_output_option(args)
+    if args.output is not None:
+        _check_figure_format(args.output)
     try:
         ds = open_run(path)
     except Exception as exc:
@@ -513,6 +546,9 @@ def main(argv: list[str] | None = None) -> int:
     except CaseError as exc:
         print(f"hsbearing: error: {exc}", file=sys.stderr)
         return 2
+    except OutputWriteError as exc:  # computed, but the final write failed: where the result went, exit 1
+        print(f"hsbearing: error: {exc}", file=sys.stderr)
+        return 1
     except SolverError as exc:
         print(f"hsbearing: numerical failure: {exc}", file=sys.stderr)
         return 1

@@ -45,6 +45,7 @@ Fault tolerance
 from __future__ import annotations
 
 import contextlib
+import glob
 import hashlib
 import itertools
 import json
@@ -518,10 +519,13 @@ def _write_archive(ds: xr.Dataset, rec: dict, path: Path, plan: SweepPlan, point
 
 
 def _clean_temporaries(archive_dir: Path, names: Iterable[str]) -> list[Path]:
-    """Delete leftover ``.<name>.*.tmp`` files of this sweep's archives (interrupted writes)."""
+    """Delete leftover temporary files of this sweep's archives (interrupted writes): ``.hsb-<hash of the
+    name>-*.tmp`` (:func:`hsbearing.results.temp_prefix`) and the older ``.<name>.*.tmp``."""
+    from hsbearing.results import temp_prefix
+
     removed = []
     for name in set(names):
-        for p in archive_dir.glob(f".{name}.*.tmp"):
+        for p in [*archive_dir.glob(f"{temp_prefix(name)}*.tmp"), *archive_dir.glob(f".{glob.escape(name)}.*.tmp")]:
             with contextlib.suppress(FileNotFoundError):
                 p.unlink()
                 removed.append(p)

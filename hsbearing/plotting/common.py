@@ -30,8 +30,13 @@ def save_figure(fig, path, dpi: int = 110, metadata: dict | None = None) -> Path
 
     path = Path(path)
     FigureCanvasAgg(fig)
-    with atomic_write(path, suffix=path.suffix or ".png") as tmp:
-        fig.savefig(tmp, dpi=dpi, format=(path.suffix.lstrip(".") or "png"), metadata=metadata)
+    try:
+        with atomic_write(path, suffix=path.suffix or ".png") as tmp:
+            fig.savefig(tmp, dpi=dpi, format=(path.suffix.lstrip(".") or "png"), metadata=metadata)
+    except OSError as exc:  # disk full, directory gone read-only: one line, not a traceback
+        from hsbearing.errors import OutputWriteError
+
+        raise OutputWriteError(path, exc.strerror or str(exc), note="figure not written") from None
     return path
 
 
