@@ -116,13 +116,14 @@ def _duration_arg(text: str | None) -> float | None:
 
 def _keep_interrupted(partial, out: Path) -> int:
     """Ctrl-C: keep what was computed (status "interrupted at t = ..."), say how to go on, exit 130."""
-    from hsbearing.results import write_netcdf
+    from hsbearing.results import deferred_sigint, write_netcdf
 
     if partial is not None and partial.sizes.get("time", 0) > 1:
         t = float(partial["time"].values[-1])
         partial = partial.copy()
         partial.attrs["status"] = f"interrupted at t = {t:.6g} s"  # also for integrators that say "failed ...: interrupted"
-        write_netcdf(partial, out)
+        with deferred_sigint():  # a second Ctrl-C during the save must not drop the partial run
+            write_netcdf(partial, out)
         hint = f" (continue it: hsbearing run --continue {out})" if "final_state" in partial else ""
         print(f"hsbearing: interrupted at t = {t:.6g} s; partial run in {out}{hint}", file=sys.stderr)
     else:
@@ -170,12 +171,13 @@ def _run_figures(out: Path, args) -> list[Path]:
 def _run_failed(exc, out: Path) -> int:
     """A run (or its continuation) that stopped: an interrupt reported as a solver failure exits 130 with the
     partial run kept; a numerical failure writes the partial result (if any) and exits 1."""
-    from hsbearing.results import write_netcdf
+    from hsbearing.results import deferred_sigint, write_netcdf
 
     if _is_interrupt_failure(exc):
         return _keep_interrupted(exc.partial, out)
     if exc.partial is not None:
-        write_netcdf(exc.partial, out)
+        with deferred_sigint():
+            write_netcdf(exc.partial, out)
         print(f"hsbearing: numerical failure: {exc}; partial result in {out}", file=sys.stderr)
     else:
         print(f"hsbearing: numerical failure: {exc}", file=sys.stderr)

@@ -462,6 +462,26 @@ def _write_fallback(ds: xr.Dataset, path: Path, encoding: dict) -> Path | None:
     return None
 
 
+@contextlib.contextmanager
+def deferred_sigint():
+    """Hold Ctrl-C off while the block runs: the save of a partial result after a first Ctrl-C must not be cut
+    short by a second one (two Ctrl-C 0.3 s apart used to leave no archive at all).  SIGINTs received
+    meanwhile are collected in the yielded list, not raised; the previous handler is restored afterwards.
+    Only in the main thread (signal handlers can only be set there); elsewhere nothing changes."""
+    import signal
+    import threading
+
+    got: list[int] = []
+    if threading.current_thread() is not threading.main_thread():
+        yield got
+        return
+    old = signal.signal(signal.SIGINT, lambda signum, frame: got.append(signum))
+    try:
+        yield got
+    finally:
+        signal.signal(signal.SIGINT, old)
+
+
 def open_run(path: str | os.PathLike) -> xr.Dataset:
     """Open an archive written by hsbearing, loaded into memory (the file is closed)."""
     with xr.open_dataset(path, engine="netcdf4") as ds:

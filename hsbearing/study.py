@@ -463,7 +463,7 @@ def _execute_or_collect(plans, archive_dir: Path, *, progress, backend, report_o
         for pt in plan.points:
             if pt.archive not in cache:
                 path = archive_dir / pt.archive
-                rec = sweeps._read_record(path) if path.exists() else None
+                rec = sweeps._read_record(path, pt.hash) if path.exists() else None
                 cache[pt.archive] = (dict(rec, archive=pt.archive, resumed=True) if rec is not None else
                                      {"status": STATUS_MISSING, "error": "not computed yet (report only)",
                                       "wall_time": float("nan"), "archive": "", "resumed": False, "summary": {}})

@@ -474,16 +474,22 @@ def archive_is_complete(path: str | os.PathLike) -> bool:
         return False
 
 
-def _read_record(path: Path) -> dict | None:
+def _read_record(path: Path, expected_hash: str | None = None) -> dict | None:
     """The sweep record of a point archive, or None if it is not a complete, readable archive.
 
     The whole archive is read (``load``), not only its header: bytes corrupted inside a data chunk fail
     the chunk's checksum (``fletcher32``, :func:`hsbearing.results.write_netcdf`) or its zlib stream here,
     so a resumed sweep recomputes the point instead of trusting it (issue 13, item 9).
+
+    ``expected_hash``: the point's identity (:func:`point_hash`); an archive whose own ``sweep_point_hash``
+    differs (another point's archive copied over this name, a stale file) or is missing is not this point's
+    result: None, so the point is recomputed (issue 27, class 3).
     """
     try:
         with xr.open_dataset(path, engine="netcdf4") as ds:
             if "status" not in ds.attrs:
+                return None
+            if expected_hash is not None and str(ds.attrs.get("sweep_point_hash", "")) != expected_hash:
                 return None
             ds = ds.load()
             rec = json.loads(ds.attrs["sweep_record"]) if "sweep_record" in ds.attrs else None
@@ -911,7 +917,7 @@ def execute(
             if pt.case is None or pt.archive in results or pt.archive in todo:
                 continue
             path = archive_dir / pt.archive
-            rec = _read_record(path) if path.exists() else None
+            rec = _read_record(path, pt.hash) if path.exists() else None
             if rec is not None and not (retry_failed and rec.get("status") != STATUS_OK):
                 rec = dict(rec, archive=pt.archive, resumed=True)
                 results[pt.archive] = rec

@@ -247,3 +247,41 @@ def test_read_only_directory_after_compute_keeps_result(tmp_path, monkeypatch):
         assert _files(d) == set()
     finally:
         subprocess.run(["umount", str(d)], check=False)
+
+
+# ----------------------------------------------------------------------------- a second Ctrl-C during the save
+
+
+def test_second_ctrl_c_during_the_save_keeps_the_partial_run(tmp_path, monkeypatch, capsys):
+    """First Ctrl-C stops the run; two more SIGINTs (real signals to this process) arrive while the partial
+    run is being written: the archive is still written complete, exit 130, one line naming it."""
+    import xarray as xr
+
+    from hsbearing.errors import Interrupted
+
+    t = np.linspace(0.0, 1e-3, 11)
+    partial = xr.Dataset({"cage_speed": ("time", np.full(11, 600.0))}, coords={"time": t},
+                         attrs={"status": "failed at t = 0.001 s: interrupted"})
+
+    def interrupted(*a, **k):
+        raise Interrupted(partial=partial)
+
+    real_to_netcdf = xr.Dataset.to_netcdf
+
+    def to_netcdf_with_ctrl_c(self, *a, **k):
+        os.kill(os.getpid(), signal.SIGINT)  # the second and third Ctrl-C, during the save
+        os.kill(os.getpid(), signal.SIGINT)
+        sum(range(1000))  # give the interpreter bytecodes at which a handler runs
+        return real_to_netcdf(self, *a, **k)
+
+    monkeypatch.setattr(hsbearing, "simulate", interrupted)
+    monkeypatch.setattr(xr.Dataset, "to_netcdf", to_netcdf_with_ctrl_c)
+    out = tmp_path / "part.nc"
+    rc = cli.main(["run", "-q", "--no-plot", "-o", str(out)])
+    monkeypatch.setattr(xr.Dataset, "to_netcdf", real_to_netcdf)
+    line = _one_error_line(capsys, rc, "interrupted at t = 0.001 s", re.escape(str(out)), code=130)
+    assert "partial run in" in line
+    ds = open_run(out)
+    assert ds.sizes["time"] == 11 and ds.attrs["status"].startswith("interrupted at t = 0.001")
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler  # the handler is restored
+    assert _files(tmp_path) == {"part.nc"}
