@@ -239,7 +239,56 @@ def _ureg():
 
     ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
     ureg.define("rpm = revolution / minute = r_per_min")
+    ureg.define("rps = revolution / second")
+    ureg.define("rev = revolution")
+    ureg.define("r = revolution")  # "14000 r/min", the notation of the trade (and of what hsbearing prints)
     return ureg
+
+
+#: Kinds whose SI unit pint treats as dimensionless or as 1/s, where a cycle and a radian are confused unless
+#: the angle is made explicit (issue 27): pint reads "Hz" and "1/min" as 1/s and "25 %" as 0.25 rad.
+_ANGULAR_KINDS = ("angle", "angular_speed", "frequency")
+
+
+def _has_angle_unit(q, ureg) -> bool:
+    """True if the unit of ``q`` contains an angle unit (rad, deg, revolution, turn, cycle, rpm ...)."""
+    for name in q._units:
+        _, base = ureg.get_base_units(name)
+        if "radian" in base._units:
+            return True
+    return False
+
+
+def _angular_si(q, ureg, kind: str, value: str, source: str, key: str | None) -> float:
+    """SI value of an angle [rad], an angular speed [rad/s] or a frequency [Hz = cycles/s], never confusing
+    cycles with radians.
+
+    - angle: the unit must be an angle unit (``deg``, ``rad``, ``turn``); a quoted bare number or a ratio
+      (``"0.5"``, ``"25 %"``) is refused (only zero may be written without a unit).
+    - angular speed: with an angle unit (``rad/s``, ``rpm``, ``r/min``, ``rev/s``, ``deg/s``) as written;
+      without one (``Hz``, ``1/min``, ``1/s``, ``kHz``) the number counts **revolutions** per unit time,
+      so ``"233.33 Hz"`` = 233.33 rev/s = 2 pi 233.33 rad/s and ``"14000 1/min"`` = 14000 r/min.
+    - frequency: cycles per second; an angular unit (``rad/s``, ``rpm``) is converted to cycles.
+    """
+    has_angle = _has_angle_unit(q, ureg)
+    dim = q.dimensionality
+    if kind == "angle":
+        if q.magnitude == 0 and not dim:
+            return 0.0
+        if not has_angle or dim:
+            raise CaseError(source, key, f"{value!r} is not an angle: give an angle unit, e.g. \"{q.magnitude:g} deg\" "
+                                         "(a bare number or a ratio is not read as radians)")
+        return float(q.to("radian").magnitude)
+    if dim != ureg.Quantity(1, "1/s").dimensionality:
+        raise CaseError(source, key, f"{value!r} is not {_a(kind)} (expected units like {_example_unit(kind)})")
+    if kind == "angular_speed":
+        if has_angle:
+            return float(q.to("radian/second").magnitude)
+        return float(q.to("1/second").magnitude) * 2.0 * math.pi  # revolutions per second -> rad/s
+    # frequency [Hz]: cycles per second
+    if has_angle:
+        return float(q.to("radian/second").magnitude) / (2.0 * math.pi)
+    return float(q.to("1/second").magnitude)
 
 
 def parse_quantity(value: Any, kind: str, *, source: str = "<value>", key: str | None = None) -> float:
@@ -271,8 +320,12 @@ def parse_quantity(value: Any, kind: str, *, source: str = "<value>", key: str |
     try:
         if kind == "temperature":
             out = q.to("kelvin").magnitude
+        elif kind in _ANGULAR_KINDS:
+            out = _angular_si(q, ureg, kind, value, source, key)
         else:
             out = q.to(si).magnitude
+    except CaseError:
+        raise
     except Exception:
         raise CaseError(
             source, key, f"{value!r} is not {_a(kind)} (expected units like {_example_unit(kind)})"
