@@ -760,6 +760,8 @@ def _check_physical(case: Case, source: str) -> None:
         raise CaseError(source, "cage.pocket_diameter", f"cage pocket {c.pocket_diameter*1e3:g} mm is not larger than the ball {D*1e3:g} mm")
     if b.bore_diameter is not None and b.outside_diameter is not None and b.bore_diameter >= b.outside_diameter:
         raise CaseError(source, "bearing.bore_diameter", "bore diameter must be smaller than the outside diameter")
+    if b.width is not None and b.width < D:  # before the guide lands (a narrow ring leaves no land either)
+        raise CaseError(source, "bearing.width", f"ring width {b.width * 1e3:g} mm is narrower than the ball {D * 1e3:g} mm")
     _check_guide_lands(case, source)
     if case.system in ("angular_contact", "deep_groove", "gyro_ribbon_cage"):
         from hsbearing.models import traction
@@ -862,7 +864,110 @@ def _check_possible(case: Case, source: str) -> None:
         if c.guidance == "inner_ring" and b.inner_land_diameter is not None and c.bore_diameter <= b.inner_land_diameter:
             raise CaseError(source, "bearing.inner_land_diameter", f"guide land {mm(b.inner_land_diameter)} is not "
                             f"smaller than the inner-ring guided cage bore (cage.bore_diameter {mm(c.bore_diameter)})")
+    _check_envelope(case, source)
     check_output_samples(case, source=source)
+
+
+#: Temperature envelope of the bundled oils [degC]: (pour point, lowest service temperature, highest service
+#: temperature) of the specification class each oil is read as (hsbearing.models.viscosity.OIL_SPEC):
+#: MIL-PRF-7808 (4109) and MIL-PRF-23699 (4106, 4050) turbine oils, pour points -60 / -54 degC (spec maxima),
+#: service ranges -51..204 and -40..204 degC (the specs' qualification ranges).  Beyond the service range the
+#: oil data (40/100 degC viscosities, the traction fits) are extrapolated: a warning.  Below the pour point
+#: the oil does not flow, above OIL_DECOMPOSITION_C ester base stocks decompose thermally: an error.
+OIL_TEMPERATURE_C: dict[str, tuple[float, float, float]] = {
+    "4109": (-60.0, -51.0, 204.0),
+    "4106": (-54.0, -40.0, 204.0),
+    "4050": (-54.0, -40.0, 204.0),
+}
+#: Above this [degC] no lubricating oil of the bundled classes is a liquid film (thermal decomposition of the
+#: ester base stock; flash points of the classes 210-270 degC): refused.
+OIL_DECOMPOSITION_C = 350.0
+
+
+def _free_contact_angle(b) -> float | None:
+    """Free contact angle [rad] implied by the diametral clearance (None if no clearance is given)."""
+    if b.diametral_clearance is None or b.inner_conformity is None or b.outer_conformity is None:
+        return None
+    A = (b.inner_conformity + b.outer_conformity - 1.0) * b.ball_diameter
+    c = 1.0 - b.diametral_clearance / (2.0 * A)
+    return math.acos(max(-1.0, min(1.0, c))) if c > -1.0 else math.pi
+
+
+def _check_envelope(case: Case, source: str) -> None:
+    """Impossible bearings (issue 27, class 7): whatever does not fit in the bearing's envelope."""
+    b, c = case.bearing, case.cage
+    D, dm, Z = b.ball_diameter, b.pitch_diameter, b.ball_count
+    mm = lambda x: f"{x * 1e3:g} mm"  # noqa: E731
+    if case.system in ("angular_contact", "deep_groove") and b.diametral_clearance is not None:
+        A = (b.inner_conformity + b.outer_conformity - 1.0) * D
+        alpha = _free_contact_angle(b)
+        if alpha is not None and not alpha < 0.5 * math.pi:
+            raise CaseError(source, "bearing.diametral_clearance",
+                            f"{b.diametral_clearance * 1e6:g} um gives a free contact angle of "
+                            f"{math.degrees(alpha):.4g} deg (>= 90 deg: the balls would not be held between the "
+                            f"rings); it must be below 2 (f_i + f_o - 1) D = {2 * A * 1e6:.4g} um")
+    if c is not None:
+        if c.width is not None and b.width is not None and c.width > b.width:
+            raise CaseError(source, "cage.width", f"cage width {mm(c.width)} is wider than the bearing "
+                                                  f"(bearing.width {mm(b.width)})")
+        dp = c.pocket_diameter if c.pocket_diameter is not None else (
+            D + 2.0 * c.pocket_clearance if c.pocket_clearance is not None else None)
+        if dp is not None and Z > 1:
+            chord = dm * math.sin(math.pi / Z)  # centre distance of neighbouring pockets
+            if dp >= chord:
+                key = "cage.pocket_diameter" if c.pocket_diameter is not None else "cage.pocket_clearance"
+                raise CaseError(source, key, f"{Z} pockets of {mm(dp)} overlap on the pitch circle of {mm(dm)} "
+                                             f"(neighbour spacing {chord * 1e3:.4g} mm): no cage bar is left between them")
+        if (case.system in ("angular_contact", "deep_groove") and dp is not None and c.width is not None
+                and c.width <= dp):
+            raise CaseError(source, "cage.width", f"cage width {mm(c.width)} is not wider than its pockets ({mm(dp)}): "
+                                                  "the pockets cut the cage ring through")
+        if c.pocket_depth is not None and c.pocket_depth <= 0.5 * D:
+            raise CaseError(source, "cage.pocket_depth", f"pocket depth {mm(c.pocket_depth)} is not deeper than the ball "
+                                                         f"radius {mm(0.5 * D)}: the ball does not fit the pocket")
+        if c.mass is None and c.outside_diameter and c.bore_diameter and c.width and dp is not None:
+            vol = math.pi / 4 * (c.outside_diameter**2 - c.bore_diameter**2) * c.width \
+                - Z * math.pi / 4 * dp**2 * (c.outside_diameter - c.bore_diameter) / 2
+            if not vol > 0:
+                raise CaseError(source, "cage.pocket_diameter", f"the {Z} pockets of {mm(dp)} remove the whole cage "
+                                                                "(computed cage mass 0 g): give smaller pockets or cage.mass")
+    if case.system == "angular_contact" and case.operating.axial_load < 0:
+        raise CaseError(source, "operating.axial_load",
+                        f"{case.operating.axial_load:g} N: a single angular-contact bearing carries axial load in one "
+                        "direction only (positive: the inner ring pushed along +X into its contacts); a negative load "
+                        "lifts the balls off the contact angle -- mount the bearing the other way round (give the "
+                        "load as positive)")
+    oil, T = case.lubricant.oil, case.lubricant.temperature
+    if T is not None:
+        t_c = T - 273.15
+        if t_c > OIL_DECOMPOSITION_C:  # any system: no lubricating oil film there
+            raise CaseError(source, "lubricant.temperature", f"{t_c:g} degC: no oil film at this temperature (the "
+                                                             f"turbine-oil classes decompose above ~{OIL_DECOMPOSITION_C:g} degC)")
+        if _oil_data_used(case):  # the oil's own data: below its pour point it does not flow
+            pour, _, _ = OIL_TEMPERATURE_C[oil]
+            if t_c < pour:
+                raise CaseError(source, "lubricant.temperature", f"{t_c:g} degC is below the pour point of oil {oil} "
+                                                                 f"({pour:g} degC): the oil does not flow")
+
+
+def _oil_data_used(case: Case) -> bool:
+    """The model reads the named oil's data (viscosity, traction): the angular-contact model with a bundled oil
+    (the other systems carry the oil name as a placeholder and use their own viscosity)."""
+    return (case.system == "angular_contact" and case.lubricant.oil in OIL_TEMPERATURE_C
+            and getattr(case.lubricant, "file", None) is None)
+
+
+def envelope_warnings(case: Case) -> list[str]:
+    """Values inside what is possible but outside the data behind the model (printed as warnings by the CLI)."""
+    out = []
+    oil, T = case.lubricant.oil, case.lubricant.temperature
+    if T is not None and _oil_data_used(case):
+        _, lo, hi = OIL_TEMPERATURE_C[oil]
+        t_c = T - 273.15
+        if not lo <= t_c <= hi:
+            out.append(f"lubricant.temperature: {t_c:g} degC is outside the service range of oil {oil} "
+                       f"({lo:g}..{hi:g} degC): its viscosity and traction data are extrapolated")
+    return out
 
 
 # ----------------------------------------------------------------------------

@@ -24,7 +24,17 @@ _parse_sets = parse_sets  # the older name (hsbearing.case.parse_sets)
 
 
 def _load(args) -> "object":
-    return load_case(args.case or DEFAULT_CASE, **_parse_sets(getattr(args, "set", None)))
+    case = load_case(args.case or DEFAULT_CASE, **_parse_sets(getattr(args, "set", None)))
+    _print_envelope_warnings(case)
+    return case
+
+
+def _print_envelope_warnings(case) -> None:
+    """Values that are possible but outside the data behind the model (e.g. an oil beyond its service range)."""
+    from hsbearing.case import envelope_warnings
+
+    for w in envelope_warnings(case):
+        print(f"hsbearing: warning: {case.source}: {w}", file=sys.stderr)
 
 
 def _default_out(case, suffix: str, extra: str = "") -> Path:
