@@ -47,6 +47,9 @@ __all__ = [
 #: Closed vocabulary of the bearing systems a case can describe.
 SYSTEMS = ("angular_contact", "deep_groove", "gyro_ribbon_cage", "wire_race")
 
+#: Most cage start positions of the gyro SFMC start ensemble (each one is a run of one oscillation period).
+MAX_START_POSITIONS = 64
+
 #: Dimension name -> (pint dimensionality check unit, SI unit string).
 DIMENSIONS: dict[str, str] = {
     "length": "m",
@@ -223,7 +226,7 @@ SCHEMA: dict[str, dict[str, Field]] = {
                          choices=("outer_race_control", "inner_race_control", "friction")),
         "start_positions": _f("int", "gyro model (seed 000): cage start positions of the SFMC start ensemble (extra constant-rate "
                               "starts of one oscillation_period, cage turned over -1/2..+1/2 of its pocket play); 1 = none",
-                              default=1, positive=True),
+                              default=1, positive=True, maximum=MAX_START_POSITIONS),
     },
 }
 
@@ -483,6 +486,9 @@ def list_cases() -> dict[str, str]:
 def case_path(name_or_path: str | Path) -> Path:
     """Resolve a bundled case name or a path to a file path."""
     p = Path(name_or_path)
+    bundled = _cases_dir() / f"{name_or_path}.toml"
+    if p.is_dir() and not p.suffix and bundled.exists() and p.name == str(name_or_path):
+        return bundled  # a directory that happens to carry a bundled case's name does not hide the case
     if p.suffix in (".toml", ".nc") or p.exists():
         if not p.exists():
             raise CaseError(str(p), None, "no such case file" if p.suffix == ".toml" else "no such archive")
@@ -524,6 +530,11 @@ def read_case_text(path: str | Path) -> str:
     path = Path(path)
     if path.is_dir():
         raise CaseError(str(path), None, "is a directory, not a case file")
+    from hsbearing.results import special_file_kind
+
+    kind = special_file_kind(path)  # before opening: reading a FIFO or a terminal device blocks for ever
+    if kind:
+        raise CaseError(str(path), None, f"is {kind}, not a case file (give a regular TOML file)")
     try:
         with open(path, "rb") as fh:
             head = fh.read(8)
@@ -591,7 +602,7 @@ def _parse_override_value(value: Any) -> Any:
         return value
     try:
         return tomllib.loads(f"v = {value}")["v"]
-    except tomllib.TOMLDecodeError:
+    except (tomllib.TOMLDecodeError, RecursionError):
         return value
 
 
@@ -613,11 +624,53 @@ def _build(text: str, source: str, overrides: Mapping[str, Any]) -> Case:
         raise
 
 
-def _build_checked(text: str, source: str, overrides: Mapping[str, Any]) -> Case:
+#: Deepest nesting of arrays / inline tables accepted in a case file (a case needs 3: [materials.ball]).
+MAX_TOML_DEPTH = 20
+
+
+def _toml_depth(text: str) -> int:
+    """Upper bound of the bracket nesting of ``text`` (strings and comments skipped roughly: a bound, not a parse)."""
+    depth = best = 0
+    quote = None
+    i, n = 0, len(text)
+    while i < n:
+        ch = text[i]
+        if quote:
+            if ch == "\\" and quote == '"':
+                i += 2
+                continue
+            if ch == quote or ch == "\n":
+                quote = None
+        elif ch in "\"'":
+            quote = ch
+        elif ch == "#":
+            j = text.find("\n", i)
+            i = n if j < 0 else j
+            continue
+        elif ch in "[{":
+            depth += 1
+            best = max(best, depth)
+        elif ch in "]}":
+            depth = max(0, depth - 1)
+        i += 1
+    return best
+
+
+def _toml_loads(text: str, source: str) -> dict:
+    """``tomllib.loads`` with every failure as a CaseError: malformed TOML, nesting deep enough to exhaust the
+    recursion (tomllib parses nested arrays recursively: RecursionError)."""
+    if _toml_depth(text) > MAX_TOML_DEPTH:
+        raise CaseError(source, None, f"malformed TOML: arrays/inline tables nested deeper than {MAX_TOML_DEPTH} levels")
     try:
-        raw = tomllib.loads(text)
+        return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise CaseError(source, None, f"malformed TOML: {exc}") from None
+    except RecursionError:
+        raise CaseError(source, None, "malformed TOML: nested too deeply") from None
+
+
+def _build_checked(text: str, source: str, overrides: Mapping[str, Any]) -> Case:
+    raw = _toml_loads(text, source)
     override_lines = []
     for k, v in (overrides or {}).items():
         table, leaf = resolve_key(k, source=f"{source} (override)")
@@ -704,6 +757,14 @@ def _validate_tables(raw: dict, source: str) -> dict[str, dict[str, Any]]:
     return out
 
 
+#: Conformity f = r/D at or above which a groove is no ball-bearing groove (f = 1: groove radius = ball diameter;
+#: catalogue bearings 0.505-0.58, Harris & Kotzalas, Essential Concepts of Bearing Technology, Ch. 2).
+MAX_CONFORMITY = 1.0
+
+#: Largest integer a case value may be (beyond it a float conversion overflows or loses the value).
+MAX_INTEGER = 2**53
+
+
 def _convert(v: Any, fld: Field, source: str, full: str) -> Any:
     if fld.kind == "str":
         if not isinstance(v, str):
@@ -717,6 +778,9 @@ def _convert(v: Any, fld: Field, source: str, full: str) -> Any:
         if not isinstance(v, bool):
             raise CaseError(source, full, f"expected true or false, got {v!r}")
         return v
+    if isinstance(v, int) and not isinstance(v, bool) and abs(v) > MAX_INTEGER:
+        raise CaseError(source, full, f"integer with {len(str(abs(v)))} digits is beyond any value a case can hold "
+                                      f"(at most {MAX_INTEGER:.3g})")
     if fld.kind == "int":
         if isinstance(v, bool) or not isinstance(v, int):
             raise CaseError(source, full, f"expected a whole number, got {v!r}")
@@ -747,6 +811,10 @@ def _check_physical(case: Case, source: str) -> None:
         f = getattr(b, key)
         if f is not None and f <= 0.5:
             raise CaseError(source, f"bearing.{key}", f"conformity must be > 0.5 (groove radius larger than the ball radius), got {f}")
+        if f is not None and f >= MAX_CONFORMITY:
+            raise CaseError(source, f"bearing.{key}", f"conformity {f:g} means a groove radius of {f:g} ball diameters: "
+                                                      f"not a ball-bearing groove (must be below {MAX_CONFORMITY:g}; "
+                                                      "real bearings 0.505-0.58)")
     D, dm, Z = b.ball_diameter, b.pitch_diameter, b.ball_count
     if D >= dm:
         raise CaseError(source, "bearing.ball_diameter", f"ball diameter {D*1e3:g} mm is not smaller than the pitch diameter {dm*1e3:g} mm")

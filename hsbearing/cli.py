@@ -65,6 +65,8 @@ def _print_summary(ds, out: Path | None = None) -> None:
         text = format_value(var, name)
         if name == "whirl_frequency_ratio" and note:
             text = f"not defined ({note})"
+        elif _is_nan(var):  # never a bare "nan" with exit 0: say why the value is not defined
+            text = f"n/a ({_nan_reason(name, ds)})"
         elif name in ("whirl_amplitude", "whirl_radius_max"):
             text += " (RMS radius of the cage mass-centre orbit)" if name == "whirl_amplitude" else ""
             r = float(var.values)
@@ -94,6 +96,36 @@ def _print_summary(ds, out: Path | None = None) -> None:
         print("solver: " + format_solver_stats(stats))
     if out is not None:
         print(f"archive: {out}")
+
+
+def _is_nan(var) -> bool:
+    import numpy as np
+
+    try:
+        return var.dtype.kind == "f" and bool(np.isnan(var.values))
+    except (TypeError, ValueError):
+        return False
+
+
+def _nan_reason(name: str, ds) -> str:
+    """Why a summary scalar of a run is not defined (printed instead of "nan")."""
+    if name == "sfmo" or name.startswith("sfmo_"):
+        import tomllib
+
+        try:
+            mode = tomllib.loads(str(ds.attrs.get("case_toml", ""))).get("operating", {}).get("mode", "constant")
+        except tomllib.TOMLDecodeError:
+            mode = "?"
+        if mode != "oscillation":
+            return "SFMO is the starting moment under oscillation: operating.mode = oscillation"
+        return "SFMO needs at least two reversal windows: simulate longer than two oscillation periods"
+    if name.startswith("whirl_") or name == "mean_cage_speed":
+        n = int(ds.sizes.get("time", 0))
+        return (f"fewer than 16 cage-centre samples after the transient ({n} samples in the run): simulate longer "
+                "or sample more often")
+    if name.startswith("sfmc") or name == "rfmc":
+        return "no complete starting window in the run: simulate longer"
+    return "not defined for this run"
 
 
 # ----------------------------------------------------------------------------- commands
@@ -567,11 +599,21 @@ def main(argv: list[str] | None = None) -> int:
     except KeyboardInterrupt:
         print("hsbearing: interrupted", file=sys.stderr)
         return 130
+    except (ArithmeticError, _linalg_error()) as exc:  # a singular matrix / overflow deep in a model: one line, exit 1
+        print(f"hsbearing: numerical failure: {type(exc).__name__}: {str(exc).splitlines()[0] if str(exc) else ''} "
+              "(the inputs are valid but the model cannot solve them; check the geometry and loads)", file=sys.stderr)
+        return 1
     except BrokenPipeError:
         # the reader of stdout went away (``hsbearing check ... | head -1``): not an error of ours.
         # Point stdout at /dev/null so that the interpreter's final flush does not complain.
         _silence_stdout()
         return 0
+
+
+def _linalg_error() -> type:
+    import numpy as np
+
+    return np.linalg.LinAlgError
 
 
 def _silence_stdout() -> None:

@@ -213,7 +213,10 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
         rho_e=mixture_density(case.lubricant.density, case.lubricant.oil_volume_fraction),
         C_D=opt["drag_coefficient"], v0_D=opt["drag_v0"],
         m_c=g.cage_mass, Ip_c=g.cage_axial_inertia, Id_c=g.cage_diametral_inertia,
-        R_land=lands.radius, L_land=lands.width, c_land=lands.clearance,
+        # R_land also bounds the pocket film radially (kernel: pocket_wrench R_out); a ball-piloted cage has no
+        # land (radius nan), so its own outside radius is used there (issue 27: the pocket film was NaN)
+        R_land=lands.radius if lands.count else 0.5 * (cg.outside_diameter or math.nan), L_land=lands.width,
+        c_land=lands.clearance if lands.count else 1.0,
         n_land=lands.count, a_land=abs(lands.offsets[0]) if lands.count else 0.0,
         guide={"outer_ring": 1.0, "inner_ring": 2.0}.get(lands.guidance, 0.0),
         eps_max=opt["land_eps_max"], K_land=opt["land_contact_K"],

@@ -771,13 +771,28 @@ _SCHEDULER_ADDRESS = re.compile(
     r"^(?:(?:tcp|tls|ws|wss|ucx)://)?(?:[A-Za-z0-9](?:[A-Za-z0-9.-]*[A-Za-z0-9])?|\[[0-9A-Fa-f:.]+\]):(\d{1,5})/?$")
 
 
-def check_scheduler_address(address: str) -> str:
+def check_scheduler_address(address: str, *, in_process_ok: bool = False) -> str:
     """A dask.distributed scheduler address ``[tcp://]host:port`` (also tls/ws/wss/ucx, ``inproc://``);
     CaseError naming ``--scheduler`` otherwise, at once (the client would retry an unparseable
     address until its connect timeout)."""
     a = str(address).strip()
-    if a.startswith("inproc://") and len(a) > len("inproc://"):
-        return a
+    proto = a.split("://", 1)[0].lower() if "://" in a else "tcp"
+    if proto == "inproc":  # a scheduler living in this very process (a library caller's LocalCluster(processes=False))
+        if not in_process_ok:
+            raise CaseError("--scheduler", None, f"{address!r}: an inproc:// scheduler exists only inside the process "
+                                                 "that started it; give its tcp://host:port address")
+        if len(a) > len("inproc://"):
+            return a
+    if proto == "tls":
+        raise CaseError("--scheduler", None, f"{address!r}: TLS schedulers need a security configuration (certificates) "
+                                             "that hsbearing does not pass; use a tcp:// or ws:// address (e.g. over an "
+                                             "SSH tunnel)")
+    if proto == "ucx":
+        import importlib.util
+
+        if importlib.util.find_spec("ucp") is None and importlib.util.find_spec("distributed_ucxx") is None:
+            raise CaseError("--scheduler", None, f"{address!r}: the ucx:// protocol needs ucx-py, which is not "
+                                                 "installed; use a tcp:// address")
     m = _SCHEDULER_ADDRESS.match(a)
     if not m or not 0 < int(m.group(1)) < 65536:
         raise CaseError("--scheduler", None, f"{address!r} is not a scheduler address (expected [tcp://]host:port, "
@@ -794,7 +809,7 @@ class _Dask:
     CONNECT_TIMEOUT = 15.0
 
     def __init__(self, address: str, timeout: float | None = None):
-        check_scheduler_address(address)
+        check_scheduler_address(address, in_process_ok=True)
         self.address = address
         self.timeout = self.CONNECT_TIMEOUT if timeout is None else timeout
         self.client = None
@@ -812,6 +827,9 @@ class _Dask:
                       file=sys.stderr)
         except (OSError, TimeoutError) as exc:
             raise CaseError("--scheduler", None, f"cannot connect to the dask scheduler at {self.address} ({exc})") from None
+        except (TypeError, ValueError, RuntimeError, ImportError) as exc:  # a protocol the client cannot set up
+            raise CaseError("--scheduler", None, f"cannot connect to the dask scheduler at {self.address} "
+                                                 f"({type(exc).__name__}: {str(exc).splitlines()[0] if str(exc) else ''})") from None
         return self
 
     def __exit__(self, exc_type, *exc):

@@ -64,7 +64,8 @@ def friction_command(case, args) -> int:
     print("  ".join(f"{h:>14s}" for h in head))
     for i, wi in enumerate(ds["speed"].values):
         row = [f"{_rpm(wi):14.0f}"] + [f"{ds[f'qs_power_loss_{s}'].values[i]:14.4g}" for s in srcs]
-        row += [f"{ds.qs_power_loss.values[i]:14.4g}", f"{ds.qs_friction_torque.values[i] * 1e3:14.4g}",
+        M = ds.qs_friction_torque.values[i]
+        row += [f"{ds.qs_power_loss.values[i]:14.4g}", f"{M * 1e3:14.4g}" if np.isfinite(M) else f"{'n/a (0 r/min)':>14s}",
                 f"{ds.skf_rolling_torque.values[i] * 1e3:14.4g}", f"{ds.skf_sliding_torque.values[i] * 1e3:14.4g}",
                 f"{ds.skf_total_torque.values[i] * 1e3:14.4g}", f"{ds.skf_total_torque.values[i] * abs(wi):14.4g}"]
         print("  ".join(row))
@@ -73,6 +74,8 @@ def friction_command(case, args) -> int:
     if case.friction.law == "coulomb":
         print("note: friction.law = coulomb selects the seed 003 deep-groove sliding method with a dry constant mu; it is not "
               "used for angular-contact bearings (the traction law of the oil is)")
+    if not np.all(np.isfinite(ds.qs_friction_torque.values)):
+        print("note: M = P / omega is not defined at 0 r/min (no rotation, no power): n/a")
     print("the dynamic run (hsbearing run) adds the pocket and whirling-cage losses: power_loss_<source> in its archive")
     if ds.attrs.get("warnings", "none") != "none":
         for x in str(ds.attrs["warnings"]).split(" | "):
