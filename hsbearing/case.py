@@ -242,7 +242,6 @@ def _ureg():
 
     ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
     ureg.define("rpm = revolution / minute = r_per_min")
-    ureg.define("rps = revolution / second")
     ureg.define("rev = revolution")
     ureg.define("r = revolution")  # "14000 r/min", the notation of the trade (and of what hsbearing prints)
     return ureg
