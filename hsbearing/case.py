@@ -329,6 +329,9 @@ def parse_quantity(value: Any, kind: str, *, source: str = "<value>", key: str |
     except CaseError:
         raise
     except Exception:
+        if not q._units and kind != "temperature":
+            raise CaseError(source, key, f"{value!r} has no unit: write e.g. \"{value.strip()} {_example_unit(kind)}\" "
+                                         "(no unit is assumed)") from None
         raise CaseError(
             source, key, f"{value!r} is not {_a(kind)} (expected units like {_example_unit(kind)})"
         ) from None

@@ -305,10 +305,25 @@ def cmd_quasistatic(args) -> int:
     warn = contact_pressure_warning(p_all) if p_all else None
     if warn:
         print(warn, file=sys.stderr)
+    for w in _quasistatic_warnings(case, ds):  # the limits run, friction and life print for the same state
+        print(f"warning: {w}")
     if args.output is not None:
         write_netcdf(ds, args.output)
         print(f"archive: {args.output}")
     return 0
+
+
+def _quasistatic_warnings(case, ds) -> list[str]:
+    """Contact-state warnings of a quasi-static state (shoulder truncation, film parameter), as ``friction``
+    prints them (:func:`hsbearing.contact_state.warnings_for`); the ISO 76 pressure line is printed on stderr."""
+    from hsbearing import contact_state
+
+    try:
+        state = contact_state.quasi_static_contact_state(case, ds)
+        lines = contact_state.warnings_for(ds.assign(**{k: ("ball", v) for k, v in state.items()}), case)
+    except (KeyError, ValueError):  # a system whose quasi-static Dataset lacks the contact variables
+        return []
+    return [w for w in lines if not w.startswith("maximum contact pressure")]
 
 
 def _summary_figure(nc: Path, png: Path) -> None:
@@ -439,10 +454,19 @@ def cmd_plot(args) -> int:
 # ----------------------------------------------------------------------------- parser
 
 
+class _Parser(argparse.ArgumentParser):
+    """argparse with the CLI's error contract: one line ``hsbearing: error: ...`` (no usage block), exit 2."""
+
+    def error(self, message):
+        cmd = self.prog.split(" ", 1)[1] if " " in self.prog else ""
+        hint = f" (see 'hsbearing {cmd} --help')" if cmd else " (see 'hsbearing --help')"
+        self.exit(2, f"hsbearing: error: {message}{hint}\n")
+
+
 def build_parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(prog="hsbearing", description="Dynamics and friction of rolling ball bearings.")
+    p = _Parser(prog="hsbearing", description="Dynamics and friction of rolling ball bearings.")
     p.add_argument("--version", action="version", version=f"hsbearing {__version__}")
-    sub = p.add_subparsers(dest="command", metavar="COMMAND")
+    sub = p.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
 
     def with_case(sp, optional=True, examples=""):
         if optional:
@@ -580,8 +604,9 @@ def build_parser() -> argparse.ArgumentParser:
 def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
-    if not getattr(args, "func", None):
-        parser.print_help()
+    if not getattr(args, "func", None):  # bare `hsbearing`: say what is missing, on one line
+        print("hsbearing: error: no command given (commands: cases, check, run, quasistatic, sweep, map, study, "
+              "friction, life, preload, plot; see 'hsbearing --help')", file=sys.stderr)
         return 2
     try:
         rc = int(args.func(args) or 0)

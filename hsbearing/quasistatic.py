@@ -954,6 +954,7 @@ def print_summary(ds: xr.Dataset) -> None:
     print(f"stiffness: K_xx = {K[0, 0]:.5g} N/m, K_yy = {K[1, 1]:.5g} N/m, K_zz = {K[2, 2]:.5g} N/m, "
           f"K_theta_y = {K[3, 3]:.5g} N*m/rad, K_theta_z = {K[4, 4]:.5g} N*m/rad")
     print(f"residual: ring {float(ds.residual_norm):.2e} (relative), balls {float(ds.ball_residual_norm):.2e} N")
-    stats = {k[len('solver_'):]: v for k, v in ds.attrs.items() if k.startswith("solver_")}
+    stats = {k[len('solver_'):]: v for k, v in ds.attrs.items()
+             if k.startswith("solver_") and not k.endswith("_units")}  # the NAME_units companions are not stats
     if stats:
         print("solver: " + ", ".join(f"{k}={v:.4g}" if isinstance(v, float) else f"{k}={v}" for k, v in stats.items()))

@@ -547,14 +547,26 @@ def _dir_lock(directory: Path):
     except ImportError:  # pragma: no cover - not POSIX: no lock
         yield
         return
-    fh = open(directory / LOCK_NAME, "a+")
-    try:
+    path = directory / LOCK_NAME
+    while True:
+        fh = open(path, "a+")
         try:
             fcntl.flock(fh, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except OSError:
+            fh.close()
             raise CaseError(str(directory), None, "another hsbearing sweep is running in this directory") from None
+        try:  # the file we locked must still be the one at the path (a finishing sweep unlinks it)
+            same = os.fstat(fh.fileno()).st_ino == os.stat(path).st_ino
+        except FileNotFoundError:
+            same = False
+        if same:
+            break
+        fh.close()
+    try:
         yield
     finally:
+        with contextlib.suppress(OSError):  # no empty lock file left behind (issue 27); unlinked while still held
+            os.unlink(path)
         fh.close()
 
 
@@ -1157,7 +1169,7 @@ def print_table(ds: xr.Dataset, file=None) -> None:
     from hsbearing.display import format_value
 
     file = file or sys.stdout
-    keys = [v for v in ("mean_cage_slip_ratio", "whirl_amplitude", "classification", "mean_inner_contact_load",
+    keys = [v for v in ("mean_cage_slip_ratio", "mean_cage_slip_ratio_raceway_control", "whirl_amplitude", "classification", "mean_inner_contact_load",
                         "mean_outer_contact_load", "cage_speed", "sfmc", "sfmc_ensemble_mean", "sfmc_ensemble_sd",
                         "sfmo", "sfmo_stderr", "rfmc") if v in ds]
     dims = ds["status"].dims

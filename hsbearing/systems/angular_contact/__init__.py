@@ -88,7 +88,10 @@ def friction_command(case, args) -> int:
 
 
 def archive_kind(ds) -> str | None:
-    """``"run"`` (a time series) or ``"quasistatic"`` (per-ball contact loads): the fallback kinds, asked last."""
+    """``"friction_angular_contact"`` (``hsbearing friction`` of an angular-contact case: dim ``speed``,
+    ``qs_power_loss``), ``"run"`` (a time series) or ``"quasistatic"`` (per-ball contact loads): asked last."""
+    if "speed" in ds.dims and "qs_power_loss" in ds and "sliding_torque" not in ds:
+        return "friction_angular_contact"
     if "time" in ds.dims:
         return "run"
     if "inner_contact_load" in ds or "outer_contact_load" in ds:
@@ -100,6 +103,12 @@ def _plot_dynamic(ds, path):
     from hsbearing.systems.angular_contact.figures import plot_dynamic
 
     return plot_dynamic(ds, path)
+
+
+def _plot_friction(ds, path):
+    from hsbearing.systems.angular_contact.figures import plot_friction_angular_contact
+
+    return plot_friction_angular_contact(ds, path)
 
 
 def _plot_quasistatic(ds, path):
@@ -117,5 +126,6 @@ SYSTEM = System(
     description="angular-contact ball bearing: 6-DOF dynamics with cage (seed 004), quasi-static equilibrium",
     friction=friction_command, simulate=simulate, build_model=build_model, summary_lines=summary_lines,
     run_summary=run_summary, archive_kind=archive_kind, fallback=True,
-    figures={"run": _plot_dynamic, "quasistatic": _plot_quasistatic}, register_outputs=_register_outputs,
+    figures={"run": _plot_dynamic, "quasistatic": _plot_quasistatic, "friction_angular_contact": _plot_friction},
+    register_outputs=_register_outputs,
 )
