@@ -285,3 +285,55 @@ def test_second_ctrl_c_during_the_save_keeps_the_partial_run(tmp_path, monkeypat
     assert ds.sizes["time"] == 11 and ds.attrs["status"].startswith("interrupted at t = 0.001")
     assert signal.getsignal(signal.SIGINT) is signal.default_int_handler  # the handler is restored
     assert _files(tmp_path) == {"part.nc"}
+
+
+def test_map_derived_paths_checked_before_compute(work, capsys):
+    (work / "m" / "map.nc").mkdir(parents=True)
+    rc = cli.main(["map", "--x", "axial_load=100,200N", "--y", "oil=4109,4106", "-o", "m"])
+    _one_error_line(capsys, rc, r"derived output m/map.nc\): is a directory")
+
+
+def test_disk_full_mid_sweep_keeps_the_point(tmp_path, monkeypatch):
+    """A sweep whose output disk fills up after the first archive (a 1 MB tmpfs filled by another writer): the
+    second archive cannot be written; the sweep stops with OutputWriteError naming the fallback file that holds
+    that point's result, the first archive is intact, no temporary is left (before: 'NetCDF: HDF error'
+    traceback, the point lost).  The directory made read-only mid-write is test_read_only_directory_... (a
+    remount is refused while the sweep holds its lock file open)."""
+    import tempfile
+
+    out, fb = tmp_path / "out", tmp_path / "fb"
+    out.mkdir()
+    fb.mkdir()
+    m = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=1m", "tmpfs", str(out)], capture_output=True, text=True)
+    if m.returncode != 0:
+        pytest.skip(f"cannot mount a tmpfs here ({m.stderr.strip()})")
+    monkeypatch.setenv("TMPDIR", str(fb))
+    monkeypatch.setattr(tempfile, "tempdir", None)
+    calls = []
+    real = hsbearing.quasi_static
+
+    def point(case, duration):
+        if calls:  # another writer fills the disk
+            with open(out / "filler", "wb") as fh:
+                try:
+                    while True:
+                        fh.write(b"\0" * 65536)
+                        fh.flush()
+                except OSError:
+                    pass
+        calls.append(case.operating.axial_load)
+        return real(case)
+
+    try:
+        with pytest.raises(OutputWriteError) as ei:
+            hsbearing.sweep("zhang2016", {"axial_load": "100,200N"}, out_dir=out, kind="quasistatic", jobs=1,
+                            progress=False, point_fn=point)
+        assert "disk full" in str(ei.value)
+        saved = Path(ei.value.saved_to)
+        assert saved.parent == fb
+        assert "200" in open_run(saved).attrs["sweep_overrides"]
+        archives = [p for p in out.iterdir() if p.suffix == ".nc"]
+        assert len(archives) == 1 and open_run(archives[0]).attrs["status"] == "ok"
+        assert not [p for p in out.iterdir() if p.name.endswith(".tmp")]
+    finally:
+        subprocess.run(["umount", str(out)], check=False)
