@@ -94,3 +94,42 @@ def test_plotting_imports_no_system_figures_by_name():
     assert plotting.plot_gyro is figure_functions()["gyro"]
     assert plotting.plot_friction is figure_functions()["friction"]
     assert plotting.plot_preload is figure_functions()["preload"]
+
+
+def _capture(monkeypatch, module, attr="save_figure"):
+    figs = []
+
+    def keep(fig, path, *a, **k):
+        figs.append(fig)
+        return Path(path)
+
+    monkeypatch.setattr(module, attr, keep)
+    return figs
+
+
+def test_quasistatic_figure_numbers_balls_from_zero(monkeypatch, tmp_path):
+    """Balls are 0..Z-1 in the archive and the printed table; the figure numbered them 1..Z."""
+    import hsbearing
+    from hsbearing import plotting
+    from hsbearing.plotting import common
+
+    figs = _capture(monkeypatch, common)
+    ds = hsbearing.quasi_static(hsbearing.load_case("zhang2016"))
+    plotting.plot_run(ds, tmp_path / "q.png")
+    ax1 = figs[0].axes[0]
+    assert list(ax1.get_xticks()) == list(range(ds.sizes["ball"])) == list(ds["ball"].values)
+
+
+def test_power_figure_legend_leaves_the_drive_line_free(monkeypatch, tmp_path):
+    import hsbearing
+    from hsbearing import plotting
+    from hsbearing.systems.angular_contact import power_figure
+
+    ds = hsbearing.simulate(hsbearing.load_case("zhang2016"), duration=0.004)
+    figs = _capture(monkeypatch, plotting)
+    power_figure.plot_power(ds, tmp_path / "p.png")
+    ax = figs[0].axes[0]
+    drive = max(line.get_ydata().max() for line in ax.get_lines())
+    stacked = max(c.get_paths()[0].vertices[:, 1].max() for c in ax.collections)
+    y0, y1 = ax.get_ylim()
+    assert y1 >= max(drive, stacked) + 0.5 * (max(drive, stacked) - y0)  # the upper third is the legend's

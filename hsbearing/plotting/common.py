@@ -128,12 +128,13 @@ def _wrap(text: str, width: int) -> str:
 
 
 def _per_ball_axes(ax, nb, ylabel: str, title: str, grid_axis: str) -> None:
-    """Labels, ball ticks 1..nb, legend and grid of a per-ball panel."""
+    """Labels, ball ticks 0..nb-1 (the ``ball`` coordinate of the archives and the printed tables), legend and
+    grid of a per-ball panel."""
     ax.set_xlabel("ball")
     ax.set_ylabel(ylabel)
     ax.set_title(title, fontsize=10)
     if nb:
-        ax.set_xticks(np.arange(1, nb + 1))
+        ax.set_xticks(np.arange(nb))
         ax.legend(fontsize=8)
     ax.grid(alpha=0.3, axis=grid_axis)
 

@@ -209,14 +209,14 @@ def _plot_static(ds, path: Path) -> Path:
         if name in ds:
             q = np.atleast_1d(np.asarray(ds[name].values, float))
             nb = len(q)
-            x = np.arange(1, nb + 1)
+            x = np.arange(nb)  # balls 0..Z-1, as in the archive and the printed table (issue 27)
             off = -0.2 if "inner" in name else 0.2
             ax1.bar(x + off, q, width=0.4, color=c, label=lab)
     _per_ball_axes(ax1, nb, "contact load [N]", "contact loads per ball", grid_axis="y")
     for name, lab, c in (("inner_contact_angle", "inner race $\\alpha_i$", "C0"), ("outer_contact_angle", "outer race $\\alpha_o$", "C1")):
         if name in ds:
             a = np.degrees(np.atleast_1d(np.asarray(ds[name].values, float)))
-            ax2.plot(np.arange(1, len(a) + 1), a, "o-", color=c, label=lab)
+            ax2.plot(np.arange(len(a)), a, "o-", color=c, label=lab)
     _per_ball_axes(ax2, nb, "contact angle [\N{DEGREE SIGN}]", "contact angles per ball", grid_axis="both")
     return common.save_figure(fig, path)
 
