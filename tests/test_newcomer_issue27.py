@@ -133,3 +133,11 @@ def test_power_figure_legend_leaves_the_drive_line_free(monkeypatch, tmp_path):
     stacked = max(c.get_paths()[0].vertices[:, 1].max() for c in ax.collections)
     y0, y1 = ax.get_ylim()
     assert y1 >= max(drive, stacked) + 0.5 * (max(drive, stacked) - y0)  # the upper third is the legend's
+
+
+def test_preload_window_line_carries_the_pressure_caveat(capsys):
+    assert cli.main(["preload", "shan2010_wire_race", "--preload", "10..160um", "--target-torque", "90..100N*m"]) == 0
+    out = capsys.readouterr().out
+    line = next(ln for ln in out.splitlines() if ln.startswith("preload window for"))
+    m = re.search(r"caveat: maximum contact pressure there ([0-9.]+)-([0-9.]+) GPa, above the 4.2 GPa of ISO 76", line)
+    assert m and 10 < float(m.group(1)) <= float(m.group(2)) < 12, line
