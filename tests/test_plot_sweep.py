@@ -327,3 +327,16 @@ def test_the_class_map_cells_and_the_paper_check_marks():
     assert "same label as the paper in 2 of 3 classified cells" in cmap.get_title()
     assert "paper_agreement=2/3" in meta["Description"]
     assert [t.get_text() for t in cmap.get_yticklabels()] == ["oil 4106", "oil 4109"]  # first oil on top
+
+
+def test_slip_panel_shows_raceway_control_beside_nominal():
+    """Issue 27: the sweep figure showed the slip against the nominal contact angle only (-10.6 % at 100 N reads
+    as an overspeed); the raceway-control slip is drawn beside it, as `run` prints it."""
+    summ = [dict(_dyn(i), mean_cage_slip_ratio=-0.106 + 0.05 * i, mean_cage_slip_ratio_raceway_control=0.01 * i)
+            for i in range(3)]
+    ds = _summary({"axial_load": "100,500,1000N"}, summ)
+    prep = plotting._prepare_sweep(ds)
+    title, unit, items = prep["panels"][0]
+    assert title == "mean cage slip ratio"
+    assert [it[0] for it in items] == ["mean_cage_slip_ratio", "mean_cage_slip_ratio_raceway_control"]
+    np.testing.assert_allclose(items[0][3].ravel(), [-10.6, -5.6, -0.6])

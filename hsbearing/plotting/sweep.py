@@ -43,7 +43,11 @@ MAX_ORDERED_SERIES = 30
 # drawing order (friction moments first for a gyro sweep); a panel is drawn only if one of its variables is
 # present with a finite value at an ok point.
 _SWEEP_PANELS = (
-    ("mean cage slip ratio", "slip ratio [%]", 100.0, (("mean_cage_slip_ratio", None, "-"),)),
+    # the slip against the nominal contact angle reads as an overspeed at light load (-10.6 % at 100 N); the
+    # raceway-control slip (epicyclic speed at the running contact angles, as `run` prints) is drawn beside it
+    ("mean cage slip ratio", "slip ratio [%]", 100.0, (("mean_cage_slip_ratio", "vs nominal contact angle", "-"),
+                                                       ("mean_cage_slip_ratio_raceway_control",
+                                                        "vs raceway control (running angles)", "--"))),
     ("cage whirl radius", "whirl radius [\u00b5m]", 1e6, (("whirl_amplitude", "RMS (whirl amplitude)", "-"),
                                                            ("whirl_radius_max", "max", ":"))),
     ("whirl frequency / cage speed", "frequency ratio [-]", 1.0, (("whirl_frequency_ratio", None, "-"),)),
