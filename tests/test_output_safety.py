@@ -337,3 +337,26 @@ def test_disk_full_mid_sweep_keeps_the_point(tmp_path, monkeypatch):
         assert not [p for p in out.iterdir() if p.name.endswith(".tmp")]
     finally:
         subprocess.run(["umount", str(out)], check=False)
+
+
+def test_run_disk_full_after_integrating_keeps_the_run(tmp_path):
+    """`hsbearing run` whose output disk is full once the integration is done: the summary is printed, the run
+    goes to the fallback file, one line says where, exit 1, nothing half-written on the full disk."""
+    out, fb = tmp_path / "small", tmp_path / "fallback"
+    out.mkdir()
+    fb.mkdir()
+    m = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=64k", "tmpfs", str(out)], capture_output=True, text=True)
+    if m.returncode != 0:
+        pytest.skip(f"cannot mount a small tmpfs here ({m.stderr.strip()})")
+    try:
+        r = _cli_subprocess(["run", "--duration", "0.002s", "-q", "--no-plot", "-o", str(out / "r.nc")],
+                            cwd=tmp_path, tmpdir=fb)
+        line = _one_error_line(r.stderr, r.returncode, re.escape(f"cannot write {out / 'r.nc'}"),
+                               "the result was saved to", code=1)
+        assert re.search(r"^status: ok$", r.stdout, re.M) and "mean_cage_speed:" in r.stdout
+        saved = Path(line.rsplit("saved to ", 1)[1].removesuffix(" instead"))
+        ds = open_run(saved)
+        assert float(ds.time[-1]) == pytest.approx(0.002) and "final_state" in ds
+        assert _files(out) == set()
+    finally:
+        subprocess.run(["umount", str(out)], check=False)
