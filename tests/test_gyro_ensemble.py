@@ -244,3 +244,15 @@ def test_ensemble_follows_duration_and_reuses_the_default_start(monkeypatch):
     assert ds.attrs["start_ensemble_duration_s"] == pytest.approx(0.1)
     offs = list(ds["start_offset"].values)
     assert float(ds["sfmc_ensemble"].values[offs.index(0.0)]) == float(ds["sfmc"])
+
+
+def test_gyro_figure_title_shows_the_ensemble(monkeypatch, tmp_path):
+    from hsbearing.plotting import common
+    from hsbearing.systems.gyro.figures import plot_gyro
+
+    figs = []
+    monkeypatch.setattr(common, "save_figure", lambda fig, path, *a, **k: figs.append(fig) or path)
+    ds = gyro.simulate(_case(**{"simulation.start_positions": "3"}), duration=0.05)
+    plot_gyro(ds, tmp_path / "g.png")
+    title = figs[0]._suptitle.get_text().replace("\n", " ")
+    assert "SFMC over 3 start positions" in title and "mean +/- sd" in title, title

@@ -340,3 +340,17 @@ def test_slip_panel_shows_raceway_control_beside_nominal():
     assert title == "mean cage slip ratio"
     assert [it[0] for it in items] == ["mean_cage_slip_ratio", "mean_cage_slip_ratio_raceway_control"]
     np.testing.assert_allclose(items[0][3].ravel(), [-10.6, -5.6, -0.6])
+
+
+def test_gyro_sweep_title_names_no_varied_key_as_fixed_and_no_unused_oil():
+    """Issue 27: the gyro sweep title named the varied outer-ring speed as fixed and an oil the model does not use,
+    and was clipped (now wrapped)."""
+    summ = [{"sfmc": 2e-6 + 1e-7 * i, "rfmc": 1e-6} for i in range(2)]
+    ds = _summary({"operating.outer_speed": "2,5rpm"}, summ, case="jiang2014_gyro")
+    prep = plotting._prepare_sweep(ds)
+    from hsbearing.plotting.sweep import _sweep_title
+
+    title = _sweep_title(ds, prep)
+    fixed = title.split("fixed: ", 1)[1] if "fixed: " in title else ""
+    assert "outer ring" not in fixed and "oil" not in title.lower(), title
+    assert all(len(line) <= 110 for line in title.splitlines()), title

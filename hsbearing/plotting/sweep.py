@@ -338,19 +338,27 @@ def _sweep_title(ds, prep) -> str:
         if str(c).endswith("_label") and ds[c].dims == ("point",):
             keys.add(ds[str(c)[:-6]].attrs.get("case_key", str(c)[:-6]) if str(c)[:-6] in ds.coords else str(c)[:-6])
     lab = _case_labels(ds)
+    if ds.attrs.get("case_system", "angular_contact") != "angular_contact":
+        lab.pop("oil", None)  # the other systems carry the oil name as a placeholder: their models do not use it
     if lab.get("speed") == "n = 0 r/min":  # outer ring rotating (gyro bearings): show the outer-ring speed
         lab.pop("speed")
+        if "operating.outer_speed" in keys or "outer_speed" in keys:  # varied: not a fixed condition
+            n_o_varied = True
+        else:
+            n_o_varied = False
         from hsbearing.case import CaseError, parse_quantity
 
         try:
             n_o = parse_quantity(tomllib.loads(ds.attrs["case_toml"])["operating"]["outer_speed"], "angular_speed")
         except (KeyError, tomllib.TOMLDecodeError, CaseError):  # no case text or no outer speed: nothing to add
             n_o = 0.0
-        if n_o:
+        if n_o and not n_o_varied:
             lab["speed"] = f"outer ring n$_o$ = {n_o * _RPM:.3g} r/min"
     fixed = [lab[v] for k, v in _LABEL_KEYS.items() if v in lab and k not in keys and v not in keys]
     line2 = "varied: " + ", ".join(varied) + ("; fixed: " + ", ".join(fixed) if fixed else "")
-    return line1 + "\n" + line2
+    import textwrap
+
+    return "\n".join(textwrap.wrap(line1, 110) + textwrap.wrap(line2, 110))  # long titles wrap, never clip
 
 
 def _series_colours(prep):
