@@ -178,7 +178,8 @@ def cli_main(args) -> int:
     from hsbearing.sweeps import check_scheduler_address
 
     check_output_path(out, directory=True,  # the derived outputs too, before any point runs (issue 27)
-                      derived=[out / "map.nc"] + ([] if getattr(args, "no_figure", False) else [out / "map.png"]))
+                      derived=[out / "map.nc", out / "sweep.nc"]
+                      + ([] if getattr(args, "no_figure", False) else [out / "map.png"]))
     if args.scheduler:
         check_scheduler_address(args.scheduler)
     plan = plan_sweep(case, vary, duration=args.duration)
