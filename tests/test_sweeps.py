@@ -590,3 +590,18 @@ def test_resume_recomputes_an_archive_without_point_identity(tmp_path, monkeypat
     again = _qs_sweep(tmp_path, {"axial_load": "100,500N"}, jobs=1)
     assert list(again["resumed"].values) == [1, 0]
     np.testing.assert_allclose(again["mean_inner_contact_load"].values, first["mean_inner_contact_load"].values)
+
+
+def test_resume_cleans_the_short_temporary_names(tmp_path):
+    """Temporaries are now `.hsb-<hash of the name>-<random>.tmp` (a name that fits whenever the archive's fits);
+    a resumed sweep removes its own leftovers of that form and leaves another output's alone."""
+    from hsbearing.results import temp_prefix
+
+    ds = _qs_sweep(tmp_path, {"axial_load": "100,500N"})
+    mine = tmp_path / f"{temp_prefix(str(ds['archive'].values[0]))}abc123.tmp"
+    other = tmp_path / f"{temp_prefix('someone-else.nc')}xyz.tmp"
+    mine.write_bytes(b"half")
+    other.write_bytes(b"")
+    _qs_sweep(tmp_path, {"axial_load": "100,500N"})
+    assert not mine.exists() and other.exists()
+    assert len(temp_prefix("x" * 255)) < 20
