@@ -22,6 +22,7 @@ import dataclasses
 import difflib
 import functools
 import math
+import os
 import re
 import tomllib
 from dataclasses import dataclass
@@ -523,6 +524,21 @@ def load_case(name_or_path: str | Path | None = None, /, **overrides) -> Case:
     return _build(read_case_text(path), str(path), overrides)
 
 
+def _special_file_kind(path) -> str | None:
+    """What ``path`` is when it exists and is neither a regular file nor a directory (device, FIFO, socket)."""
+    import stat
+
+    try:
+        mode = os.stat(path).st_mode
+    except (OSError, ValueError):
+        return None
+    for test, name in ((stat.S_ISCHR, "a character device"), (stat.S_ISBLK, "a block device"),
+                       (stat.S_ISFIFO, "a FIFO (named pipe)"), (stat.S_ISSOCK, "a socket")):
+        if test(mode):
+            return name
+    return None if (stat.S_ISREG(mode) or stat.S_ISDIR(mode)) else "not a regular file"
+
+
 def read_case_text(path: str | Path) -> str:
     """The TOML text of a case file, or of the case stored in an hsbearing archive (``.nc``).
 
@@ -532,9 +548,7 @@ def read_case_text(path: str | Path) -> str:
     path = Path(path)
     if path.is_dir():
         raise CaseError(str(path), None, "is a directory, not a case file")
-    from hsbearing.results import special_file_kind
-
-    kind = special_file_kind(path)  # before opening: reading a FIFO or a terminal device blocks for ever
+    kind = _special_file_kind(path)  # before opening: reading a FIFO or a terminal device blocks for ever
     if kind:
         raise CaseError(str(path), None, f"is {kind}, not a case file (give a regular TOML file)")
     try:

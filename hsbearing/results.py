@@ -225,25 +225,12 @@ def final_target(path: str | os.PathLike) -> Path:
     return path
 
 
-def _kind_of(mode: int) -> str | None:
-    """None for a regular file or a directory, else what the special file is."""
-    import stat
-
-    for test, name in ((stat.S_ISCHR, "a character device"), (stat.S_ISBLK, "a block device"),
-                       (stat.S_ISFIFO, "a FIFO (named pipe)"), (stat.S_ISSOCK, "a socket")):
-        if test(mode):
-            return name
-    return None if (stat.S_ISREG(mode) or stat.S_ISDIR(mode)) else "not a regular file"
-
-
 def special_file_kind(path: str | os.PathLike) -> str | None:
     """What ``path`` is if it exists (following symbolic links) and is neither a regular file nor a directory
     (a device node, a FIFO, a socket), else None."""
-    try:
-        st = os.stat(path)
-    except (OSError, ValueError):
-        return None
-    return _kind_of(st.st_mode)
+    from hsbearing.case import _special_file_kind
+
+    return _special_file_kind(path)
 
 
 class atomic_write:
