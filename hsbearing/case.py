@@ -22,6 +22,7 @@ import dataclasses
 import difflib
 import functools
 import math
+import os
 import re
 import tomllib
 from dataclasses import dataclass
@@ -46,6 +47,9 @@ __all__ = [
 
 #: Closed vocabulary of the bearing systems a case can describe.
 SYSTEMS = ("angular_contact", "deep_groove", "gyro_ribbon_cage", "wire_race")
+
+#: Most cage start positions of the gyro SFMC start ensemble (each one is a run of one oscillation period).
+MAX_START_POSITIONS = 64
 
 #: Dimension name -> (pint dimensionality check unit, SI unit string).
 DIMENSIONS: dict[str, str] = {
@@ -264,7 +268,7 @@ SCHEMA: dict[str, dict[str, Field]] = {
                       choices=("transverse", "cage_revolution", "plane")),
         "start_positions": _f("int", "gyro model (seed 000): cage start positions of the SFMC start ensemble (extra constant-rate "
                               "starts of one oscillation_period, cage turned over -1/2..+1/2 of its pocket play); 1 = none",
-                              default=1, positive=True),
+                              default=1, positive=True, maximum=MAX_START_POSITIONS),
     },
 }
 
@@ -280,7 +284,55 @@ def _ureg():
 
     ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
     ureg.define("rpm = revolution / minute = r_per_min")
+    ureg.define("rev = revolution")
+    ureg.define("r = revolution")  # "14000 r/min", the notation of the trade (and of what hsbearing prints)
     return ureg
+
+
+#: Kinds whose SI unit pint treats as dimensionless or as 1/s, where a cycle and a radian are confused unless
+#: the angle is made explicit (issue 27): pint reads "Hz" and "1/min" as 1/s and "25 %" as 0.25 rad.
+_ANGULAR_KINDS = ("angle", "angular_speed", "frequency")
+
+
+def _has_angle_unit(q, ureg) -> bool:
+    """True if the unit of ``q`` contains an angle unit (rad, deg, revolution, turn, cycle, rpm ...)."""
+    for name in q._units:
+        _, base = ureg.get_base_units(name)
+        if "radian" in base._units:
+            return True
+    return False
+
+
+def _angular_si(q, ureg, kind: str, value: str, source: str, key: str | None) -> float:
+    """SI value of an angle [rad], an angular speed [rad/s] or a frequency [Hz = cycles/s], never confusing
+    cycles with radians.
+
+    - angle: the unit must be an angle unit (``deg``, ``rad``, ``turn``); a quoted bare number or a ratio
+      (``"0.5"``, ``"25 %"``) is refused (only zero may be written without a unit).
+    - angular speed: with an angle unit (``rad/s``, ``rpm``, ``r/min``, ``rev/s``, ``deg/s``) as written;
+      without one (``Hz``, ``1/min``, ``1/s``, ``kHz``) the number counts **revolutions** per unit time,
+      so ``"233.33 Hz"`` = 233.33 rev/s = 2 pi 233.33 rad/s and ``"14000 1/min"`` = 14000 r/min.
+    - frequency: cycles per second; an angular unit (``rad/s``, ``rpm``) is converted to cycles.
+    """
+    has_angle = _has_angle_unit(q, ureg)
+    dim = q.dimensionality
+    if kind == "angle":
+        if q.magnitude == 0 and not dim:
+            return 0.0
+        if not has_angle or dim:
+            raise CaseError(source, key, f"{value!r} is not an angle: give an angle unit, e.g. \"{q.magnitude:g} deg\" "
+                                         "(a bare number or a ratio is not read as radians)")
+        return float(q.to("radian").magnitude)
+    if dim != ureg.Quantity(1, "1/s").dimensionality:
+        raise CaseError(source, key, f"{value!r} is not {_a(kind)} (expected units like {_example_unit(kind)})")
+    if kind == "angular_speed":
+        if has_angle:
+            return float(q.to("radian/second").magnitude)
+        return float(q.to("1/second").magnitude) * 2.0 * math.pi  # revolutions per second -> rad/s
+    # frequency [Hz]: cycles per second
+    if has_angle:
+        return float(q.to("radian/second").magnitude) / (2.0 * math.pi)
+    return float(q.to("1/second").magnitude)
 
 
 def parse_quantity(value: Any, kind: str, *, source: str = "<value>", key: str | None = None) -> float:
@@ -312,9 +364,16 @@ def parse_quantity(value: Any, kind: str, *, source: str = "<value>", key: str |
     try:
         if kind == "temperature":
             out = q.to("kelvin").magnitude
+        elif kind in _ANGULAR_KINDS:
+            out = _angular_si(q, ureg, kind, value, source, key)
         else:
             out = q.to(si).magnitude
+    except CaseError:
+        raise
     except Exception:
+        if not q._units and kind != "temperature":
+            raise CaseError(source, key, f"{value!r} has no unit: write e.g. \"{value.strip()} {_example_unit(kind)}\" "
+                                         "(no unit is assumed)") from None
         raise CaseError(
             source, key, f"{value!r} is not {_a(kind)} (expected units like {_example_unit(kind)})"
         ) from None
@@ -479,6 +538,9 @@ def list_cases() -> dict[str, str]:
 def case_path(name_or_path: str | Path) -> Path:
     """Resolve a bundled case name or a path to a file path."""
     p = Path(name_or_path)
+    bundled = _cases_dir() / f"{name_or_path}.toml"
+    if p.is_dir() and not p.suffix and bundled.exists() and p.name == str(name_or_path):
+        return bundled  # a directory that happens to carry a bundled case's name does not hide the case
     if p.suffix in (".toml", ".nc") or p.exists():
         if not p.exists():
             raise CaseError(str(p), None, "no such case file" if p.suffix == ".toml" else "no such archive")
@@ -511,6 +573,21 @@ def load_case(name_or_path: str | Path | None = None, /, **overrides) -> Case:
     return _build(read_case_text(path), str(path), overrides)
 
 
+def _special_file_kind(path) -> str | None:
+    """What ``path`` is when it exists and is neither a regular file nor a directory (device, FIFO, socket)."""
+    import stat
+
+    try:
+        mode = os.stat(path).st_mode
+    except (OSError, ValueError):
+        return None
+    for test, name in ((stat.S_ISCHR, "a character device"), (stat.S_ISBLK, "a block device"),
+                       (stat.S_ISFIFO, "a FIFO (named pipe)"), (stat.S_ISSOCK, "a socket")):
+        if test(mode):
+            return name
+    return None if (stat.S_ISREG(mode) or stat.S_ISDIR(mode)) else "not a regular file"
+
+
 def read_case_text(path: str | Path) -> str:
     """The TOML text of a case file, or of the case stored in an hsbearing archive (``.nc``).
 
@@ -520,6 +597,9 @@ def read_case_text(path: str | Path) -> str:
     path = Path(path)
     if path.is_dir():
         raise CaseError(str(path), None, "is a directory, not a case file")
+    kind = _special_file_kind(path)  # before opening: reading a FIFO or a terminal device blocks for ever
+    if kind:
+        raise CaseError(str(path), None, f"is {kind}, not a case file (give a regular TOML file)")
     try:
         with open(path, "rb") as fh:
             head = fh.read(8)
@@ -587,7 +667,7 @@ def _parse_override_value(value: Any) -> Any:
         return value
     try:
         return tomllib.loads(f"v = {value}")["v"]
-    except tomllib.TOMLDecodeError:
+    except (tomllib.TOMLDecodeError, RecursionError):
         return value
 
 
@@ -609,11 +689,53 @@ def _build(text: str, source: str, overrides: Mapping[str, Any]) -> Case:
         raise
 
 
-def _build_checked(text: str, source: str, overrides: Mapping[str, Any]) -> Case:
+#: Deepest nesting of arrays / inline tables accepted in a case file (a case needs 3: [materials.ball]).
+MAX_TOML_DEPTH = 20
+
+
+def _toml_depth(text: str) -> int:
+    """Upper bound of the bracket nesting of ``text`` (strings and comments skipped roughly: a bound, not a parse)."""
+    depth = best = 0
+    quote = None
+    i, n = 0, len(text)
+    while i < n:
+        ch = text[i]
+        if quote:
+            if ch == "\\" and quote == '"':
+                i += 2
+                continue
+            if ch == quote or ch == "\n":
+                quote = None
+        elif ch in "\"'":
+            quote = ch
+        elif ch == "#":
+            j = text.find("\n", i)
+            i = n if j < 0 else j
+            continue
+        elif ch in "[{":
+            depth += 1
+            best = max(best, depth)
+        elif ch in "]}":
+            depth = max(0, depth - 1)
+        i += 1
+    return best
+
+
+def _toml_loads(text: str, source: str) -> dict:
+    """``tomllib.loads`` with every failure as a CaseError: malformed TOML, nesting deep enough to exhaust the
+    recursion (tomllib parses nested arrays recursively: RecursionError)."""
+    if _toml_depth(text) > MAX_TOML_DEPTH:
+        raise CaseError(source, None, f"malformed TOML: arrays/inline tables nested deeper than {MAX_TOML_DEPTH} levels")
     try:
-        raw = tomllib.loads(text)
+        return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise CaseError(source, None, f"malformed TOML: {exc}") from None
+    except RecursionError:
+        raise CaseError(source, None, "malformed TOML: nested too deeply") from None
+
+
+def _build_checked(text: str, source: str, overrides: Mapping[str, Any]) -> Case:
+    raw = _toml_loads(text, source)
     override_lines = []
     for k, v in (overrides or {}).items():
         table, leaf = resolve_key(k, source=f"{source} (override)")
@@ -772,6 +894,14 @@ def _validate_tables(raw: dict, source: str) -> dict[str, dict[str, Any]]:
     return out
 
 
+#: Conformity f = r/D at or above which a groove is no ball-bearing groove (f = 1: groove radius = ball diameter;
+#: catalogue bearings 0.505-0.58, Harris & Kotzalas, Essential Concepts of Bearing Technology, Ch. 2).
+MAX_CONFORMITY = 1.0
+
+#: Largest integer a case value may be (beyond it a float conversion overflows or loses the value).
+MAX_INTEGER = 2**53
+
+
 def _convert(v: Any, fld: Field, source: str, full: str) -> Any:
     if fld.kind == "str":
         if not isinstance(v, str):
@@ -785,6 +915,9 @@ def _convert(v: Any, fld: Field, source: str, full: str) -> Any:
         if not isinstance(v, bool):
             raise CaseError(source, full, f"expected true or false, got {v!r}")
         return v
+    if isinstance(v, int) and not isinstance(v, bool) and abs(v) > MAX_INTEGER:
+        raise CaseError(source, full, f"integer with {len(str(abs(v)))} digits is beyond any value a case can hold "
+                                      f"(at most {MAX_INTEGER:.3g})")
     if fld.kind == "int":
         if isinstance(v, bool) or not isinstance(v, int):
             raise CaseError(source, full, f"expected a whole number, got {v!r}")
@@ -815,6 +948,10 @@ def _check_physical(case: Case, source: str) -> None:
         f = getattr(b, key)
         if f is not None and f <= 0.5:
             raise CaseError(source, f"bearing.{key}", f"conformity must be > 0.5 (groove radius larger than the ball radius), got {f}")
+        if f is not None and f >= MAX_CONFORMITY:
+            raise CaseError(source, f"bearing.{key}", f"conformity {f:g} means a groove radius of {f:g} ball diameters: "
+                                                      f"not a ball-bearing groove (must be below {MAX_CONFORMITY:g}; "
+                                                      "real bearings 0.505-0.58)")
     D, dm, Z = b.ball_diameter, b.pitch_diameter, b.ball_count
     if D >= dm:
         raise CaseError(source, "bearing.ball_diameter", f"ball diameter {D*1e3:g} mm is not smaller than the pitch diameter {dm*1e3:g} mm")
@@ -828,6 +965,8 @@ def _check_physical(case: Case, source: str) -> None:
         raise CaseError(source, "cage.pocket_diameter", f"cage pocket {c.pocket_diameter*1e3:g} mm is not larger than the ball {D*1e3:g} mm")
     if b.bore_diameter is not None and b.outside_diameter is not None and b.bore_diameter >= b.outside_diameter:
         raise CaseError(source, "bearing.bore_diameter", "bore diameter must be smaller than the outside diameter")
+    if b.width is not None and b.width < D:  # before the guide lands (a narrow ring leaves no land either)
+        raise CaseError(source, "bearing.width", f"ring width {b.width * 1e3:g} mm is narrower than the ball {D * 1e3:g} mm")
     _check_guide_lands(case, source)
     if case.system in ("angular_contact", "deep_groove", "gyro_ribbon_cage"):
         from hsbearing.models import traction
@@ -933,7 +1072,110 @@ def _check_possible(case: Case, source: str) -> None:
         if c.guidance == "inner_ring" and b.inner_land_diameter is not None and c.bore_diameter <= b.inner_land_diameter:
             raise CaseError(source, "bearing.inner_land_diameter", f"guide land {mm(b.inner_land_diameter)} is not "
                             f"smaller than the inner-ring guided cage bore (cage.bore_diameter {mm(c.bore_diameter)})")
+    _check_envelope(case, source)
     check_output_samples(case, source=source)
+
+
+#: Temperature envelope of the bundled oils [degC]: (pour point, lowest service temperature, highest service
+#: temperature) of the specification class each oil is read as (hsbearing.models.viscosity.OIL_SPEC):
+#: MIL-PRF-7808 (4109) and MIL-PRF-23699 (4106, 4050) turbine oils, pour points -60 / -54 degC (spec maxima),
+#: service ranges -51..204 and -40..204 degC (the specs' qualification ranges).  Beyond the service range the
+#: oil data (40/100 degC viscosities, the traction fits) are extrapolated: a warning.  Below the pour point
+#: the oil does not flow, above OIL_DECOMPOSITION_C ester base stocks decompose thermally: an error.
+OIL_TEMPERATURE_C: dict[str, tuple[float, float, float]] = {
+    "4109": (-60.0, -51.0, 204.0),
+    "4106": (-54.0, -40.0, 204.0),
+    "4050": (-54.0, -40.0, 204.0),
+}
+#: Above this [degC] no lubricating oil of the bundled classes is a liquid film (thermal decomposition of the
+#: ester base stock; flash points of the classes 210-270 degC): refused.
+OIL_DECOMPOSITION_C = 350.0
+
+
+def _free_contact_angle(b) -> float | None:
+    """Free contact angle [rad] implied by the diametral clearance (None if no clearance is given)."""
+    if b.diametral_clearance is None or b.inner_conformity is None or b.outer_conformity is None:
+        return None
+    A = (b.inner_conformity + b.outer_conformity - 1.0) * b.ball_diameter
+    c = 1.0 - b.diametral_clearance / (2.0 * A)
+    return math.acos(max(-1.0, min(1.0, c))) if c > -1.0 else math.pi
+
+
+def _check_envelope(case: Case, source: str) -> None:
+    """Impossible bearings (issue 27, class 7): whatever does not fit in the bearing's envelope."""
+    b, c = case.bearing, case.cage
+    D, dm, Z = b.ball_diameter, b.pitch_diameter, b.ball_count
+    mm = lambda x: f"{x * 1e3:g} mm"  # noqa: E731
+    if case.system in ("angular_contact", "deep_groove") and b.diametral_clearance is not None:
+        A = (b.inner_conformity + b.outer_conformity - 1.0) * D
+        alpha = _free_contact_angle(b)
+        if alpha is not None and not alpha < 0.5 * math.pi:
+            raise CaseError(source, "bearing.diametral_clearance",
+                            f"{b.diametral_clearance * 1e6:g} um gives a free contact angle of "
+                            f"{math.degrees(alpha):.4g} deg (>= 90 deg: the balls would not be held between the "
+                            f"rings); it must be below 2 (f_i + f_o - 1) D = {2 * A * 1e6:.4g} um")
+    if c is not None:
+        if c.width is not None and b.width is not None and c.width > b.width:
+            raise CaseError(source, "cage.width", f"cage width {mm(c.width)} is wider than the bearing "
+                                                  f"(bearing.width {mm(b.width)})")
+        dp = c.pocket_diameter if c.pocket_diameter is not None else (
+            D + 2.0 * c.pocket_clearance if c.pocket_clearance is not None else None)
+        if dp is not None and Z > 1:
+            chord = dm * math.sin(math.pi / Z)  # centre distance of neighbouring pockets
+            if dp >= chord:
+                key = "cage.pocket_diameter" if c.pocket_diameter is not None else "cage.pocket_clearance"
+                raise CaseError(source, key, f"{Z} pockets of {mm(dp)} overlap on the pitch circle of {mm(dm)} "
+                                             f"(neighbour spacing {chord * 1e3:.4g} mm): no cage bar is left between them")
+        if (case.system in ("angular_contact", "deep_groove") and dp is not None and c.width is not None
+                and c.width <= dp):
+            raise CaseError(source, "cage.width", f"cage width {mm(c.width)} is not wider than its pockets ({mm(dp)}): "
+                                                  "the pockets cut the cage ring through")
+        if c.pocket_depth is not None and c.pocket_depth <= 0.5 * D:
+            raise CaseError(source, "cage.pocket_depth", f"pocket depth {mm(c.pocket_depth)} is not deeper than the ball "
+                                                         f"radius {mm(0.5 * D)}: the ball does not fit the pocket")
+        if c.mass is None and c.outside_diameter and c.bore_diameter and c.width and dp is not None:
+            vol = math.pi / 4 * (c.outside_diameter**2 - c.bore_diameter**2) * c.width \
+                - Z * math.pi / 4 * dp**2 * (c.outside_diameter - c.bore_diameter) / 2
+            if not vol > 0:
+                raise CaseError(source, "cage.pocket_diameter", f"the {Z} pockets of {mm(dp)} remove the whole cage "
+                                                                "(computed cage mass 0 g): give smaller pockets or cage.mass")
+    if case.system == "angular_contact" and case.operating.axial_load < 0:
+        raise CaseError(source, "operating.axial_load",
+                        f"{case.operating.axial_load:g} N: a single angular-contact bearing carries axial load in one "
+                        "direction only (positive: the inner ring pushed along +X into its contacts); a negative load "
+                        "lifts the balls off the contact angle -- mount the bearing the other way round (give the "
+                        "load as positive)")
+    oil, T = case.lubricant.oil, case.lubricant.temperature
+    if T is not None:
+        t_c = T - 273.15
+        if t_c > OIL_DECOMPOSITION_C:  # any system: no lubricating oil film there
+            raise CaseError(source, "lubricant.temperature", f"{t_c:g} degC: no oil film at this temperature (the "
+                                                             f"turbine-oil classes decompose above ~{OIL_DECOMPOSITION_C:g} degC)")
+        if _oil_data_used(case):  # the oil's own data: below its pour point it does not flow
+            pour, _, _ = OIL_TEMPERATURE_C[oil]
+            if t_c < pour:
+                raise CaseError(source, "lubricant.temperature", f"{t_c:g} degC is below the pour point of oil {oil} "
+                                                                 f"({pour:g} degC): the oil does not flow")
+
+
+def _oil_data_used(case: Case) -> bool:
+    """The model reads the named oil's data (viscosity, traction): the angular-contact model with a bundled oil
+    (the other systems carry the oil name as a placeholder and use their own viscosity)."""
+    return (case.system == "angular_contact" and case.lubricant.oil in OIL_TEMPERATURE_C
+            and getattr(case.lubricant, "file", None) is None)
+
+
+def envelope_warnings(case: Case) -> list[str]:
+    """Values inside what is possible but outside the data behind the model (printed as warnings by the CLI)."""
+    out = []
+    oil, T = case.lubricant.oil, case.lubricant.temperature
+    if T is not None and _oil_data_used(case):
+        _, lo, hi = OIL_TEMPERATURE_C[oil]
+        t_c = T - 273.15
+        if not lo <= t_c <= hi:
+            out.append(f"lubricant.temperature: {t_c:g} degC is outside the service range of oil {oil} "
+                       f"({lo:g}..{hi:g} degC): its viscosity and traction data are extrapolated")
+    return out
 
 
 # ----------------------------------------------------------------------------

@@ -13,7 +13,7 @@ from pathlib import Path
 
 from hsbearing._version import __version__
 from hsbearing.case import DEFAULT_CASE, CaseError, list_cases, load_case, parse_quantity, parse_sets
-from hsbearing.errors import SolverError
+from hsbearing.errors import OutputWriteError, SolverError
 
 
 class _UsageError(Exception):
@@ -27,7 +27,17 @@ def _load(args) -> "object":
     sets = _parse_sets(getattr(args, "set", None))
     if getattr(args, "section", None):  # --section NAME is --set simulation.section=NAME
         sets["simulation.section"] = args.section
-    return load_case(args.case or DEFAULT_CASE, **sets)
+    case = load_case(args.case or DEFAULT_CASE, **sets)
+    _print_envelope_warnings(case)
+    return case
+
+
+def _print_envelope_warnings(case) -> None:
+    """Values that are possible but outside the data behind the model (e.g. an oil beyond its service range)."""
+    from hsbearing.case import envelope_warnings
+
+    for w in envelope_warnings(case):
+        print(f"hsbearing: warning: {case.source}: {w}", file=sys.stderr)
 
 
 def _default_out(case, suffix: str, extra: str = "") -> Path:
@@ -58,6 +68,8 @@ def _print_summary(ds, out: Path | None = None) -> None:
         text = format_value(var, name)
         if name == "whirl_frequency_ratio" and note:
             text = f"not defined ({note})"
+        elif _is_nan(var):  # never a bare "nan" with exit 0: say why the value is not defined
+            text = f"n/a ({_nan_reason(name, ds)})"
         elif name in ("whirl_amplitude", "whirl_radius_max"):
             text += " (RMS radius of the cage mass-centre orbit)" if name == "whirl_amplitude" else ""
             r = float(var.values)
@@ -106,6 +118,36 @@ def _print_summary(ds, out: Path | None = None) -> None:
         print("solver: " + format_solver_stats(stats))
     if out is not None:
         print(f"archive: {out}")
+
+
+def _is_nan(var) -> bool:
+    import numpy as np
+
+    try:
+        return var.dtype.kind == "f" and bool(np.isnan(var.values))
+    except (TypeError, ValueError):
+        return False
+
+
+def _nan_reason(name: str, ds) -> str:
+    """Why a summary scalar of a run is not defined (printed instead of "nan")."""
+    if name == "sfmo" or name.startswith("sfmo_"):
+        import tomllib
+
+        try:
+            mode = tomllib.loads(str(ds.attrs.get("case_toml", ""))).get("operating", {}).get("mode", "constant")
+        except tomllib.TOMLDecodeError:
+            mode = "?"
+        if mode != "oscillation":
+            return "SFMO is the starting moment under oscillation: operating.mode = oscillation"
+        return "SFMO needs at least two reversal windows: simulate longer than two oscillation periods"
+    if name.startswith("whirl_") or name == "mean_cage_speed":
+        n = int(ds.sizes.get("time", 0))
+        return (f"fewer than 16 cage-centre samples after the transient ({n} samples in the run): simulate longer "
+                "or sample more often")
+    if name.startswith("sfmc") or name == "rfmc":
+        return "no complete starting window in the run: simulate longer"
+    return "not defined for this run"
 
 
 # ----------------------------------------------------------------------------- commands
@@ -177,13 +219,14 @@ def _duration_arg(text: str | None) -> float | None:
 
 def _keep_interrupted(partial, out: Path) -> int:
     """Ctrl-C: keep what was computed (status "interrupted at t = ..."), say how to go on, exit 130."""
-    from hsbearing.results import write_netcdf
+    from hsbearing.results import deferred_sigint, write_netcdf
 
     if partial is not None and partial.sizes.get("time", 0) > 1:
         t = float(partial["time"].values[-1])
         partial = partial.copy()
         partial.attrs["status"] = f"interrupted at t = {t:.6g} s"  # also for integrators that say "failed ...: interrupted"
-        write_netcdf(partial, out)
+        with deferred_sigint():  # a second Ctrl-C during the save must not drop the partial run
+            write_netcdf(partial, out)
         hint = f" (continue it: hsbearing run --continue {out})" if "final_state" in partial else ""
         print(f"hsbearing: interrupted at t = {t:.6g} s; partial run in {out}{hint}", file=sys.stderr)
     else:
@@ -215,8 +258,8 @@ def cmd_run(args) -> int:
     duration = _duration_arg(args.duration)
     if duration is not None:
         check_output_samples(case, duration, source="--duration", key="duration")
-    out = Path(args.output) if args.output else _default_out(case, ".nc", f"duration={duration}")
-    check_output_path(out, source="-o" if args.output else "output")
+    out = Path(args.output) if args.output is not None else _default_out(case, ".nc", f"duration={duration}")
+    check_output_path(out, source="-o" if args.output is not None else "output", derived=_run_figures(out, args))
     try:
         ds = simulate(case, duration=duration, progress=not args.quiet)
     except Interrupted as exc:
@@ -226,15 +269,27 @@ def cmd_run(args) -> int:
     return _finish_run(ds, out, args)
 
 
+def _run_figures(out: Path, args) -> list[Path]:
+    """The figures a run writes next to its archive (checked with the archive before the compute)."""
+    if getattr(args, "no_plot", False):
+        return []
+    from hsbearing.systems.angular_contact.lock_figure import lock_figure_path
+    from hsbearing.systems.angular_contact.power_figure import power_figure_path
+
+    png = out.with_suffix(".png")
+    return [png, power_figure_path(png), lock_figure_path(png)]
+
+
 def _run_failed(exc, out: Path) -> int:
     """A run (or its continuation) that stopped: an interrupt reported as a solver failure exits 130 with the
     partial run kept; a numerical failure writes the partial result (if any) and exits 1."""
-    from hsbearing.results import write_netcdf
+    from hsbearing.results import deferred_sigint, write_netcdf
 
     if _is_interrupt_failure(exc):
         return _keep_interrupted(exc.partial, out)
     if exc.partial is not None:
-        write_netcdf(exc.partial, out)
+        with deferred_sigint():
+            write_netcdf(exc.partial, out)
         print(f"hsbearing: numerical failure: {exc}; partial result in {out}", file=sys.stderr)
     else:
         print(f"hsbearing: numerical failure: {exc}", file=sys.stderr)
@@ -242,9 +297,14 @@ def _run_failed(exc, out: Path) -> int:
 
 
 def _finish_run(ds, out: Path, args) -> int:
+    from hsbearing.errors import OutputWriteError
     from hsbearing.results import write_netcdf
 
-    write_netcdf(ds, out)
+    try:
+        write_netcdf(ds, out)
+    except OutputWriteError:
+        _print_summary(ds, None)  # the numbers are printed; the archive went to the fallback the error names
+        raise
     _print_summary(ds, out)
     if not args.no_plot:
         from hsbearing import plotting
@@ -284,8 +344,8 @@ def _cmd_continue(args) -> int:
         prev = open_run(src)
     except Exception as exc:  # noqa: BLE001 - any netCDF/HDF failure is bad input here
         raise CaseError(str(src), None, f"not a readable netCDF archive ({type(exc).__name__})") from None
-    out = Path(args.output) if args.output else src
-    check_output_path(out, source="-o" if args.output else "--continue")
+    out = Path(args.output) if args.output is not None else src
+    check_output_path(out, source="-o" if args.output is not None else "--continue", derived=_run_figures(out, args))
     try:
         ds = dynamics.continue_run(prev, _duration_arg(args.duration), progress=not args.quiet, source=str(src))
     except Interrupted as exc:
@@ -300,12 +360,12 @@ def cmd_quasistatic(args) -> int:
     from hsbearing.results import check_output_path, write_netcdf
 
     case = _load(args)
-    if args.output:
+    if args.output is not None:
         check_output_path(args.output)
     try:
         ds = quasi_static(case)
     except SolverError as exc:
-        if exc.partial is not None and args.output:
+        if exc.partial is not None and args.output is not None:
             write_netcdf(exc.partial, args.output)
             print(f"hsbearing: numerical failure: {exc}; partial result in {args.output}", file=sys.stderr)
         else:
@@ -320,10 +380,25 @@ def cmd_quasistatic(args) -> int:
     warn = contact_pressure_warning(p_all) if p_all else None
     if warn:
         print(warn, file=sys.stderr)
-    if args.output:
+    for w in _quasistatic_warnings(case, ds):  # the limits run, friction and life print for the same state
+        print(f"warning: {w}")
+    if args.output is not None:
         write_netcdf(ds, args.output)
         print(f"archive: {args.output}")
     return 0
+
+
+def _quasistatic_warnings(case, ds) -> list[str]:
+    """Contact-state warnings of a quasi-static state (shoulder truncation, film parameter), as ``friction``
+    prints them (:func:`hsbearing.contact_state.warnings_for`); the ISO 76 pressure line is printed on stderr."""
+    from hsbearing import contact_state
+
+    try:
+        state = contact_state.quasi_static_contact_state(case, ds)
+        lines = contact_state.warnings_for(ds.assign(**{k: ("ball", v) for k, v in state.items()}), case)
+    except (KeyError, ValueError):  # a system whose quasi-static Dataset lacks the contact variables
+        return []
+    return [w for w in lines if not w.startswith("maximum contact pressure")]
 
 
 def _summary_figure(nc: Path, png: Path) -> None:
@@ -343,7 +418,8 @@ def cmd_sweep(args) -> int:
     from hsbearing import sweeps
     from hsbearing.results import check_output_path
 
-    check_output_path(args.output, directory=True)
+    out = Path(args.output)
+    check_output_path(out, directory=True, derived=[out / "sweep.nc"] + ([] if args.no_figure else [out / "sweep.png"]))
     if args.scheduler:
         sweeps.check_scheduler_address(args.scheduler)
 
@@ -364,7 +440,11 @@ def cmd_study(args) -> int:
     from hsbearing import study, sweeps
     from hsbearing.results import check_output_path
 
-    check_output_path(args.output, directory=True)
+    out = Path(args.output)
+    derived = [out / "report.md", out / "report_bands.md"]
+    for t in study.load_study(args.name).tables:  # an unknown study is refused here, before anything else
+        derived += [out / f"{t['id']}.nc", out / f"{t['id']}.png", out / f"{t['id']}_bands.nc"]
+    check_output_path(out, directory=True, derived=derived)
     if args.scheduler:
         sweeps.check_scheduler_address(args.scheduler)
 
@@ -381,7 +461,7 @@ def cmd_study(args) -> int:
 def _check_output_option(args) -> None:
     from hsbearing.results import check_output_path
 
-    if getattr(args, "output", None):
+    if getattr(args, "output", None) is not None:
         check_output_path(args.output)
 
 
@@ -418,6 +498,17 @@ def cmd_preload(args) -> int:
     return wire_race.preload_command(_load(args), args)
 
 
+def _check_figure_format(output) -> None:
+    """The figure format is the file suffix; refuse one matplotlib cannot write (before anything is drawn)."""
+    from matplotlib.backend_bases import FigureCanvasBase
+
+    fmt = Path(output).suffix.lstrip(".").lower() or "png"
+    kinds = FigureCanvasBase.get_supported_filetypes()
+    if fmt not in kinds:
+        raise CaseError(f"-o {output}", None, f"figure format {fmt!r} is not supported (use one of: "
+                                              f"{', '.join(sorted(kinds))})")
+
+
 def cmd_plot(args) -> int:
     from hsbearing import plotting
     from hsbearing.results import open_run
@@ -426,6 +517,8 @@ def cmd_plot(args) -> int:
     if not path.exists():
         raise CaseError(str(path), None, "no such archive")
     _check_output_option(args)
+    if args.output is not None:
+        _check_figure_format(args.output)
     try:
         ds = open_run(path)
     except Exception as exc:
@@ -443,10 +536,19 @@ def cmd_plot(args) -> int:
 # ----------------------------------------------------------------------------- parser
 
 
+class _Parser(argparse.ArgumentParser):
+    """argparse with the CLI's error contract: one line ``hsbearing: error: ...`` (no usage block), exit 2."""
+
+    def error(self, message):
+        cmd = self.prog.split(" ", 1)[1] if " " in self.prog else ""
+        hint = f" (see 'hsbearing {cmd} --help')" if cmd else " (see 'hsbearing --help')"
+        self.exit(2, f"hsbearing: error: {message}{hint}\n")
+
+
 def build_parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(prog="hsbearing", description="Dynamics and friction of rolling ball bearings.")
+    p = _Parser(prog="hsbearing", description="Dynamics and friction of rolling ball bearings.")
     p.add_argument("--version", action="version", version=f"hsbearing {__version__}")
-    sub = p.add_subparsers(dest="command", metavar="COMMAND")
+    sub = p.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
 
     def with_case(sp, optional=True, examples=""):
         if optional:
@@ -603,8 +705,9 @@ def build_parser() -> argparse.ArgumentParser:
 def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
-    if not getattr(args, "func", None):
-        parser.print_help()
+    if not getattr(args, "func", None):  # bare `hsbearing`: say what is missing, on one line
+        print("hsbearing: error: no command given (commands: cases, check, run, quasistatic, sweep, map, study, "
+              "friction, life, preload, plot; see 'hsbearing --help')", file=sys.stderr)
         return 2
     try:
         rc = int(args.func(args) or 0)
@@ -613,17 +716,30 @@ def main(argv: list[str] | None = None) -> int:
     except CaseError as exc:
         print(f"hsbearing: error: {exc}", file=sys.stderr)
         return 2
+    except OutputWriteError as exc:  # computed, but the final write failed: where the result went, exit 1
+        print(f"hsbearing: error: {exc}", file=sys.stderr)
+        return 1
     except SolverError as exc:
         print(f"hsbearing: numerical failure: {exc}", file=sys.stderr)
         return 1
     except KeyboardInterrupt:
         print("hsbearing: interrupted", file=sys.stderr)
         return 130
+    except (ArithmeticError, _linalg_error()) as exc:  # a singular matrix / overflow deep in a model: one line, exit 1
+        print(f"hsbearing: numerical failure: {type(exc).__name__}: {str(exc).splitlines()[0] if str(exc) else ''} "
+              "(the inputs are valid but the model cannot solve them; check the geometry and loads)", file=sys.stderr)
+        return 1
     except BrokenPipeError:
         # the reader of stdout went away (``hsbearing check ... | head -1``): not an error of ours.
         # Point stdout at /dev/null so that the interpreter's final flush does not complain.
         _silence_stdout()
         return 0
+
+
+def _linalg_error() -> type:
+    import numpy as np
+
+    return np.linalg.LinAlgError
 
 
 def _silence_stdout() -> None:

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-__all__ = ["CaseError", "SolverError", "Interrupted"]
+__all__ = ["CaseError", "SolverError", "Interrupted", "OutputWriteError"]
 
 
 class CaseError(ValueError):
@@ -34,3 +34,21 @@ class Interrupted(KeyboardInterrupt):
     def __init__(self, message: str = "interrupted", partial=None):
         super().__init__(message)
         self.partial = partial
+
+
+class OutputWriteError(OSError):
+    """The final write of a computed result failed (disk full, file too large, read-only directory ...).
+
+    ``path``: where it should have gone; ``reason``: why it failed; ``saved_to``: the fallback file the
+    result was written to instead (None if no fallback place took it either).  The CLI prints one line
+    and exits 1: the computation succeeded, the result is kept where ``saved_to`` says.
+    """
+
+    def __init__(self, path, reason: str, saved_to=None, note: str | None = None):
+        self.path = str(path)
+        self.reason = reason
+        self.saved_to = None if saved_to is None else str(saved_to)
+        if note is None:
+            note = (f"the result was saved to {self.saved_to} instead" if self.saved_to else
+                    "no fallback place could take the result either (nothing written)")
+        super().__init__(f"cannot write {self.path}: {reason}; {note}")

@@ -174,6 +174,14 @@ def cli_main(args) -> int:
     out = Path(args.output)
     if out.exists() and not out.is_dir():
         raise CaseError(str(out), None, "output must be a directory")
+    from hsbearing.results import check_output_path
+    from hsbearing.sweeps import check_scheduler_address
+
+    check_output_path(out, directory=True,  # the derived outputs too, before any point runs (issue 27)
+                      derived=[out / "map.nc", out / "sweep.nc"]
+                      + ([] if getattr(args, "no_figure", False) else [out / "map.png"]))
+    if args.scheduler:
+        check_scheduler_address(args.scheduler)
     plan = plan_sweep(case, vary, duration=args.duration)
     bad = [pt for pt in plan.points if pt.case is None]
     if bad:

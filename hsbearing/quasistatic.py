@@ -942,14 +942,19 @@ def print_summary(ds: xr.Dataset) -> None:
               f"{float(s.outer_contact_pressure) / 1e9:8.4f} {float(s.ball_pitch_angle) * deg:8.3f} "
               f"{float(s.ball_spin_speed) * rpm:9.1f} {float(s.inner_spin_to_roll) + 0.0:7.4f} {float(s.outer_spin_to_roll) + 0.0:7.4f}")
     if "inner_film_thickness_central" in ds:
-        print(f"central film thickness: inner {np.nanmin(ds.inner_film_thickness_central.values) * 1e9:.1f}-"
-              f"{np.nanmax(ds.inner_film_thickness_central.values) * 1e9:.1f} nm, outer "
-              f"{np.nanmin(ds.outer_film_thickness_central.values) * 1e9:.1f}-"
-              f"{np.nanmax(ds.outer_film_thickness_central.values) * 1e9:.1f} nm")
+        def film(name):
+            h = ds[name].values
+            if not np.any(np.isfinite(h)):  # zero entrainment speed: no hydrodynamic film (Hamrock-Dowson h ~ U^0.67)
+                return "n/a (no rolling speed: no EHL film)"
+            return f"{np.nanmin(h) * 1e9:.1f}-{np.nanmax(h) * 1e9:.1f} nm"
+
+        print(f"central film thickness: inner {film('inner_film_thickness_central')}, "
+              f"outer {film('outer_film_thickness_central')}")
     K = ds.stiffness.values
     print(f"stiffness: K_xx = {K[0, 0]:.5g} N/m, K_yy = {K[1, 1]:.5g} N/m, K_zz = {K[2, 2]:.5g} N/m, "
           f"K_theta_y = {K[3, 3]:.5g} N*m/rad, K_theta_z = {K[4, 4]:.5g} N*m/rad")
     print(f"residual: ring {float(ds.residual_norm):.2e} (relative), balls {float(ds.ball_residual_norm):.2e} N")
-    stats = {k[len('solver_'):]: v for k, v in ds.attrs.items() if k.startswith("solver_")}
+    stats = {k[len('solver_'):]: v for k, v in ds.attrs.items()
+             if k.startswith("solver_") and not k.endswith("_units")}  # the NAME_units companions are not stats
     if stats:
         print("solver: " + ", ".join(f"{k}={v:.4g}" if isinstance(v, float) else f"{k}={v}" for k, v in stats.items()))

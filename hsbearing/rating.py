@@ -140,7 +140,11 @@ def life_lines(ds) -> list[str]:
     def h(x):
         from hsbearing.models.life import life_in_hours
 
-        return f"{life_in_hours(float(x), n):.4g} h" if n > 0 else "-"
+        return f"{life_in_hours(float(x), n):.4g} h" if n > 0 and math.isfinite(float(x)) else "n/a (no rotation)"
+
+    def g(x, fmt: str, why: str = "no rotation: no lubricant film, kappa is not defined") -> str:
+        x = float(x)
+        return format(x, fmt) if math.isfinite(x) else f"n/a ({why})"
 
     a = ds.attrs
     lines = [
@@ -150,15 +154,15 @@ def life_lines(ds) -> list[str]:
         f"  P_r = X F_r + Y F_a = {float(ds.equivalent_load):.5g} N (X = {a['load_factor_X']:.3g}, Y = {a['load_factor_Y']:.3g}, "
         f"e = {a['load_factor_e']:.3g})",
         f"  L_10  = {float(ds.basic_rating_life):.4g} 10^6 rev = {h(ds.basic_rating_life)}",
-        f"  kappa = {float(ds.viscosity_ratio):.3g} (nu = {a['kinematic_viscosity_mm2_s']:.3g} mm^2/s), e_C = {a['contamination_factor']:g}, "
-        f"C_u = {float(ds.fatigue_load_limit):.4g} N, a_ISO = {float(ds.life_modification_factor):.3g}",
-        f"  L_10m = {float(ds.modified_rating_life):.4g} 10^6 rev = {h(ds.modified_rating_life)}",
+        f"  kappa = {g(ds.viscosity_ratio, '.3g')} (nu = {a['kinematic_viscosity_mm2_s']:.3g} mm^2/s), e_C = {a['contamination_factor']:g}, "
+        f"C_u = {float(ds.fatigue_load_limit):.4g} N, a_ISO = {g(ds.life_modification_factor, '.3g', 'needs kappa')}",
+        f"  L_10m = {g(ds.modified_rating_life, '.4g', 'needs a_ISO')} 10^6 rev = {h(ds.modified_rating_life)}",
     ]
     if "reference_rating_life" in ds:
         lines += [
             f"  ISO/TS 16281 L_10r from the quasi-static contact loads: {float(ds.reference_rating_life):.4g} 10^6 rev "
             f"= {h(ds.reference_rating_life)} (static loads, no ball inertia: {float(ds.reference_rating_life_static):.4g} 10^6 rev)",
-            f"  modified reference life a_ISO L_10r = {float(ds.modified_reference_rating_life):.4g} 10^6 rev "
+            f"  modified reference life a_ISO L_10r = {g(ds.modified_reference_rating_life, '.4g', 'needs a_ISO')} 10^6 rev "
             f"= {h(ds.modified_reference_rating_life)}",
         ]
     if a.get("notes", "none") != "none":

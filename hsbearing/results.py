@@ -11,6 +11,7 @@ interrupted run) never sees half a file.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import tempfile
@@ -202,20 +203,57 @@ def _absolute_source(source) -> str:
         return str(source)
 
 
+#: Prefix of every temporary file hsbearing writes next to an output (``.hsb-<8 hex of the final name>-<random>.tmp``,
+#: ~26 characters): short, so a temporary name fits wherever the final name fits (NAME_MAX 255; the temporary
+#: used to be ``.<name>.<random>.tmp``, 13 characters longer than the name itself).
+TEMP_PREFIX = ".hsb-"
+
+
+def temp_prefix(name: str) -> str:
+    """The temporary-name prefix of the output file ``name`` (a hash of the name, so leftovers can be matched)."""
+    import hashlib
+
+    return f"{TEMP_PREFIX}{hashlib.sha1(name.encode('utf-8', 'surrogateescape')).hexdigest()[:8]}-"
+
+
+def final_target(path: str | os.PathLike) -> Path:
+    """The file a write to ``path`` replaces: ``path`` itself or, for a symbolic link (chains included, dangling
+    too), the file the link points at.  Writing *through* the link keeps the link a link (docs/output.md)."""
+    path = Path(path)
+    if path.is_symlink():
+        return Path(os.path.realpath(path))
+    return path
+
+
+def special_file_kind(path: str | os.PathLike) -> str | None:
+    """What ``path`` is if it exists (following symbolic links) and is neither a regular file nor a directory
+    (a device node, a FIFO, a socket), else None."""
+    from hsbearing.case import _special_file_kind
+
+    return _special_file_kind(path)
+
+
 class atomic_write:
-    """Context manager yielding a temporary path next to ``path``; renamed onto ``path`` on success.
+    """Context manager yielding a temporary path next to ``path``'s final target; renamed onto it on success.
 
     On any exception the temporary file is removed and ``path`` is untouched, so readers (and an
-    interrupted run) never see half a file.  The file gets ordinary umask permissions.
+    interrupted run) never see half a file.  The file gets ordinary umask permissions.  A symbolic link
+    is written *through*: the temporary file goes to the directory of the link's target and is renamed onto
+    the target, so the link stays a link.  A path that is a device node, FIFO or socket is refused (it
+    would be replaced by a regular file): OSError.
     """
 
     def __init__(self, path: str | os.PathLike, suffix: str = ".tmp"):
         self.path = Path(path)
-        self.suffix = suffix
+        self.suffix = suffix if len(suffix) <= 8 else ".tmp"  # a long suffix must not make the name too long
 
     def __enter__(self) -> Path:
-        self.path.parent.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(prefix=f".{self.path.name}.", suffix=self.suffix, dir=self.path.parent)
+        self.target = final_target(self.path)
+        kind = special_file_kind(self.target)
+        if kind:
+            raise OSError(f"{self.path} is {kind}, not a regular file: not replaced")
+        self.target.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(prefix=temp_prefix(self.target.name), suffix=self.suffix, dir=self.target.parent)
         os.close(fd)
         self.tmp = Path(tmp)
         return self.tmp
@@ -226,7 +264,10 @@ class atomic_write:
                 umask = os.umask(0)
                 os.umask(umask)
                 os.chmod(self.tmp, 0o666 & ~umask)  # mkstemp creates 0600
-                os.replace(self.tmp, self.path)
+                kind = special_file_kind(self.target)  # became a device/FIFO meanwhile: do not replace it
+                if kind:
+                    raise OSError(f"{self.path} is {kind}, not a regular file: not replaced")
+                os.replace(self.tmp, self.target)
             except BaseException:  # e.g. the target is a directory: no temporary file left behind
                 self._discard()
                 raise
@@ -241,14 +282,25 @@ class atomic_write:
             pass
 
 
-def check_output_path(path: str | os.PathLike, *, source: str = "-o", directory: bool = False) -> Path:
+def _name_max(directory: Path) -> int:
+    try:
+        return int(os.pathconf(directory, "PC_NAME_MAX"))
+    except (OSError, ValueError, AttributeError):
+        return 255
+
+
+def check_output_path(path: str | os.PathLike, *, source: str = "-o", directory: bool = False,
+                      derived: tuple | list = ()) -> Path:
     """Check, before any computation, that ``path`` can be written; raise CaseError if not.
 
     The message reads ``<source> <path>: <reason>``.  ``directory=False``: ``path`` is a file (it may
-    exist, but not as a directory); ``directory=True``: an output directory (it may exist, but not as a
+    exist as a regular file, or a symbolic link to one, which is written through; never a directory, a
+    device node, a FIFO or a socket); ``directory=True``: an output directory (it may exist, but not as a
     file).  The nearest existing ancestor must be a directory in which a file can be created: probed by
     creating and deleting a temporary file, so read-only file systems and permissions are caught even
-    for root.  Nothing is left behind.
+    for root.  A file name longer than the file system allows is refused.  ``derived``: further file
+    paths written from this one (``out.png`` next to ``out.nc``, ``DIR/sweep.nc``), checked the same way
+    and named in the message.  Nothing is left behind.
     """
     from hsbearing.case import CaseError
 
@@ -256,18 +308,31 @@ def check_output_path(path: str | os.PathLike, *, source: str = "-o", directory:
     where = f"{source} {path}"
     if not directory and (str(path) in ("", ".", "..") or path.name in ("", ".", "..")):
         raise CaseError(where, None, "not a file name")
+    if "\0" in str(path):
+        raise CaseError(where, None, "contains a NUL character")
+    for part in path.parts:  # before any stat: a too-long component makes every os call fail
+        if len(os.fsencode(part)) > 255:
+            raise CaseError(where, None, f"a file name longer than 255 bytes ({len(os.fsencode(part))})")
+    kind = special_file_kind(path)
+    if kind:
+        raise CaseError(where, None, f"is {kind}, not a regular file (refused: it would be replaced by the archive)")
     if path.exists():
         if directory and not path.is_dir():
             raise CaseError(where, None, "exists and is not a directory")
         if not directory and path.is_dir():
             raise CaseError(where, None, "is a directory (give a file name)")
-    anc = path if directory and path.is_dir() else path.parent
+    target = path if directory else final_target(path)
+    anc = target if directory and target.is_dir() else target.parent
     while not anc.exists():
         if anc.is_symlink():
             raise CaseError(where, None, f"cannot be created: {anc} is a broken symbolic link")
         anc = anc.parent
     if not anc.is_dir():
         raise CaseError(where, None, f"cannot be created: {anc} is a file, not a directory")
+    nmax = _name_max(anc)
+    for part in (target.parts if not target.is_absolute() else target.parts[1:]):
+        if len(os.fsencode(part)) > nmax:
+            raise CaseError(where, None, f"a file name longer than {nmax} bytes ({len(os.fsencode(part))})")
     try:
         fd, probe = tempfile.mkstemp(prefix=".hsbearing-write-check.", dir=anc)
     except OSError as exc:
@@ -275,14 +340,36 @@ def check_output_path(path: str | os.PathLike, *, source: str = "-o", directory:
                                      f"({exc.strerror or type(exc).__name__})") from None
     os.close(fd)
     os.unlink(probe)
+    for d in derived:
+        d = Path(d)
+        dwhere = f"{where} (derived output {d})"
+        dkind = special_file_kind(d)
+        if dkind:
+            raise CaseError(dwhere, None, f"is {dkind}, not a regular file (refused: it would be replaced)")
+        if d.is_dir():
+            raise CaseError(dwhere, None, "is a directory: the file cannot be written")
+        dt = final_target(d)
+        danc = dt.parent
+        while not danc.exists():
+            danc = danc.parent
+        if not danc.is_dir():
+            raise CaseError(dwhere, None, f"cannot be created: {danc} is a file, not a directory")
+        if len(os.fsencode(dt.name)) > _name_max(danc):
+            raise CaseError(dwhere, None, f"a file name longer than {_name_max(danc)} bytes")
+        if danc != anc and not os.access(danc, os.W_OK):
+            raise CaseError(dwhere, None, f"cannot be written: no write access to {danc}")
     return path
 
 
-def write_netcdf(ds: xr.Dataset, path: str | os.PathLike) -> Path:
+def write_netcdf(ds: xr.Dataset, path: str | os.PathLike, *, fallback: bool = True) -> Path:
     """Write ``ds`` to ``path`` atomically (temporary file in the same directory, then rename), zlib-compressed.
 
     ``ds.attrs`` gains the ``NAME_units`` companions of :data:`ATTR_UNITS` it lacks (in place, so the
     Dataset in memory and the archive carry the same attributes).
+
+    A failed write (disk full, file-size limit, directory made read-only, the target turned into a device)
+    leaves ``path`` untouched and no temporary file; with ``fallback`` the Dataset is then written to
+    :func:`fallback_dirs` and :class:`hsbearing.errors.OutputWriteError` says where it went.
     """
     path = Path(path)
     for k, v in with_attr_units(ds.attrs).items():  # the unit companions (ATTR_UNITS) also on the caller's Dataset,
@@ -296,9 +383,90 @@ def write_netcdf(ds: xr.Dataset, path: str | os.PathLike) -> Path:
         for name, var in ds.variables.items()
         if var.dtype.kind in "fiub" and var.ndim > 0
     }
-    with atomic_write(path) as tmp:
-        ds.to_netcdf(tmp, engine="netcdf4", format="NETCDF4", encoding=encoding)
+    try:
+        with atomic_write(path) as tmp:
+            ds.to_netcdf(tmp, engine="netcdf4", format="NETCDF4", encoding=encoding)
+    except (OSError, RuntimeError) as exc:  # netCDF4 reports a full disk / EFBIG as RuntimeError("NetCDF: HDF error")
+        from hsbearing.errors import OutputWriteError
+
+        reason = _write_failure_reason(exc, final_target(path).parent)
+        saved = _write_fallback(ds, path, encoding) if fallback else None
+        raise OutputWriteError(path, reason, saved) from None
     return path
+
+
+def _write_failure_reason(exc: BaseException, directory: Path) -> str:
+    import shutil
+
+    reason = getattr(exc, "strerror", None) or str(exc) or type(exc).__name__
+    try:
+        import resource
+
+        soft, _ = resource.getrlimit(resource.RLIMIT_FSIZE)
+        if soft != resource.RLIM_INFINITY:
+            reason += f" (file-size limit of this process, ulimit -f: {soft} bytes)"
+    except (ImportError, OSError, ValueError):
+        pass
+    try:
+        free = shutil.disk_usage(directory).free
+        if free < 50e6:
+            reason += f" ({free / 1e3:.0f} kB free on the file system of {directory}; disk full?)"
+    except OSError:
+        pass
+    return reason
+
+
+def fallback_dirs(path: Path) -> list[Path]:
+    """Where a result goes when its own path cannot take it: the system temporary directory, then the working
+    directory (each only if it is not the directory that just failed)."""
+    failed = final_target(path).parent.resolve()
+    out = []
+    for d in (Path(tempfile.gettempdir()), Path.cwd()):
+        try:
+            d = d.resolve()
+        except OSError:
+            continue
+        if d != failed and d not in out:
+            out.append(d)
+    return out
+
+
+def _write_fallback(ds: xr.Dataset, path: Path, encoding: dict) -> Path | None:
+    """Write ``ds`` to a new file ``hsbearing-rescued-<name>-<random>.nc`` in a fallback directory; its path or None."""
+    stem = Path(path).stem[:60]
+    for d in fallback_dirs(Path(path)):
+        try:
+            fd, name = tempfile.mkstemp(prefix=f"hsbearing-rescued-{stem}-", suffix=".nc", dir=d)
+        except OSError:
+            continue
+        os.close(fd)
+        try:
+            ds.to_netcdf(name, engine="netcdf4", format="NETCDF4", encoding=encoding)
+            return Path(name)
+        except (OSError, RuntimeError):
+            with contextlib.suppress(OSError):
+                os.unlink(name)
+    return None
+
+
+@contextlib.contextmanager
+def deferred_sigint():
+    """Hold Ctrl-C off while the block runs: the save of a partial result after a first Ctrl-C must not be cut
+    short by a second one (two Ctrl-C 0.3 s apart used to leave no archive at all).  SIGINTs received
+    meanwhile are collected in the yielded list, not raised; the previous handler is restored afterwards.
+    Only in the main thread (signal handlers can only be set there); elsewhere nothing changes."""
+    import signal
+    import threading
+
+    got: list[int] = []
+    if threading.current_thread() is not threading.main_thread():
+        yield got
+        return
+    old = signal.signal(signal.SIGINT, lambda signum, frame: got.append(signum))
+    try:
+        yield got
+    finally:
+        signal.signal(signal.SIGINT, old)
 
 
 def open_run(path: str | os.PathLike) -> xr.Dataset:

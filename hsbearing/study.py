@@ -463,7 +463,7 @@ def _execute_or_collect(plans, archive_dir: Path, *, progress, backend, report_o
         for pt in plan.points:
             if pt.archive not in cache:
                 path = archive_dir / pt.archive
-                rec = sweeps._read_record(path) if path.exists() else None
+                rec = sweeps._read_record(path, pt.hash) if path.exists() else None
                 cache[pt.archive] = (dict(rec, archive=pt.archive, resumed=True) if rec is not None else
                                      {"status": STATUS_MISSING, "error": "not computed yet (report only)",
                                       "wall_time": float("nan"), "archive": "", "resumed": False, "summary": {}})
@@ -643,14 +643,14 @@ def write_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, info:
                     cell += f"; clock: {alt}" + ((" (=)" if alt == paper else " (x)") if paper else "")
                 row += [paper or "-", cell]
             lines.append("| " + " | ".join(row) + " |")
-        lines += ["", "Cage slip ratio (time mean after the transient; ours) -- "
+        lines += ["", "Cage slip ratio [%] (time mean after the transient; ours) -- "
                   f"compare {t.get('slip_figure', 'the paper')}:", ""]
         lines += [f"| {t.get('axis_label', dim)} | " + " | ".join(study.oils) + " |", "|" + "---|" * (1 + len(study.oils))]
         for i in range(ds.sizes[dim]):
             row = [_value_label(ds, dim, i)]
             for o in study.oils:
                 pt = ds.sel(oil=o).isel({dim: i})
-                row.append(_fmt(pt["mean_cage_slip_ratio"].item(), ".4f") if "mean_cage_slip_ratio" in ds else "-")
+                row.append(_fmt(pt["mean_cage_slip_ratio"].item() * 100, ".2f") if "mean_cage_slip_ratio" in ds else "-")
             lines.append("| " + " | ".join(row) + " |")
         png = _plot_slip(ds, t, study.oils, figdir / f"slip_{t['id']}.png")
         if png:
@@ -1078,13 +1078,13 @@ def _plot_gallery(study: Study, t: dict, ds: xr.Dataset, root: Path, path: Path,
                 gc = run.attrs.get("guide_clearance")
                 dr = orbit_drift(tt, y * 1e-6, z * 1e-6, t_tr, float(gc) if gc is not None else None)
                 if dr["drifting"]:
-                    ax_o.text(0.02, 0.02, f"DRIFT {dr['change'] * 1e6:+.0f} um", transform=ax_o.transAxes,
+                    ax_o.text(0.02, 0.02, f"DRIFT {dr['change'] * 1e6:+.0f} \u00b5m", transform=ax_o.transAxes,
                               fontsize=5.5, color="m", va="bottom")
                     if drift_log is not None:
                         drift_log.append(f"{t['id']}, oil {o}, {_value_label(ds, dim, iv)}"
                                          + (f" (sample {pt['sample_label'].item()})" if banded else "")
                                          + f": class {_ours(pt)}, mean whirl radius per quarter of the analysed "
-                                           f"span {', '.join(f'{x * 1e6:.1f}' for x in dr['radii'])} um")
+                                           f"span {', '.join(f'{x * 1e6:.1f}' for x in dr['radii'])} \u00b5m")
                 if gc is not None and np.isfinite(float(gc)):
                     th = np.linspace(0, 2 * np.pi, 181)
                     ax_o.plot(float(gc) * 1e6 * np.cos(th), float(gc) * 1e6 * np.sin(th), "r--", lw=0.4)
@@ -1100,10 +1100,10 @@ def _plot_gallery(study: Study, t: dict, ds: xr.Dataset, root: Path, path: Path,
             finally:
                 run.close()
             if iv == 0:
-                ax_o.set_ylabel("D_Z [um]", fontsize=5.5)
+                ax_o.set_ylabel("D_Z [\u00b5m]", fontsize=5.5)
                 ax_p.set_ylabel("V_Y [mm/s]", fontsize=5.5)
             if io == len(oils) - 1:
-                ax_p.set_xlabel("D_Y [um]", fontsize=5.5)
+                ax_p.set_xlabel("D_Y [\u00b5m]", fontsize=5.5)
     if not drawn:
         plt.close(fig)
         return None
@@ -1341,7 +1341,7 @@ def _axis_values(ds: xr.Dataset, key: str, dim: str) -> tuple[np.ndarray, str]:
     x = np.asarray(ds[dim].values, dtype=float)
     units = ds[dim].attrs.get("units", "")
     if units == "K":
-        return x - 273.15, "degC"
+        return x - 273.15, "\N{DEGREE SIGN}C"
     return x, units
 
 
@@ -1420,8 +1420,8 @@ def _plot_cells(study: Study, datasets: dict, figspec: dict, path: Path) -> Path
         else:
             ax.plot(y, z, lw=0.4)
         ax.set_aspect("equal", "datalim")
-        ax.set_xlabel("D_Y [um]")
-        ax.set_ylabel("D_Z [um]")
+        ax.set_xlabel("D_Y [\u00b5m]")
+        ax.set_ylabel("D_Z [\u00b5m]")
         ax.set_title(f"{label}\npaper: {paper or '-'}\nours: {ours}", fontsize=8)
         ax = axes[1, j]
         pts = _poincare(run)
@@ -1429,7 +1429,7 @@ def _plot_cells(study: Study, datasets: dict, figspec: dict, path: Path) -> Path
             ax.plot(pts[:, 0] * 1e6, pts[:, 1] * 1e3, ".", ms=3)
         else:
             ax.text(0.5, 0.5, "no section points", ha="center", va="center", transform=ax.transAxes, fontsize=8)
-        ax.set_xlabel("D_Y [um]")
+        ax.set_xlabel("D_Y [\u00b5m]")
         ax.set_ylabel("V_Y [mm/s]")
     fig.suptitle(figspec.get("title", figspec["id"]) + "  (top: whirl orbit; bottom: Poincare map)", fontsize=9)
     fig.tight_layout()

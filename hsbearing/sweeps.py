@@ -45,6 +45,7 @@ Fault tolerance
 from __future__ import annotations
 
 import contextlib
+import glob
 import hashlib
 import itertools
 import json
@@ -479,16 +480,22 @@ def _classifier_version() -> str:
     return CLASSIFIER_VERSION
 
 
-def _read_record(path: Path) -> dict | None:
+def _read_record(path: Path, expected_hash: str | None = None) -> dict | None:
     """The sweep record of a point archive, or None if it is not a complete, readable archive.
 
     The whole archive is read (``load``), not only its header: bytes corrupted inside a data chunk fail
     the chunk's checksum (``fletcher32``, :func:`hsbearing.results.write_netcdf`) or its zlib stream here,
     so a resumed sweep recomputes the point instead of trusting it (issue 13, item 9).
+
+    ``expected_hash``: the point's identity (:func:`point_hash`); an archive whose own ``sweep_point_hash``
+    differs (another point's archive copied over this name, a stale file) or is missing is not this point's
+    result: None, so the point is recomputed (issue 27, class 3).
     """
     try:
         with xr.open_dataset(path, engine="netcdf4") as ds:
             if "status" not in ds.attrs:
+                return None
+            if expected_hash is not None and str(ds.attrs.get("sweep_point_hash", "")) != expected_hash:
                 return None
             ds = ds.load()
             rec = json.loads(ds.attrs["sweep_record"]) if "sweep_record" in ds.attrs else None
@@ -529,10 +536,13 @@ def _write_archive(ds: xr.Dataset, rec: dict, path: Path, plan: SweepPlan, point
 
 
 def _clean_temporaries(archive_dir: Path, names: Iterable[str]) -> list[Path]:
-    """Delete leftover ``.<name>.*.tmp`` files of this sweep's archives (interrupted writes)."""
+    """Delete leftover temporary files of this sweep's archives (interrupted writes): ``.hsb-<hash of the
+    name>-*.tmp`` (:func:`hsbearing.results.temp_prefix`) and the older ``.<name>.*.tmp``."""
+    from hsbearing.results import temp_prefix
+
     removed = []
     for name in set(names):
-        for p in archive_dir.glob(f".{name}.*.tmp"):
+        for p in [*archive_dir.glob(f"{temp_prefix(name)}*.tmp"), *archive_dir.glob(f".{glob.escape(name)}.*.tmp")]:
             with contextlib.suppress(FileNotFoundError):
                 p.unlink()
                 removed.append(p)
@@ -548,14 +558,26 @@ def _dir_lock(directory: Path):
     except ImportError:  # pragma: no cover - not POSIX: no lock
         yield
         return
-    fh = open(directory / LOCK_NAME, "a+")
-    try:
+    path = directory / LOCK_NAME
+    while True:
+        fh = open(path, "a+")
         try:
             fcntl.flock(fh, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except OSError:
+            fh.close()
             raise CaseError(str(directory), None, "another hsbearing sweep is running in this directory") from None
+        try:  # the file we locked must still be the one at the path (a finishing sweep unlinks it)
+            same = os.fstat(fh.fileno()).st_ino == os.stat(path).st_ino
+        except FileNotFoundError:
+            same = False
+        if same:
+            break
+        fh.close()
+    try:
         yield
     finally:
+        with contextlib.suppress(OSError):  # no empty lock file left behind (issue 27); unlinked while still held
+            os.unlink(path)
         fh.close()
 
 
@@ -772,13 +794,28 @@ _SCHEDULER_ADDRESS = re.compile(
     r"^(?:(?:tcp|tls|ws|wss|ucx)://)?(?:[A-Za-z0-9](?:[A-Za-z0-9.-]*[A-Za-z0-9])?|\[[0-9A-Fa-f:.]+\]):(\d{1,5})/?$")
 
 
-def check_scheduler_address(address: str) -> str:
+def check_scheduler_address(address: str, *, in_process_ok: bool = False) -> str:
     """A dask.distributed scheduler address ``[tcp://]host:port`` (also tls/ws/wss/ucx, ``inproc://``);
     CaseError naming ``--scheduler`` otherwise, at once (the client would retry an unparseable
     address until its connect timeout)."""
     a = str(address).strip()
-    if a.startswith("inproc://") and len(a) > len("inproc://"):
-        return a
+    proto = a.split("://", 1)[0].lower() if "://" in a else "tcp"
+    if proto == "inproc":  # a scheduler living in this very process (a library caller's LocalCluster(processes=False))
+        if not in_process_ok:
+            raise CaseError("--scheduler", None, f"{address!r}: an inproc:// scheduler exists only inside the process "
+                                                 "that started it; give its tcp://host:port address")
+        if len(a) > len("inproc://"):
+            return a
+    if proto == "tls":
+        raise CaseError("--scheduler", None, f"{address!r}: TLS schedulers need a security configuration (certificates) "
+                                             "that hsbearing does not pass; use a tcp:// or ws:// address (e.g. over an "
+                                             "SSH tunnel)")
+    if proto == "ucx":
+        import importlib.util
+
+        if importlib.util.find_spec("ucp") is None and importlib.util.find_spec("distributed_ucxx") is None:
+            raise CaseError("--scheduler", None, f"{address!r}: the ucx:// protocol needs ucx-py, which is not "
+                                                 "installed; use a tcp:// address")
     m = _SCHEDULER_ADDRESS.match(a)
     if not m or not 0 < int(m.group(1)) < 65536:
         raise CaseError("--scheduler", None, f"{address!r} is not a scheduler address (expected [tcp://]host:port, "
@@ -795,7 +832,7 @@ class _Dask:
     CONNECT_TIMEOUT = 15.0
 
     def __init__(self, address: str, timeout: float | None = None):
-        check_scheduler_address(address)
+        check_scheduler_address(address, in_process_ok=True)
         self.address = address
         self.timeout = self.CONNECT_TIMEOUT if timeout is None else timeout
         self.client = None
@@ -813,6 +850,9 @@ class _Dask:
                       file=sys.stderr)
         except (OSError, TimeoutError) as exc:
             raise CaseError("--scheduler", None, f"cannot connect to the dask scheduler at {self.address} ({exc})") from None
+        except (TypeError, ValueError, RuntimeError, ImportError) as exc:  # a protocol the client cannot set up
+            raise CaseError("--scheduler", None, f"cannot connect to the dask scheduler at {self.address} "
+                                                 f"({type(exc).__name__}: {str(exc).splitlines()[0] if str(exc) else ''})") from None
         return self
 
     def __exit__(self, exc_type, *exc):
@@ -918,7 +958,7 @@ def execute(
             if pt.case is None or pt.archive in results or pt.archive in todo:
                 continue
             path = archive_dir / pt.archive
-            rec = _read_record(path) if path.exists() else None
+            rec = _read_record(path, pt.hash) if path.exists() else None
             if rec is not None and not (retry_failed and rec.get("status") != STATUS_OK):
                 rec = dict(rec, archive=pt.archive, resumed=True)
                 results[pt.archive] = rec
@@ -1140,7 +1180,7 @@ def print_table(ds: xr.Dataset, file=None) -> None:
     from hsbearing.display import format_value
 
     file = file or sys.stdout
-    keys = [v for v in ("mean_cage_slip_ratio", "whirl_amplitude", "classification", "mean_inner_contact_load",
+    keys = [v for v in ("mean_cage_slip_ratio", "mean_cage_slip_ratio_raceway_control", "whirl_amplitude", "classification", "mean_inner_contact_load",
                         "mean_outer_contact_load", "cage_speed", "sfmc", "sfmc_ensemble_mean", "sfmc_ensemble_sd",
                         "sfmo", "sfmo_stderr", "rfmc") if v in ds]
     dims = ds["status"].dims

@@ -185,7 +185,7 @@ def test_write_failure_leaves_no_temporary(tmp_path):
 
     (tmp_path / "x.nc").mkdir()
     with pytest.raises(OSError):
-        write_netcdf(xr.Dataset({"a": ("t", np.arange(3.0))}), tmp_path / "x.nc")
+        write_netcdf(xr.Dataset({"a": ("t", np.arange(3.0))}), tmp_path / "x.nc", fallback=False)
     assert _files(tmp_path) == {"x.nc"}
 
 

@@ -167,7 +167,7 @@ def test_failed_start_keeps_the_run_and_the_ensemble_so_far(monkeypatch):
 
     def flaky(case, duration=None, progress=False, **kw):
         calls.append(kw.get("cage_angle", 0.0))
-        if len(calls) == 3:  # the main run, offset -0.5, then fail at offset 0
+        if len(calls) == 3:  # the main run, offset -0.5, (offset 0 is the main run: reused), then fail at +0.5
             raise SolverError("synthetic failure", partial=None)
         return real(case, duration, progress, **kw)
 
@@ -175,9 +175,9 @@ def test_failed_start_keeps_the_run_and_the_ensemble_so_far(monkeypatch):
     with pytest.raises(SolverError) as info:
         gyro.simulate(_case(**{"simulation.start_positions": "3", "operating.oscillation_period": "0.05 s"}), duration=0.05)
     part = info.value.partial
-    assert "start_offset 0" in str(info.value) and "synthetic failure" in part.attrs["status"]
+    assert "start_offset 0.5" in str(info.value) and "synthetic failure" in part.attrs["status"]
     v = part["sfmc_ensemble"].values
-    assert np.isfinite(v[0]) and np.isnan(v[1:]).all() and np.isnan(float(part["sfmc_ensemble_mean"]))
+    assert np.isfinite(v[:2]).all() and np.isnan(v[2]) and np.isnan(float(part["sfmc_ensemble_mean"]))
     assert np.isfinite(float(part["sfmc"]))
 
 
@@ -226,3 +226,33 @@ def test_sweep_figure_draws_the_ensemble_with_sd_bars(tmp_path):
             assert names == ["sfmc", "sfmo", "rfmc"] and "sfmc_ensemble_mean" not in prep["yerr"]
         png = plotting.plot_sweep(ds, tmp_path / f"s{with_ens}.png")
         assert png.exists() and png.stat().st_size > 10_000
+
+
+def test_ensemble_follows_duration_and_reuses_the_default_start(monkeypatch):
+    """Issue 27: the ensemble ignored --duration (each start ran a whole oscillation_period) and ran the offset-0
+    start, which is the run itself for a constant-rate run, a second time."""
+    calls = []
+    real = gyro._simulate_one
+
+    def counting(case, duration=None, *a, **k):
+        calls.append(duration)
+        return real(case, duration, *a, **k)
+
+    monkeypatch.setattr(gyro, "_simulate_one", counting)
+    ds = gyro.simulate(_case(**{"simulation.start_positions": "3"}), duration=0.1)
+    assert calls == [0.1, 0.1, 0.1]  # the run + offsets -1/2 and +1/2; offset 0 is the run itself
+    assert ds.attrs["start_ensemble_duration_s"] == pytest.approx(0.1)
+    offs = list(ds["start_offset"].values)
+    assert float(ds["sfmc_ensemble"].values[offs.index(0.0)]) == float(ds["sfmc"])
+
+
+def test_gyro_figure_title_shows_the_ensemble(monkeypatch, tmp_path):
+    from hsbearing.plotting import common
+    from hsbearing.systems.gyro.figures import plot_gyro
+
+    figs = []
+    monkeypatch.setattr(common, "save_figure", lambda fig, path, *a, **k: figs.append(fig) or path)
+    ds = gyro.simulate(_case(**{"simulation.start_positions": "3"}), duration=0.05)
+    plot_gyro(ds, tmp_path / "g.png")
+    title = figs[0]._suptitle.get_text().replace("\n", " ")
+    assert "SFMC over 3 start positions" in title and "mean +/- sd" in title, title

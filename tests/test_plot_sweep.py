@@ -327,3 +327,30 @@ def test_the_class_map_cells_and_the_paper_check_marks():
     assert "same label as the paper in 2 of 3 classified cells" in cmap.get_title()
     assert "paper_agreement=2/3" in meta["Description"]
     assert [t.get_text() for t in cmap.get_yticklabels()] == ["oil 4106", "oil 4109"]  # first oil on top
+
+
+def test_slip_panel_shows_raceway_control_beside_nominal():
+    """Issue 27: the sweep figure showed the slip against the nominal contact angle only (-10.6 % at 100 N reads
+    as an overspeed); the raceway-control slip is drawn beside it, as `run` prints it."""
+    summ = [dict(_dyn(i), mean_cage_slip_ratio=-0.106 + 0.05 * i, mean_cage_slip_ratio_raceway_control=0.01 * i)
+            for i in range(3)]
+    ds = _summary({"axial_load": "100,500,1000N"}, summ)
+    prep = plotting._prepare_sweep(ds)
+    title, unit, items = prep["panels"][0]
+    assert title == "mean cage slip ratio"
+    assert [it[0] for it in items] == ["mean_cage_slip_ratio", "mean_cage_slip_ratio_raceway_control"]
+    np.testing.assert_allclose(items[0][3].ravel(), [-10.6, -5.6, -0.6])
+
+
+def test_gyro_sweep_title_names_no_varied_key_as_fixed_and_no_unused_oil():
+    """Issue 27: the gyro sweep title named the varied outer-ring speed as fixed and an oil the model does not use,
+    and was clipped (now wrapped)."""
+    summ = [{"sfmc": 2e-6 + 1e-7 * i, "rfmc": 1e-6} for i in range(2)]
+    ds = _summary({"operating.outer_speed": "2,5rpm"}, summ, case="jiang2014_gyro")
+    prep = plotting._prepare_sweep(ds)
+    from hsbearing.plotting.sweep import _sweep_title
+
+    title = _sweep_title(ds, prep)
+    fixed = title.split("fixed: ", 1)[1] if "fixed: " in title else ""
+    assert "outer ring" not in fixed and "oil" not in title.lower(), title
+    assert all(len(line) <= 110 for line in title.splitlines()), title

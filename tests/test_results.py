@@ -66,8 +66,10 @@ def test_atomic_write_leaves_no_partial_file(tmp_path, monkeypatch):
         raise RuntimeError("disk full")
 
     monkeypatch.setattr(xr.Dataset, "to_netcdf", boom)
-    with pytest.raises(RuntimeError):
-        write_netcdf(ds, target)
+    from hsbearing.errors import OutputWriteError
+
+    with pytest.raises(OutputWriteError, match="disk full"):  # issue 27: the failed write is reported as such
+        write_netcdf(ds, target, fallback=False)
     assert list(tmp_path.iterdir()) == []
 
 

@@ -551,3 +551,57 @@ def test_cli_invalid_value_is_bad_input_unless_keep_going(tmp_path, capsys):
     rc = cli.main(["sweep", "zhang2016", "--vary", "inner_conformity=0.49,0.52", "--kind", "quasistatic", "-j", "1",
                    "--keep-going", "-o", str(out)])
     assert rc == 1 and (out / "sweep.nc").exists()
+
+
+# ----------------------------------------------------------------------------- issue 27: resume trusts only this point's archive
+
+
+def test_resume_recomputes_an_archive_of_another_point(tmp_path, monkeypatch):
+    """Another load's archive copied over this point's name (a complete, readable archive): its own
+    ``sweep_point_hash`` says it is not this point, so the point is recomputed and sweep.nc shows the right loads
+    (before: '6 of 6 ok' and the wrong loads)."""
+    import shutil
+
+    log = tmp_path / "calls.log"
+    monkeypatch.setenv("HSB_TEST_CALL_LOG", str(log))
+    out = tmp_path / "out"
+    first = _qs_sweep(out, {"axial_load": "100,500,1000N"}, jobs=1)
+    names = [str(a) for a in first["archive"].values]
+    shutil.copyfile(out / names[2], out / names[0])  # the 1000 N archive under the 100 N point's name
+    again = _qs_sweep(out, {"axial_load": "100,500,1000N"}, jobs=1)
+    assert list(again["resumed"].values) == [0, 1, 1]
+    assert len(log.read_text().splitlines()) == 4  # 3 + the recomputed 100 N point
+    np.testing.assert_allclose(again["mean_inner_contact_load"].values, first["mean_inner_contact_load"].values)
+    assert open_run(out / names[0]).attrs["sweep_point_hash"] != open_run(out / names[2]).attrs["sweep_point_hash"]
+
+
+def test_resume_recomputes_an_archive_without_point_identity(tmp_path, monkeypatch):
+    """An archive with no ``sweep_point_hash`` (written by something else under this name) is not trusted."""
+    log = tmp_path / "calls.log"
+    monkeypatch.setenv("HSB_TEST_CALL_LOG", str(log))
+    first = _qs_sweep(tmp_path, {"axial_load": "100,500N"}, jobs=1)
+    victim = tmp_path / str(first["archive"].values[1])
+    ds = open_run(victim)
+    del ds.attrs["sweep_point_hash"]
+    ds["inner_contact_load"] = ds["inner_contact_load"] * 3.0  # wrong numbers that must not be reused
+    from hsbearing.results import write_netcdf
+
+    write_netcdf(ds, victim)
+    again = _qs_sweep(tmp_path, {"axial_load": "100,500N"}, jobs=1)
+    assert list(again["resumed"].values) == [1, 0]
+    np.testing.assert_allclose(again["mean_inner_contact_load"].values, first["mean_inner_contact_load"].values)
+
+
+def test_resume_cleans_the_short_temporary_names(tmp_path):
+    """Temporaries are now `.hsb-<hash of the name>-<random>.tmp` (a name that fits whenever the archive's fits);
+    a resumed sweep removes its own leftovers of that form and leaves another output's alone."""
+    from hsbearing.results import temp_prefix
+
+    ds = _qs_sweep(tmp_path, {"axial_load": "100,500N"})
+    mine = tmp_path / f"{temp_prefix(str(ds['archive'].values[0]))}abc123.tmp"
+    other = tmp_path / f"{temp_prefix('someone-else.nc')}xyz.tmp"
+    mine.write_bytes(b"half")
+    other.write_bytes(b"")
+    _qs_sweep(tmp_path, {"axial_load": "100,500N"})
+    assert not mine.exists() and other.exists()
+    assert len(temp_prefix("x" * 255)) < 20

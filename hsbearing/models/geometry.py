@@ -230,8 +230,10 @@ def guide_lands(case) -> GuideLands:
                                  f"the groove ({gw*1e3:.4g} mm wide at the land diameter {d_land*1e3:g} mm) covers the whole "
                                  f"{span*1e3:g} mm of cage/ring overlap: no land under the cage; give the land width")
         if math.isfinite(width):
-            notes.append(f"land width {width*1e3:.4g} mm (default: (min(ring width {w_ring*1e3:g}, cage width "
-                         f"{w_cage*1e3:g} mm) - groove width {gw*1e3:.4g} mm at the land diameter) / 2)")
+            ring_txt = f"{w_ring*1e3:g}" if w_ring is not None else "not given"  # either width may be absent
+            cage_txt = f"{w_cage*1e3:g} mm" if w_cage is not None else "not given"
+            notes.append(f"land width {width*1e3:.4g} mm (default: (min(ring width {ring_txt}, cage width "
+                         f"{cage_txt}) - groove width {gw*1e3:.4g} mm at the land diameter) / 2)")
     if math.isfinite(width) and math.isfinite(span) and math.isfinite(gw) and width > 0.5 * (span - gw) * (1 + 1e-9):
         raise GuideLandError("cage.guide_land_width",
                              f"a land of {width*1e3:g} mm does not fit beside the {gw*1e3:.4g} mm groove (at the land diameter) in "
@@ -287,7 +289,10 @@ def describe(case) -> list[str]:
             gl = guide_lands(case)
         except GuideLandError:
             gl = None
-        if gl is not None and gl.count:
+        if gl is not None and gl.count and not math.isfinite(gl.diameter):  # no land geometry in the case
+            key = "bearing.outer_land_diameter" if gl.guidance == "outer_ring" else "bearing.inner_land_diameter"
+            lines.append(f"guide lands ({gl.guidance}): not described (no {key}; the dynamic model needs it)")
+        elif gl is not None and gl.count:
             pos = ", ".join(f"{x*mm:+.4g}" for x in gl.offsets)
             lines.append(f"guide lands ({gl.guidance}): {gl.count} x {gl.width*mm:.4g} mm on diameter {gl.diameter*mm:.4g} mm, "
                          f"centres at {pos} mm from the cage mid-plane; groove width there {gl.groove_width*mm:.4g} mm")

@@ -89,18 +89,16 @@ def archive_kind(ds) -> str:
                                   "preload, gyro or sweep variables)")
 
 
+#: the older names of the per-system figure functions here -> the archive kind whose figure they draw
+_OLD_NAMES = {"plot_gyro": "gyro", "plot_friction": "friction", "plot_preload": "preload"}
+
+
 def __getattr__(name):
-    """The per-system figure functions under their older names here (they live in hsbearing/systems/)."""
-    if name == "plot_gyro":
-        from hsbearing.systems.gyro.figures import plot_gyro
+    """The per-system figure functions under their older names here, found through the systems registry
+    (:func:`hsbearing.systems.figure_functions`), so this package imports no system's figure module by name
+    (the systems' figures import hsbearing.plotting: issue 27, item 11, the last import circle)."""
+    if name in _OLD_NAMES:
+        from hsbearing.systems import figure_functions
 
-        return plot_gyro
-    if name == "plot_friction":
-        from hsbearing.systems.deep_groove.figures import plot_friction
-
-        return plot_friction
-    if name == "plot_preload":
-        from hsbearing.systems.wire_race.figures import plot_preload
-
-        return plot_preload
+        return figure_functions()[_OLD_NAMES[name]]
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -30,8 +30,13 @@ def save_figure(fig, path, dpi: int = 110, metadata: dict | None = None) -> Path
 
     path = Path(path)
     FigureCanvasAgg(fig)
-    with atomic_write(path, suffix=path.suffix or ".png") as tmp:
-        fig.savefig(tmp, dpi=dpi, format=(path.suffix.lstrip(".") or "png"), metadata=metadata)
+    try:
+        with atomic_write(path, suffix=path.suffix or ".png") as tmp:
+            fig.savefig(tmp, dpi=dpi, format=(path.suffix.lstrip(".") or "png"), metadata=metadata)
+    except OSError as exc:  # disk full, directory gone read-only: one line, not a traceback
+        from hsbearing.errors import OutputWriteError
+
+        raise OutputWriteError(path, exc.strerror or str(exc), note="figure not written") from None
     return path
 
 
@@ -123,12 +128,13 @@ def _wrap(text: str, width: int) -> str:
 
 
 def _per_ball_axes(ax, nb, ylabel: str, title: str, grid_axis: str) -> None:
-    """Labels, ball ticks 1..nb, legend and grid of a per-ball panel."""
+    """Labels, ball ticks 0..nb-1 (the ``ball`` coordinate of the archives and the printed tables), legend and
+    grid of a per-ball panel."""
     ax.set_xlabel("ball")
     ax.set_ylabel(ylabel)
     ax.set_title(title, fontsize=10)
     if nb:
-        ax.set_xticks(np.arange(1, nb + 1))
+        ax.set_xticks(np.arange(nb))
         ax.legend(fontsize=8)
     ax.grid(alpha=0.3, axis=grid_axis)
 

@@ -43,7 +43,11 @@ MAX_ORDERED_SERIES = 30
 # drawing order (friction moments first for a gyro sweep); a panel is drawn only if one of its variables is
 # present with a finite value at an ok point.
 _SWEEP_PANELS = (
-    ("mean cage slip ratio", "slip ratio [%]", 100.0, (("mean_cage_slip_ratio", None, "-"),)),
+    # the slip against the nominal contact angle reads as an overspeed at light load (-10.6 % at 100 N); the
+    # raceway-control slip (epicyclic speed at the running contact angles, as `run` prints) is drawn beside it
+    ("mean cage slip ratio", "slip ratio [%]", 100.0, (("mean_cage_slip_ratio", "vs nominal contact angle", "-"),
+                                                       ("mean_cage_slip_ratio_raceway_control",
+                                                        "vs raceway control (running angles)", "--"))),
     ("cage whirl radius", "whirl radius [\u00b5m]", 1e6, (("whirl_amplitude", "RMS (whirl amplitude)", "-"),
                                                            ("whirl_radius_max", "max", ":"))),
     ("whirl frequency / cage speed", "frequency ratio [-]", 1.0, (("whirl_frequency_ratio", None, "-"),)),
@@ -334,19 +338,27 @@ def _sweep_title(ds, prep) -> str:
         if str(c).endswith("_label") and ds[c].dims == ("point",):
             keys.add(ds[str(c)[:-6]].attrs.get("case_key", str(c)[:-6]) if str(c)[:-6] in ds.coords else str(c)[:-6])
     lab = _case_labels(ds)
+    if ds.attrs.get("case_system", "angular_contact") != "angular_contact":
+        lab.pop("oil", None)  # the other systems carry the oil name as a placeholder: their models do not use it
     if lab.get("speed") == "n = 0 r/min":  # outer ring rotating (gyro bearings): show the outer-ring speed
         lab.pop("speed")
+        if "operating.outer_speed" in keys or "outer_speed" in keys:  # varied: not a fixed condition
+            n_o_varied = True
+        else:
+            n_o_varied = False
         from hsbearing.case import CaseError, parse_quantity
 
         try:
             n_o = parse_quantity(tomllib.loads(ds.attrs["case_toml"])["operating"]["outer_speed"], "angular_speed")
         except (KeyError, tomllib.TOMLDecodeError, CaseError):  # no case text or no outer speed: nothing to add
             n_o = 0.0
-        if n_o:
+        if n_o and not n_o_varied:
             lab["speed"] = f"outer ring n$_o$ = {n_o * _RPM:.3g} r/min"
     fixed = [lab[v] for k, v in _LABEL_KEYS.items() if v in lab and k not in keys and v not in keys]
     line2 = "varied: " + ", ".join(varied) + ("; fixed: " + ", ".join(fixed) if fixed else "")
-    return line1 + "\n" + line2
+    import textwrap
+
+    return "\n".join(textwrap.wrap(line1, 110) + textwrap.wrap(line2, 110))  # long titles wrap, never clip
 
 
 def _series_colours(prep):

@@ -64,7 +64,8 @@ def friction_command(case, args) -> int:
     print("  ".join(f"{h:>14s}" for h in head))
     for i, wi in enumerate(ds["speed"].values):
         row = [f"{_rpm(wi):14.0f}"] + [f"{ds[f'qs_power_loss_{s}'].values[i]:14.4g}" for s in srcs]
-        row += [f"{ds.qs_power_loss.values[i]:14.4g}", f"{ds.qs_friction_torque.values[i] * 1e3:14.4g}",
+        M = ds.qs_friction_torque.values[i]
+        row += [f"{ds.qs_power_loss.values[i]:14.4g}", f"{M * 1e3:14.4g}" if np.isfinite(M) else f"{'n/a (0 r/min)':>14s}",
                 f"{ds.skf_rolling_torque.values[i] * 1e3:14.4g}", f"{ds.skf_sliding_torque.values[i] * 1e3:14.4g}",
                 f"{ds.skf_total_torque.values[i] * 1e3:14.4g}", f"{ds.skf_total_torque.values[i] * abs(wi):14.4g}"]
         print("  ".join(row))
@@ -84,6 +85,8 @@ def friction_command(case, args) -> int:
     if case.friction.law == "coulomb":
         print("note: friction.law = coulomb selects the seed 003 deep-groove sliding method with a dry constant mu; it is not "
               "used for angular-contact bearings (the traction law of the oil is)")
+    if not np.all(np.isfinite(ds.qs_friction_torque.values)):
+        print("note: M = P / omega is not defined at 0 r/min (no rotation, no power): n/a")
     print("the dynamic run (hsbearing run) adds the pocket and whirling-cage losses: power_loss_<source> in its archive")
     if ds.attrs.get("warnings", "none") != "none":
         for x in str(ds.attrs["warnings"]).split(" | "):
@@ -96,10 +99,13 @@ def friction_command(case, args) -> int:
 
 
 def archive_kind(ds) -> str | None:
-    """``"thermal"`` (a thermal network), ``"run"`` (a time series) or ``"quasistatic"`` (per-ball contact loads):
-    the fallback kinds, asked last."""
+    """``"thermal"`` (a thermal network), ``"friction_angular_contact"`` (``hsbearing friction`` of an
+    angular-contact case: dim ``speed``, ``qs_power_loss``), ``"run"`` (a time series) or ``"quasistatic"``
+    (per-ball contact loads): the fallback kinds, asked last."""
     if ds.attrs.get("archive_kind") == "thermal" or "node_temperature" in ds:
         return "thermal"
+    if "speed" in ds.dims and "qs_power_loss" in ds and "sliding_torque" not in ds:
+        return "friction_angular_contact"
     if "time" in ds.dims:
         return "run"
     if "inner_contact_load" in ds or "outer_contact_load" in ds:
@@ -111,6 +117,12 @@ def _plot_dynamic(ds, path):
     from hsbearing.systems.angular_contact.figures import plot_dynamic
 
     return plot_dynamic(ds, path)
+
+
+def _plot_friction(ds, path):
+    from hsbearing.systems.angular_contact.figures import plot_friction_angular_contact
+
+    return plot_friction_angular_contact(ds, path)
 
 
 def _plot_quasistatic(ds, path):
@@ -135,6 +147,7 @@ SYSTEM = System(
     description="angular-contact ball bearing: 6-DOF dynamics with cage (Zhang et al. 2016), quasi-static equilibrium",
     friction=friction_command, simulate=simulate, build_model=build_model, summary_lines=summary_lines,
     run_summary=run_summary, archive_kind=archive_kind, fallback=True,
-    figures={"run": _plot_dynamic, "quasistatic": _plot_quasistatic, "thermal": _plot_thermal},
+    figures={"run": _plot_dynamic, "quasistatic": _plot_quasistatic, "thermal": _plot_thermal,
+             "friction_angular_contact": _plot_friction},
     register_outputs=_register_outputs,
 )

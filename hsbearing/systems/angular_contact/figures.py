@@ -16,16 +16,18 @@ import numpy as np
 from hsbearing.plotting import common  # common.save_figure: one place to capture every figure
 from hsbearing.plotting.common import (
     _RPM,
+    _case_labels,
     _figure,
     _length_scale,
     _per_ball_axes,
     _shade,
+    _vals,
     _velocity_scale,
     _wrap,
     title_lines,
 )
 
-__all__ = ['plot_dynamic', 'plot_quasistatic']
+__all__ = ['plot_dynamic', 'plot_quasistatic', 'plot_friction_angular_contact']
 
 
 def _plot_dynamic(ds, path: Path) -> Path:
@@ -215,14 +217,14 @@ def _plot_static(ds, path: Path) -> Path:
         if name in ds:
             q = np.atleast_1d(np.asarray(ds[name].values, float))
             nb = len(q)
-            x = np.arange(1, nb + 1)
+            x = np.arange(nb)  # balls 0..Z-1, as in the archive and the printed table (issue 27)
             off = -0.2 if "inner" in name else 0.2
             ax1.bar(x + off, q, width=0.4, color=c, label=lab)
     _per_ball_axes(ax1, nb, "contact load [N]", "contact loads per ball", grid_axis="y")
     for name, lab, c in (("inner_contact_angle", "inner race $\\alpha_i$", "C0"), ("outer_contact_angle", "outer race $\\alpha_o$", "C1")):
         if name in ds:
             a = np.degrees(np.atleast_1d(np.asarray(ds[name].values, float)))
-            ax2.plot(np.arange(1, len(a) + 1), a, "o-", color=c, label=lab)
+            ax2.plot(np.arange(len(a)), a, "o-", color=c, label=lab)
     _per_ball_axes(ax2, nb, "contact angle [\N{DEGREE SIGN}]", "contact angles per ball", grid_axis="both")
     return common.save_figure(fig, path)
 
@@ -249,3 +251,43 @@ def _draw_section_line(ax, ds, lf: float, view: float) -> None:
     ax.plot([yc, view], [zc, zc], color="r", lw=1.2, zorder=4,
             label="section: D_Z = mean, D_Y > mean, " + ("V_Z > 0" if sense >= 0 else "V_Z < 0"))
     ax.plot([yc], [zc], "rx", ms=6, zorder=4)
+
+
+def plot_friction_angular_contact(ds, path) -> Path:
+    """Figure of ``hsbearing friction`` of an angular-contact case (dim ``speed``, ``qs_power_loss``; issue 27):
+    (a) the quasi-static power loss by source against the inner-ring speed [W]; (b) its friction torque
+    P / omega next to the SKF 2004 moments M_rr, M_sl and M [N mm]."""
+    from hsbearing.balances import SOURCES
+
+    path = Path(path)
+    fig = _figure((11, 4.6))
+    ax1, ax2 = fig.subplots(1, 2)
+    rpm = _vals(ds, "speed", _RPM)
+    lab = _case_labels(ds)
+    head = ", ".join([ds.attrs.get("case_name", "friction")] + [lab[k] for k in ("oil", "axial_load", "radial_load",
+                                                                                "temperature") if k in lab])
+    fig.suptitle(f"quasi-static power loss and friction torque: {head}", fontsize=11)
+    marker = "o" if len(rpm) <= 12 else None
+    for k, s in enumerate(SOURCES):
+        name = f"qs_power_loss_{s}"
+        if name in ds and np.any(np.abs(_vals(ds, name)) > 1e-9):
+            ax1.plot(rpm, _vals(ds, name), marker=marker, ms=4, lw=1.2, color=f"C{k}", label=s.replace("_", " "))
+    ax1.plot(rpm, _vals(ds, "qs_power_loss"), marker=marker, ms=4, lw=2.0, color="k", label="total")
+    ax1.set_xlabel("inner-ring speed n [r/min]")
+    ax1.set_ylabel("power loss [W]")
+    ax1.set_title("(a) power loss by source (quasi-static state)", fontsize=10)
+    ax1.grid(alpha=0.3)
+    ax1.legend(fontsize=7.5, loc="best")
+    rows = (("qs_friction_torque", "quasi-static P / \u03c9", "k", "-", 2.0),
+            ("skf_rolling_torque", "SKF 2004 $M_{rr}$", "C4", "--", 1.2),
+            ("skf_sliding_torque", "SKF 2004 $M_{sl}$", "C1", "--", 1.2),
+            ("skf_total_torque", "SKF 2004 total $M$", "C3", "--", 1.6))
+    for name, label, col, ls, lw in rows:
+        if name in ds:
+            ax2.plot(rpm, _vals(ds, name, 1e3), ls=ls, color=col, lw=lw, marker=marker, ms=4, label=label)
+    ax2.set_xlabel("inner-ring speed n [r/min]")
+    ax2.set_ylabel("torque [N mm]")
+    ax2.set_title("(b) friction torque", fontsize=10)
+    ax2.grid(alpha=0.3)
+    ax2.legend(fontsize=7.5, loc="best")
+    return common.save_figure(fig, path)

@@ -67,8 +67,13 @@ def plot_power(ds, path, smooth_ms: float = 0.5) -> Path:
     names = [s for s in SOURCES if f"power_loss_{s}" in ds]
     series = [_moving_mean(t, np.asarray(ds[f"power_loss_{s}"].values, float), w) for s in names]
     ax.stackplot(t_ms, *series, labels=[s.replace("_", " ") for s in names], alpha=0.85)
-    ax.plot(t_ms, _moving_mean(t, np.asarray(ds["drive_power"].values, float), w), "k-", lw=1.2,
-            label="drive power (shaft); drive - loss = dE/dt")
+    drive = _moving_mean(t, np.asarray(ds["drive_power"].values, float), w)
+    ax.plot(t_ms, drive, "k-", lw=1.2, label="drive power (shaft); drive - loss = dE/dt")
+    # headroom above the curves for the legend, so it never covers the drive-power line (issue 27)
+    top = np.nanmax([np.nanmax(np.sum(series, axis=0)) if series else 0.0, np.nanmax(drive) if drive.size else 0.0])
+    bottom = min(0.0, float(np.nanmin(drive))) if drive.size else 0.0
+    if np.isfinite(top) and top > bottom:
+        ax.set_ylim(bottom, top + 0.6 * (top - bottom))
     ax.set_xlabel("time [ms]")
     ax.set_ylabel("power [W]")
     ax.set_title(f"(a) power loss by source, stacked (moving mean over {smooth_ms:g} ms)", fontsize=10)

@@ -65,7 +65,13 @@ def plot_gyro(ds, path) -> Path:
         a.grid(alpha=0.3)
     title = f"{ds.attrs.get('case_name', '')}: " + ", ".join(
         f"{v.upper()} = {float(ds[v]) * u:.3g} \u00b5N m" for v in ("sfmc", "sfmo", "rfmc") if v in ds and np.isfinite(float(ds[v])))
+    if "sfmc_ensemble_mean" in ds and np.isfinite(float(ds["sfmc_ensemble_mean"])):  # the start ensemble's result
+        n = int(ds.sizes.get("start_offset", 0))
+        title += (f"; SFMC over {n} start positions {float(ds['sfmc_ensemble_mean']) * u:.3g} +/- "
+                  f"{float(ds['sfmc_ensemble_sd']) * u:.2g} \u00b5N m (mean +/- sd; SFMC above: this start)")
     if ds.attrs.get("status", "ok") != "ok":
         title += f" [{ds.attrs['status']}]"
-    fig.suptitle(title, fontsize=10)
+    import textwrap
+
+    fig.suptitle("\n".join(textwrap.wrap(title, 120)), fontsize=10)
     return common.save_figure(fig, path)

@@ -445,19 +445,30 @@ def simulate(case, duration=None, progress: bool = False, *, fine_interval: floa
                        settle=settle, cage_offset=cage_offset, cage_angle=cage_angle, **kw)
     n = case.simulation.start_positions
     if n is not None and n > 1:
-        ds = _add_start_ensemble(ds, case, n, progress=progress, fine_interval=fine_interval, wall_limit=wall_limit,
-                                 settle=settle, cage_offset=cage_offset, cage_angle=cage_angle, **kw)
+        ds = _add_start_ensemble(ds, case, n, duration=duration, progress=progress, fine_interval=fine_interval,
+                                 wall_limit=wall_limit, settle=settle, cage_offset=cage_offset, cage_angle=cage_angle,
+                                 **kw)
     return ds
 
 
-def _add_start_ensemble(ds, case, n: int, **kw):
-    """``ds`` with the start ensemble of ``n`` starts (``sfmc_ensemble`` ...); see :func:`simulate`."""
+def _add_start_ensemble(ds, case, n: int, duration: float | None = None, **kw):
+    """``ds`` with the start ensemble of ``n`` starts (``sfmc_ensemble`` ...); see :func:`simulate`.
+
+    Each start runs one oscillation period, or the run's ``duration`` if shorter (``--duration`` applies to the
+    ensemble too; issue 27).  The offset-0 start of a constant-rate run of that same length is the run itself:
+    its SFMC is reused, not computed a second time."""
     offsets = start_offsets(n)
+    period = float(case.operating.oscillation_period)
+    run_T = float(duration) if duration is not None else float(case.simulation.duration)
+    T = min(run_T, period)
+    reuse = None
+    if case.operating.mode == "constant" and run_T == T and "sfmc" in ds and tuple(kw.get("cage_offset", (0, 0, 0))) == (0, 0, 0):
+        reuse = float(ds["sfmc"].values)  # this run is the offset-0 start (same case, same length, same start)
     vals = np.full(n, np.nan)
     failure = None
     t0 = time.perf_counter()
     try:
-        for i, v in enumerate(_ensemble_sfmc(case, offsets, **kw)):
+        for i, v in enumerate(_ensemble_sfmc(case, offsets, T, reuse_zero=reuse, **kw)):
             vals[i] = v
     except SolverError as exc:
         failure = exc
@@ -470,7 +481,7 @@ def _add_start_ensemble(ds, case, n: int, **kw):
     out = ds.assign(ens.data_vars).assign_coords(start_offset=ens["start_offset"])
     out.attrs["start_ensemble_play_rad"] = circumferential_play_angle(
         case.bearing.ball_diameter, case.cage.pocket_diameter, case.cage.pocket_depth, case.bearing.pitch_diameter)
-    out.attrs["start_ensemble_duration_s"] = float(case.operating.oscillation_period)
+    out.attrs["start_ensemble_duration_s"] = T
     out.attrs["start_ensemble_wall_time_s"] = time.perf_counter() - t0
     if failure is not None:
         i = int(np.argmax(np.isnan(vals)))
@@ -631,8 +642,10 @@ def start_offsets(n: int) -> np.ndarray:
     return np.array([(2 * i - (n - 1)) / (2 * (n - 1)) for i in range(n)], dtype=float)
 
 
-def _ensemble_sfmc(case, offsets, duration: float | None = None, *, cage_angle: float = 0.0, **kw):
-    """Yield the SFMC [N m] of a constant-rate start for each offset (fraction of the play); see start_ensemble."""
+def _ensemble_sfmc(case, offsets, duration: float | None = None, *, cage_angle: float = 0.0,
+                   reuse_zero: float | None = None, **kw):
+    """Yield the SFMC [N m] of a constant-rate start for each offset (fraction of the play); see start_ensemble.
+    ``reuse_zero``: the SFMC of the offset-0 start when it is already known (yielded without a run)."""
     play = circumferential_play_angle(case.bearing.ball_diameter, case.cage.pocket_diameter, case.cage.pocket_depth,
                                       case.bearing.pitch_diameter)
     T = duration if duration is not None else case.operating.oscillation_period
@@ -640,6 +653,9 @@ def _ensemble_sfmc(case, offsets, duration: float | None = None, *, cage_angle: 
     c = case if case.operating.mode == "constant" else override(case, **{"operating.mode": "constant"})
     n = len(offsets)
     for k, f in enumerate(offsets, 1):  # each progress bar says which start it is
+        if f == 0.0 and reuse_zero is not None:
+            yield reuse_zero
+            continue
         yield float(_simulate_one(c, duration=T, cage_angle=cage_angle + f * play,
                                   progress_desc=f"gyro start {k}/{n} (offset {f:+g})", **kw)["sfmc"])
 
