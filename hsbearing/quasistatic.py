@@ -703,6 +703,27 @@ def _solve_from(P, q0, X1, X2, tol, maxfev, stats):
         raise SolverError(
             f"quasi-static equilibrium did not converge: ring residual max|R|/F = {rn:.3e} "
             f"(tolerance {tol:.1e}; R = {np.array2string(R, precision=4)} [N, N m]){hint}", partial=ds)
+    if not P.aligned and P.Z:
+        # An angular-contact ring carries its contacts on the thrust side of the groove only: the other side
+        # is a low shoulder / counterbore (Harris & Kotzalas Vol. 1, Ch. 1-2), so an equilibrium that loads a
+        # contact at an angle of the opposite sign to the nominal one has the balls riding over that shoulder.
+        # Newton can reach such a root (the groove model is symmetric); it is not an equilibrium of the bearing.
+        sgn = 1.0 if P.alpha0 >= 0 else -1.0
+        Q = np.concatenate([st["Qi"], st["Qo"]])
+        a = np.concatenate([np.arctan2(st["si"], st["ci"]), np.arctan2(st["so"], st["co"])])
+        loaded = Q > 1e-6 * max(float(np.max(Q)), 1e-12)
+        worst = float(np.min(sgn * a[loaded])) if loaded.any() else 0.0
+        if worst < 0.0:
+            ds = None
+            try:
+                ds = to_dataset(sol, status="failed")
+            except Exception:  # pragma: no cover - the partial result is best effort
+                pass
+            raise SolverError(
+                f"no equilibrium on the thrust side of the grooves: the only solution found loads contacts at "
+                f"{math.degrees(worst):.1f} deg, on the low-shoulder side of an angular-contact bearing; an "
+                "angular-contact bearing needs an axial load F_x > 0 in its contact direction, and a tilting moment "
+                "below about F_x d_m/2", partial=ds)
     return sol
 
 
