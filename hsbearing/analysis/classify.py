@@ -513,7 +513,8 @@ def classify(points, signal=None, *, scale=None, tol=DEFAULTS["tol"], kmax=DEFAU
                  "kind": "", "reason": ""}
     if n < n_min:
         det["kind"] = "too-few-points"
-        det["reason"] = f"only {n} Poincare section points (need >= {n_min}); simulate longer"
+        det["reason"] = (f"only {n} Poincare section point{'' if n == 1 else 's'} (need >= {n_min}); "
+                         "simulate longer")
         return "undetermined", 0.0, det
     # --- 1. periodic: k clusters repeated in order, each within tol, separated by >= `separation` spreads
     k, spread, sep = periodicity(Q, tol, kmax, separation=separation)
