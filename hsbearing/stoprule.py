@@ -35,7 +35,7 @@ STOP_DEFAULTS = {
     "amplitude_rtol": 0.02,  # whirl amplitude (RMS radius about the axis)
     "amplitude_atol_clearance": 0.005,  # ... or this fraction of the guide clearance
     "ratio_atol": 0.01,  # whirl frequency ratio (not compared for a still cage: its "whirl" is ball-pass jitter)
-    "still_growth_max": 0.1,  # 1/s, a still cage stops only if its motion grows slower (e-folding > 10 s)
+    "growth_max": 0.1,  # 1/s, no stop while the cage motion grows faster (e-folding < 10 s), whatever the label
 }
 
 #: Kinds on which a run never stops: a growing whirl, too few points to read the section at all, and a drifting
@@ -148,9 +148,10 @@ def decide(checks: list[Check], rule: dict | None = None, clearance: float | Non
         return False, f"kind {last.kind}: never stops on it"
     if last.kind != "still" and last.points < r["min_points"]:
         return False, f"{last.points} section points < {r['min_points']}"
-    if last.kind == "still" and not (last.growth <= r["still_growth_max"]):
-        return False, (f"still cage whose motion grows at {last.growth:.3g}/s (> {r['still_growth_max']:g}/s, or not "
-                       "measurable): a slow instability may still come")
+    if not (last.growth <= r["growth_max"]):
+        return False, (f"the cage motion grows at {last.growth:.3g}/s (> {r['growth_max']:g}/s, or not measurable): "
+                       + ("a slow instability of a resting cage may still come" if last.kind == "still" else
+                          "the orbit has not reached its size"))
     if len(checks) < n:
         return False, f"{len(checks)} check(s) < {n} to confirm"
     span = checks[-n:]
@@ -241,8 +242,8 @@ class Monitor:
         text = (f"converged: check every {r['interval']:g} s from {r['min_time']:g} s, stop when {r['confirm']} "
                 f"consecutive checks agree on label, kind and summaries (slip {r['slip_rtol']:g} rel / "
                 f"{r['slip_atol']:g}, amplitude {r['amplitude_rtol']:g} rel / {r['amplitude_atol_clearance']:g} "
-                f"clearance, ratio {r['ratio_atol']:g}), >= {r['min_points']} section points, a still cage only if its "
-                f"motion grows < {r['still_growth_max']:g}/s, never on "
+                f"clearance, ratio {r['ratio_atol']:g}), >= {r['min_points']} section points, only while the cage "
+                f"motion grows < {r['growth_max']:g}/s, never on "
                 f"{', '.join(NEVER_STOP_KINDS)}")
         return {
             "stop_rule": text if rule_name == "converged" else rule_name,
