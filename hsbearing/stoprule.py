@@ -36,6 +36,8 @@ STOP_DEFAULTS = {
     "amplitude_atol_clearance": 0.005,  # ... or this fraction of the guide clearance
     "ratio_atol": 0.01,  # whirl frequency ratio (not compared for a still cage: its "whirl" is ball-pass jitter)
     "growth_max": 0.1,  # 1/s, no stop while the cage motion grows faster (e-folding < 10 s), whatever the label
+    "growth_t_min": 0.1,  # s, the growth fit ignores the start-up before this time
+    "transient": "auto",  # the checks' transient rule (annotate): "auto" (>= 30 % of the span) or a fraction
 }
 
 #: Kinds on which a run never stops: a growing whirl, too few points to read the section at all, and a drifting
@@ -100,7 +102,8 @@ def motion_growth(t, y, z, block: float = 0.1, blocks: int = 4, t_min: float = 0
     return float(np.polyfit(mid, rms, 1)[0])
 
 
-def check(ds, case=None, *, section: str = "transverse", block: float = STOP_DEFAULTS["interval"]) -> Check:
+def check(ds, case=None, *, section: str = "transverse", block: float = STOP_DEFAULTS["interval"],
+          transient="auto", growth_t_min: float = STOP_DEFAULTS["growth_t_min"]) -> Check:
     """Annotate the run ``ds`` (a prefix) and return its answer.
 
     ``ds`` needs ``time`` and the cage-centre variables (:data:`CHECK_VARIABLES`, the velocities and the angle
@@ -110,7 +113,7 @@ def check(ds, case=None, *, section: str = "transverse", block: float = STOP_DEF
 
     keep = [v for v in CHECK_VARIABLES if v in ds.variables]
     small = ds[keep]
-    a = annotate(small, case, section=section)
+    a = annotate(small, case, section=section, transient=transient)
 
     def f(name):
         return float(a[name]) if name in a else float("nan")
@@ -119,7 +122,7 @@ def check(ds, case=None, *, section: str = "transverse", block: float = STOP_DEF
                  kind=str(a.attrs.get("classification_kind", "")), points=int(a["poincare_y"].size),
                  slip=f("mean_cage_slip_ratio"), amplitude=f("whirl_amplitude"), ratio=f("whirl_frequency_ratio"),
                  growth=motion_growth(ds["time"].values, ds["cage_center_y"].values, ds["cage_center_z"].values,
-                                      block=block))
+                                      block=block, t_min=growth_t_min))
 
 
 def _close(a: float, b: float, rtol: float, atol: float) -> bool:
@@ -179,6 +182,10 @@ def _clearance(ds, case):
     return float(c) if c is not None and math.isfinite(float(c)) else None
 
 
+def _check_kw(r: dict) -> dict:
+    return {"block": r["interval"], "transient": r["transient"], "growth_t_min": r["growth_t_min"]}
+
+
 def converged(ds, case=None, rule: dict | None = None, *, section: str = "transverse"):
     """Pure rule on a run prefix: (stop, reason, checks) from the checks at :func:`check_times` of ``ds``.
 
@@ -188,7 +195,8 @@ def converged(ds, case=None, rule: dict | None = None, *, section: str = "transv
     r = dict(STOP_DEFAULTS, **(rule or {}))
     t = np.asarray(ds["time"].values, float)
     times = check_times(float(t[-1]), r)[-int(r["confirm"]):]
-    checks = [check(ds.isel(time=slice(0, int(np.searchsorted(t, tc + 1e-9)))), case, section=section) for tc in times]
+    checks = [check(ds.isel(time=slice(0, int(np.searchsorted(t, tc + 1e-9)))), case, section=section,
+                    **_check_kw(r)) for tc in times]
     stop, reason = decide(checks, r, _clearance(ds, case))
     return stop, reason, checks
 
@@ -229,7 +237,8 @@ class Monitor:
         while self.pending and tr >= self.pending[0] - 1e-9:
             self.pending.pop(0)
         w0 = _time.perf_counter()
-        c = check(self.to_prefix(np.asarray(self.ts), np.asarray(self.ys)), self.case, section=self.section)
+        c = check(self.to_prefix(np.asarray(self.ts), np.asarray(self.ys)), self.case, section=self.section,
+                  **_check_kw(self.rule))
         self.checks.append(c)
         stop, self.reason = decide(self.checks, self.rule, self.clearance)
         self.check_wall += _time.perf_counter() - w0

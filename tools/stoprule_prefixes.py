@@ -51,7 +51,7 @@ def replay(cells: dict, rule: dict | None = None, t_full: float = 1.2):
     """(cells agreeing, simulated seconds, differences, per-cell (stop time, label, reason))."""
     r = dict(stoprule.STOP_DEFAULTS, **(rule or {}))
     agree, total, diffs, rows = 0, 0.0, [], []
-    for name, c in sorted(cells.items(), key=lambda kv: (kv[1]["table"], kv[1]["cell"])):
+    for _name, c in sorted(cells.items(), key=lambda kv: (kv[1]["table"], kv[1]["cell"])):
         hist, stop_t, reason = [], None, ""
         for k in c["checks"]:
             on_grid = abs((k["t"] - r["min_time"]) / r["interval"] - round((k["t"] - r["min_time"]) / r["interval"])) < 1e-6
