@@ -460,6 +460,12 @@ def build_parser() -> argparse.ArgumentParser:
     sp.add_argument("-o", "--output", required=True, help="output directory (resumable: rerun to finish)")
     sp.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     sp.add_argument("--no-figure", "--no-plot", dest="no_figure", action="store_true", help="do not draw DIR/map.png")
+    sp.add_argument("--warm-start", action="store_true",
+                    help="experimental: seed points (every other value of each axis) run cold, the others start from "
+                         "the final state of their nearest seed; a sample also runs cold and the label agreement is "
+                         "reported (docs/sweeps.md, Warm starts)")
+    sp.add_argument("--cold-sample", type=int, default=4, metavar="N",
+                    help="with --warm-start: warm points also run cold to check the agreement (default 4)")
     sp.set_defaults(func=cmd_map)
 
     from hsbearing.study import study_help

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["WARM_RULE", "warm_state", "simulate_warm", "nearest"]
+__all__ = ["WARM_RULE", "warm_state", "simulate_warm", "nearest", "WarmNearest", "seed_indices"]
 
 #: Stop-rule overrides of a warm-started run: the start is already settled, so the checks discard only the first
 #: 10 % of the run (not >= 30 %), the growth fit starts at 0 and the first check is at 0.2 s.  The point minimum
@@ -64,6 +64,14 @@ def simulate_warm(case, neighbour, duration=None, *, rule: dict | None = None, *
     return ds
 
 
+def seed_indices(n: int) -> list[int]:
+    """Seed indices along an axis of ``n`` values: every other one, and the last (every point is next to a seed)."""
+    idx = list(range(0, n, 2))
+    if idx[-1] != n - 1:
+        idx.append(n - 1)
+    return idx
+
+
 def nearest(done: list[tuple], idx: tuple) -> tuple | None:
     """The finished grid index nearest to ``idx`` (max-norm, then Euclidean; ties: the first listed)."""
     if not done:
@@ -71,3 +79,34 @@ def nearest(done: list[tuple], idx: tuple) -> tuple | None:
     d = [(max(abs(a - b) for a, b in zip(p, idx)), sum((a - b) ** 2 for a, b in zip(p, idx)), k)
          for k, p in enumerate(done)]
     return done[min(d)[2]]
+
+
+class WarmNearest:
+    """Point function of a warm-started map (:func:`hsbearing.maps.run_map` with ``warm_start=True``).
+
+    ``index``: case TOML -> grid index; ``seeds``: grid index -> archive path of the seed points, which run
+    cold; every other point starts from the final state of its nearest seed (cold if that seed has no final
+    state).  Module-level and picklable; its name is part of the point hash, so warm and cold archives never alias.
+    """
+
+    def __init__(self, index: dict | None = None, seeds: dict | None = None):
+        self.index = dict(index or {})
+        self.seeds = dict(seeds or {})
+
+    def __call__(self, case, duration):
+        import xarray as xr
+
+        from hsbearing.systems import simulate
+
+        idx = self.index.get(case.to_toml())
+        if idx is None or idx in self.seeds or not self.seeds:
+            return simulate(case, duration=duration)
+        src = self.seeds[nearest(sorted(self.seeds), idx)]
+        try:
+            with xr.open_dataset(src) as nb:
+                nb = nb[["final_state"]].assign_attrs(nb.attrs).load()
+        except (OSError, KeyError, ValueError):
+            return simulate(case, duration=duration)  # the seed failed: this point runs cold
+        ds = simulate_warm(case, nb, duration)
+        ds.attrs["warm_start_from"] = str(src)
+        return ds

@@ -28,3 +28,29 @@ def test_warm_state_scales_the_rotational_states_with_the_inner_speed():
 def test_nearest_neighbour_on_the_grid():
     assert nearest([(0, 0), (2, 2), (0, 3)], (1, 2)) == (2, 2)
     assert nearest([], (0, 0)) is None
+
+
+def test_warm_map_waves_seeds_cold_others_from_their_nearest_seed(tmp_path, monkeypatch):
+    """run_map(warm_start=True) in-process with the dynamics replaced: who starts from whom, and the cold sample."""
+    from hsbearing import maps, warmstart
+    from hsbearing.results import standard_attrs
+
+    calls = []
+
+    def fake_cold(case, duration=None):
+        calls.append(("cold", case.operating.axial_load, case.operating.radial_load))
+        return xr.Dataset({"final_state": ("state", np.zeros(3))}, attrs=standard_attrs(case, "ok"))
+
+    def fake_warm(case, nb, duration=None):
+        calls.append(("warm", case.operating.axial_load, case.operating.radial_load))
+        return xr.Dataset({"final_state": ("state", np.zeros(3))}, attrs=standard_attrs(case, "ok"))
+
+    monkeypatch.setattr("hsbearing.systems.simulate", fake_cold)
+    monkeypatch.setattr(warmstart, "simulate_warm", fake_warm)
+    ds = maps.run_map("zhang2016", "axial_load=500,1000,1500N", "radial_load=0,100,200N", out_dir=tmp_path,
+                      jobs=1, progress=False, figure=False, warm_start=True, cold_sample=2)
+    cold = {(a, r) for k, a, r in calls if k == "cold"}
+    warm = {(a, r) for k, a, r in calls if k == "warm"}
+    assert len(warm) == 9 - 4  # seeds: indices 0 and 2 of each axis
+    assert {(500.0, 0.0), (1500.0, 200.0), (500.0, 200.0), (1500.0, 0.0)} <= cold
+    assert "2/2" in ds.attrs["warm_start_agreement"] and ds.attrs["warm_start_differences"] == "none"
