@@ -68,7 +68,8 @@ def _plan_vary(x, y) -> dict:
 
 def run_map(case, x, y, *, out_dir, jobs: int | None = None, scheduler: str | None = None, duration=None,
             progress: bool = True, point_fn: Callable | None = None, retry_failed: bool = False,
-            figure: bool = True, warm_start: bool = False, cold_sample: int = 4) -> xr.Dataset:
+            figure: bool = True, warm_start: bool = False, cold_sample: int = 4,
+            stop: str | None = "converged") -> xr.Dataset:
     """Run a two-key cage-stability map and write ``out_dir/map.nc`` (and ``map.png``).
 
     Parameters
@@ -78,6 +79,8 @@ def run_map(case, x, y, *, out_dir, jobs: int | None = None, scheduler: str | No
     out_dir : directory of the point archives, ``sweep.nc``, ``map.nc`` and ``map.png``.
     jobs, scheduler, duration, progress, point_fn, retry_failed : as for :func:`hsbearing.sweeps.run_sweep`.
     figure : draw ``map.png``.
+    stop : stop rule of every point, "converged" (default, as ``hsbearing map``; docs/sweeps.md "Stop rule") or
+        "duration"; None = the case's ``[simulation] stop``.  Set in the case only when it changes it.
     warm_start : experimental (docs/sweeps.md "Warm starts"): the seed points (every other value of each axis,
         and the last) run cold, every other point starts from the final state of its nearest seed
         (:class:`hsbearing.warmstart.WarmNearest`); ``cold_sample`` of the warm points are also run cold (in
@@ -90,6 +93,8 @@ def run_map(case, x, y, *, out_dir, jobs: int | None = None, scheduler: str | No
         The map Dataset (dims ``(y_dim, x_dim)``).
     """
     base = case if not isinstance(case, (str, Path)) else load_case(case)
+    if stop is not None and stop != base.simulation.stop:
+        base = base.with_overrides(**{"simulation.stop": stop})
     vary = _plan_vary(x, y)
     t0 = time.perf_counter()
     warm_attrs = {}
@@ -240,7 +245,7 @@ def cli_main(args) -> int:
     ds = run_map(case, args.x, args.y, out_dir=out, jobs=args.jobs, scheduler=args.scheduler,
                  duration=args.duration, progress=not getattr(args, "quiet", False),
                  figure=not getattr(args, "no_figure", False), warm_start=bool(getattr(args, "warm_start", False)),
-                 cold_sample=int(getattr(args, "cold_sample", 4)))
+                 cold_sample=int(getattr(args, "cold_sample", 4)), stop=None)  # --stop is already in the case
     for line in wall_time_lines(ds):
         print(line)
     for k in ("warm_start", "warm_start_agreement", "warm_start_differences"):

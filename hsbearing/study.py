@@ -377,7 +377,7 @@ def run_study(
     bands: bool = False,
     band_samples_limit: int | None = None,
     report_only: bool = False,
-    stop: str | None = None,
+    stop: str | None = "converged",
 ) -> dict[str, Any]:
     """Run a study; returns ``{"tables": {id: Dataset}, "report": Path, "wall_time": s, ...}``.
 
@@ -394,8 +394,8 @@ def run_study(
     are "missing"), e.g. to look at a banded study while it runs (use a copy of
     the directory: a running study holds its lock); ``stop`` ("duration" or
     "converged", :mod:`hsbearing.stoprule`) sets ``simulation.stop`` of every
-    point (None: the study case's, i.e. duration; ``hsbearing study`` passes
-    converged unless ``--stop duration``).  It is part of each point's case,
+    point (default converged, as ``hsbearing study``; "duration" or None: the
+    study case's, i.e. the whole duration).  It is part of each point's case,
     hence of its archive hash: stopped and full-length runs never alias.
     """
     study = load_study(name)
@@ -444,6 +444,7 @@ def run_study(
             "wall_time": wall,
             "backend": backend_label,
             "duration": dur,
+            "stop": "converged" if stop_set else "duration",
             "point_fn": sweeps._fn_name(point_fn),
             "n_unique_points": n_points,
             "n_computed": len({r.get("archive") or id(r) for recs in records for r in recs
@@ -561,6 +562,7 @@ def _run_banded(study: Study, chosen: list[dict], out: Path, dur, *, jobs, sched
             "wall_time": wall,
             "backend": backend_label,
             "duration": dur,
+            "stop": "converged" if stop_set else "duration",
             "point_fn": sweeps._fn_name(point_fn),
             "n_unique_points": len(all_points),
             "n_computed": len({r.get("archive") or id(r) for rs in records for r in rs
@@ -610,7 +612,9 @@ def write_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, info:
     dur = info.get("duration")
     lines += ["## Run", "",
               f"- simulated time per point: {_fmt(dur * 1e3 if dur else float('nan'), '.4g')} ms"
-              + ("" if dur else " (the case's `[simulation] duration`)"),
+              + ("" if dur else " (the case's `[simulation] duration`)")
+              + (" at most: stop rule `converged` (a run stops when its answer has converged; its archive records "
+                 "`stopped_at` and `stop_reason`; docs/sweeps.md)" if info.get("stop") == "converged" else ""),
               f"- execution: {info['backend']} on {os.cpu_count()} core(s) of `{_host()}`",
               f"- points: {info['n_unique_points']} distinct cases ({info['n_computed']} computed in this invocation, "
               f"the others resumed from `{RUNS}/`)",
@@ -787,7 +791,8 @@ def write_band_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, 
     cores = os.cpu_count() or 1
     lines += ["## Run and wall time", "",
               f"- simulated time per point: {_fmt(dur * 1e3 if dur else float('nan'), '.4g')} ms"
-              + ("" if dur else " (the case's `[simulation] duration`)"),
+              + ("" if dur else " (the case's `[simulation] duration`)")
+              + (" at most: stop rule `converged` (docs/sweeps.md)" if info.get("stop") == "converged" else ""),
               f"- execution: {info['backend']} on {cores} core(s) of `{_host()}`",
               f"- points: {info['n_unique_points']} distinct cases = cells x {len(samples)} band samples "
               f"({info['n_computed']} computed in this invocation, the others resumed from `{RUNS}/`, e.g. the "

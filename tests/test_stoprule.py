@@ -152,7 +152,7 @@ def test_simulate_stops_and_records_why():
     from hsbearing.case import load_case
 
     case = load_case("zhang2016", **{"simulation.stop": "converged"})
-    rule = dict(min_time=0.1, interval=0.05, min_points=5)
+    rule = dict(min_time=0.1, interval=0.05, min_points=5, growth_t_min=0.0)  # growth measurable from 0.15 s
     ds = hsbearing.simulate(case, duration=0.35, stop_rule=rule)
     assert ds.attrs["stopped_at"] < 0.35 - 1e-9
     assert float(ds["time"][-1]) == pytest.approx(ds.attrs["stopped_at"])
