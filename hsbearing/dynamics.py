@@ -511,6 +511,7 @@ def continue_run(previous, duration=None, progress: bool = False, *, source: str
         raise CaseError(source, "final_state", "the stored state layout differs from this hsbearing's model")
     y0 = np.asarray(previous["final_state"].values, dtype=float)
     try:
+        kwargs.setdefault("stop", "duration")  # a continuation runs its whole extension (a stopped run included)
         new = simulate(case, duration=duration, progress=progress, model=m, y0=y0, t0=t_last, annotate=False, **kwargs)
         err = None
     except (SolverError, Interrupted) as exc:
@@ -527,8 +528,10 @@ def continue_run(previous, duration=None, progress: bool = False, *, source: str
             both[k] = v
     attrs = dict(previous.attrs)
     for k in ("classification", "classification_confidence", "classification_reason", "classification_details",
-              "classifier_version"):
+              "classifier_version", "stopped_at", "stop_reason", "stop_checks", "stop_check_wall_time"):
         attrs.pop(k, None)
+    if "stop_rule" in attrs:
+        attrs["stop_rule"] = f"{attrs['stop_rule']}; then continued to the requested duration"
     for k, v in new.attrs.items():
         if k.startswith("solver_") and k in attrs and isinstance(v, (int, float)) and k not in ("solver_rtol", "solver_atol") \
                 and isinstance(attrs[k], (int, float, np.number)):
