@@ -159,3 +159,16 @@ def test_simulate_stops_and_records_why():
     assert ds.attrs["stop_reason"].startswith("converged") and ds.attrs["stop_rule"].startswith("converged")
     assert ds.attrs["classification"] == "1 period"
     assert math.isclose(ds.attrs["requested_duration"], 0.35)
+
+
+def test_cli_stop_option_sets_the_case_only_when_it_changes_it():
+    from hsbearing import cli
+
+    p = cli.build_parser()
+    case = cli._load(p.parse_args(["run", "zhang2016", "--stop", "converged"]))
+    assert case.simulation.stop == "converged" and "stop" in case.to_toml()
+    case = cli._load(p.parse_args(["run", "zhang2016", "--stop", "duration"]))
+    assert case.simulation.stop == "duration" and "stop" not in case.to_toml()  # archive hashes unchanged
+    assert p.parse_args(["study", "zhang2016", "-o", "x"]).stop == "converged"
+    assert p.parse_args(["map", "--x", "a=1", "--y", "b=2", "-o", "x"]).stop == "converged"
+    assert p.parse_args(["sweep", "--vary", "a=1", "-o", "x"]).stop is None
