@@ -36,13 +36,13 @@ def quasistatic_sweep(jobs: int, n_loads: int, n_speeds: int) -> tuple[float, in
     return wall, int(ds.attrs["sweep_points"]), int(ds.attrs["sweep_points_ok"])
 
 
-def study(jobs: int, duration: str | None, out: str | None) -> dict:
+def study(jobs: int, duration: str | None, out: str | None, stop: str | None = None) -> dict:
     from hsbearing.study import run_study
 
     if out:
-        return run_study("zhang2016", out, jobs=jobs, duration=duration, progress=True)
+        return run_study("zhang2016", out, jobs=jobs, duration=duration, progress=True, stop=stop)
     with tempfile.TemporaryDirectory(prefix="bench_study_") as d:
-        return run_study("zhang2016", d, jobs=jobs, duration=duration, progress=True)
+        return run_study("zhang2016", d, jobs=jobs, duration=duration, progress=True, stop=stop)
 
 
 def main() -> None:
@@ -53,12 +53,17 @@ def main() -> None:
     p.add_argument("--duration", default=None, help="simulated time per study point, e.g. 0.05s")
     p.add_argument("-j", "--jobs", type=int, default=2)
     p.add_argument("-o", "--output", default=None, help="keep the study output here")
+    p.add_argument("--stop", default="both", choices=("both", "duration", "converged"),
+                   help="study: with the stop rule off (duration), on (converged) or both in one sitting (default)")
     a = p.parse_args()
     print(f"cores: {os.cpu_count()}, load average: {' '.join(f'{x:.2f}' for x in os.getloadavg())}")
     if a.study:
-        res = study(a.jobs, a.duration, a.output)
-        print(f"study zhang2016: {res['n_unique_points']} points, {res['n_computed']} computed, "
-              f"wall time {res['wall_time']:.1f} s ({res['backend']}, duration {res['duration']})")
+        for stop in (("duration", "converged") if a.stop == "both" else (a.stop,)):
+            out = f"{a.output}-{stop}" if a.output else None
+            res = study(a.jobs, a.duration, out, stop=stop)
+            print(f"study zhang2016, stop {stop}: {res['n_unique_points']} points, {res['n_computed']} computed, "
+                  f"wall time {res['wall_time']:.1f} s ({res['backend']}, duration {res['duration']}); load average "
+                  f"{' '.join(f'{x:.2f}' for x in os.getloadavg())}")
         return
     for jobs in (1, 2):
         wall, n, ok = quasistatic_sweep(jobs, a.loads, a.speeds)

@@ -266,6 +266,10 @@ SCHEMA: dict[str, dict[str, Field]] = {
                       "cage-centre state, crossed in the sense of the whirl; default), cage_revolution (once per cage "
                       "revolution, stroboscopic) or plane (D_Z = mean, upward)", default="transverse",
                       choices=("transverse", "cage_revolution", "plane")),
+        "stop": _f("choice", "when a dynamic run stops: duration (run the whole duration) or converged (stop when the "
+                   "cage-motion label, its kind and the summaries have held over a confirming interval; duration is then "
+                   "the upper bound; rule and thresholds: hsbearing.stoprule, docs/sweeps.md)", default="duration",
+                   choices=("duration", "converged")),
         "start_positions": _f("int", "gyro model (seed 000): cage start positions of the SFMC start ensemble (extra constant-rate "
                               "starts of one oscillation_period, cage turned over -1/2..+1/2 of its pocket play); 1 = none",
                               default=1, positive=True, maximum=MAX_START_POSITIONS),

@@ -28,6 +28,9 @@ def _load(args) -> "object":
     if getattr(args, "section", None):  # --section NAME is --set simulation.section=NAME
         sets["simulation.section"] = args.section
     case = load_case(args.case or DEFAULT_CASE, **sets)
+    stop = getattr(args, "stop", None)  # --stop RULE is --set simulation.stop=RULE, set only when it changes the
+    if stop and stop != case.simulation.stop:  # case (a default left out of the TOML keeps the archive hashes)
+        case = load_case(args.case or DEFAULT_CASE, **sets, **{"simulation.stop": stop})
     _print_envelope_warnings(case)
     return case
 
@@ -571,6 +574,8 @@ def build_parser() -> argparse.ArgumentParser:
     with_case(sp)
     sp.add_argument("-o", "--output", help="netCDF archive (default runs/<case>-<hash>.nc)")
     sp.add_argument("--duration", help="simulated time, e.g. 0.2s (default: [simulation] duration)")
+    sp.add_argument("--stop", choices=("duration", "converged"), default=None,
+                    help="stop rule: duration (run the whole duration) or converged (stop when the cage-motion label, its kind and the summaries have held over a confirming check; the duration is the upper bound; docs/sweeps.md); default: [simulation] stop, duration")
     sp.add_argument("--section", choices=("transverse", "cage_revolution", "plane"),
                     help="Poincare section of the cage-motion label (default: [simulation] section, transverse: "
                          "one point per loop of the cage-centre orbit; cage_revolution: once per cage revolution)")
@@ -603,6 +608,8 @@ def build_parser() -> argparse.ArgumentParser:
                          "workers instead of local processes (-j is then ignored)")
     sp.add_argument("--kind", default="run", choices=("run", "quasistatic"), help="what each point computes")
     sp.add_argument("--duration", help="simulated time of each run, e.g. 0.05s")
+    sp.add_argument("--stop", choices=("duration", "converged"), default=None,
+                    help="stop rule: duration (run the whole duration) or converged (stop when the cage-motion label, its kind and the summaries have held over a confirming check; the duration is the upper bound; docs/sweeps.md); default: [simulation] stop of the case, duration")
     sp.add_argument("-o", "--output", required=True, help="output directory")
     sp.add_argument("--no-figure", "--no-plot", dest="no_figure", action="store_true",
                     help="do not draw DIR/sweep.png (--no-plot is accepted as in 'hsbearing run')")
@@ -618,9 +625,17 @@ def build_parser() -> argparse.ArgumentParser:
     sp.add_argument("-j", "--jobs", type=int, default=None, help="worker processes (default: cores)")
     sp.add_argument("--scheduler", default=None, help="dask.distributed scheduler address tcp://host:port")
     sp.add_argument("--duration", help="simulated time of each run, e.g. 0.6s (default: [simulation] duration)")
+    sp.add_argument("--stop", choices=("duration", "converged"), default='converged',
+                    help="stop rule: duration (run the whole duration) or converged (stop when the cage-motion label, its kind and the summaries have held over a confirming check; the duration is the upper bound; docs/sweeps.md); default converged")
     sp.add_argument("-o", "--output", required=True, help="output directory (resumable: rerun to finish)")
     sp.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     sp.add_argument("--no-figure", "--no-plot", dest="no_figure", action="store_true", help="do not draw DIR/map.png")
+    sp.add_argument("--warm-start", action="store_true",
+                    help="experimental: seed points (every other value of each axis) run cold, the others start from "
+                         "the final state of their nearest seed; a sample also runs cold and the label agreement is "
+                         "reported (docs/sweeps.md, Warm starts)")
+    sp.add_argument("--cold-sample", type=int, default=4, metavar="N",
+                    help="with --warm-start: warm points also run cold to check the agreement (default 4)")
     sp.set_defaults(func=cmd_map)
 
     from hsbearing.study import study_help
@@ -638,6 +653,8 @@ def build_parser() -> argparse.ArgumentParser:
                     help="address tcp://host:port of a running dask.distributed scheduler; the points run on its "
                          "workers instead of local processes")
     sp.add_argument("--duration", help="simulated time of each run (default: the study's, e.g. 1.2 s)")
+    sp.add_argument("--stop", choices=("duration", "converged"), default='converged',
+                    help="stop rule: duration (run the whole duration) or converged (stop when the cage-motion label, its kind and the summaries have held over a confirming check; the duration is the upper bound; docs/sweeps.md); default converged")
     grp = sp.add_mutually_exclusive_group()
     grp.add_argument("--bands", dest="bands", action="store_true", default=False,
                      help="run every cell over the study's [bands] samples of the unknown inputs (guide clearance, "

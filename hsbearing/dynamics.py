@@ -356,7 +356,8 @@ def _time_grid(duration, dt):
 
 def simulate(case, duration=None, progress: bool = False, *, model: DynamicModel | None = None,
              rtol=None, atol=None, jacobian: str = "arrowhead", wall_limit=None, annotate: bool = True,
-             y0=None, t0: float = 0.0, cvode_settings: dict | None = None, **model_kwargs):
+             y0=None, t0: float = 0.0, cvode_settings: dict | None = None, stop: str | None = None,
+             stop_rule: dict | None = None, **model_kwargs):
     """Integrate the dynamic model of ``case`` and return the run Dataset over ``time`` and ``ball``.
 
     Parameters
@@ -372,6 +373,10 @@ def simulate(case, duration=None, progress: bool = False, *, model: DynamicModel
         :func:`continue_run` to extend an archived run from its ``final_state``
     cvode_settings : CVODE optional inputs (:data:`hsbearing.solvers.cvode.CVODE_SETTINGS`); None =
         :data:`SOLVER_SETTINGS` when reachable, ``{}`` = CVODE's own defaults
+    stop : "duration" (integrate to ``duration``) or "converged" (stop when the cage-motion answer has
+        converged, :mod:`hsbearing.stoprule`; ``duration`` is the upper bound); None = ``[simulation] stop``.
+        A converged run records ``stop_rule``, ``stopped_at`` (NaN when it ran to the bound) and ``stop_reason``.
+    stop_rule : overrides of :data:`hsbearing.stoprule.STOP_DEFAULTS`
 
     Raises
     ------
@@ -402,11 +407,16 @@ def simulate(case, duration=None, progress: bool = False, *, model: DynamicModel
     rtol = float(sim.rtol if rtol is None else rtol)
     atol_v = m.layout.atol(float(sim.atol if atol is None else atol))
     t_eval = float(t0) + _time_grid(duration, min(sim.output_interval, duration))
+    stop = getattr(sim, "stop", "duration") if stop is None else stop
+    if stop not in ("duration", "converged"):
+        raise ValueError(f"stop must be 'duration' or 'converged', got {stop!r}")
+    monitor = _stop_monitor(m, float(t_eval[0]), float(t_eval[-1]), stop_rule) if stop == "converged" else None
     wall0 = _time.perf_counter()
     try:
         res = integrate(m.rhs, m.y0 if y0 is None else np.asarray(y0, dtype=float), t_eval, rtol=rtol, atol=atol_v,
                         jacfn=m.jac if jacobian == "arrowhead" else None, progress=progress,
-                        progress_desc=f"{case.name}", wall_limit=wall_limit, cvode_settings=cvode_settings)
+                        progress_desc=f"{case.name}", wall_limit=wall_limit, cvode_settings=cvode_settings,
+                        callback=monitor)
     except KeyboardInterrupt:  # an integrator that lets Ctrl-C through: nothing to keep
         raise Interrupted("interrupted before the first output") from None
     stats = dict(res.stats)
@@ -416,11 +426,36 @@ def simulate(case, duration=None, progress: bool = False, *, model: DynamicModel
     status = f"interrupted at t = {float(res.t[-1]):.6g} s" if interrupted else res.status
     ds = to_dataset(m, res.t, res.y, stats, status, annotate=annotate)
     ds = with_final_state(ds, m, res.y[-1], requested_end=float(t_eval[-1]))
+    if monitor is not None:
+        ds.attrs.update(monitor.attrs())
     if interrupted:
         raise Interrupted(status, partial=ds)
     if not res.success:
         raise SolverError(res.status, partial=ds)
     return ds
+
+
+def _stop_monitor(m: DynamicModel, t_start: float, t_end: float, rule: dict | None):
+    """The stop-rule callback of :func:`simulate` (``stop="converged"``): keeps the cage states of each output."""
+    import xarray as xr
+
+    from hsbearing import stoprule
+    from hsbearing.models.geometry import derive
+
+    L = m.layout
+    names = ("y_c", "z_c", "ydot_c", "zdot_c", "phi_c", "phidot_c")
+    idx = np.array([L.cage(n) for n in names])
+    vars_ = ("cage_center_y", "cage_center_z", "cage_velocity_y", "cage_velocity_z", "cage_angle", "cage_speed")
+
+    def to_prefix(t, rows):
+        t = np.asarray(t) - t_start  # the rule's times are since the start of this run
+        return xr.Dataset({v: ("time", rows[:, k]) for k, v in enumerate(vars_)}, coords={"time": t})
+
+    clearance = float(derive(m.case).guide_clearance)
+    mon = stoprule.Monitor(to_prefix, t_end - t_start, m.case, rule, section=m.case.simulation.section,
+                           clearance=clearance if math.isfinite(clearance) else None, keep=lambda y: y[idx].copy(),
+                           t_start=t_start)
+    return mon
 
 
 # ----------------------------------------------------------------------------- interrupt and continue
@@ -491,6 +526,7 @@ def continue_run(previous, duration=None, progress: bool = False, *, source: str
         raise CaseError(source, "final_state", "the stored state layout differs from this hsbearing's model")
     y0 = np.asarray(previous["final_state"].values, dtype=float)
     try:
+        kwargs.setdefault("stop", "duration")  # a continuation runs its whole extension (a stopped run included)
         new = simulate(case, duration=duration, progress=progress, model=m, y0=y0, t0=t_last, annotate=False, **kwargs)
         err = None
     except (SolverError, Interrupted) as exc:
@@ -507,8 +543,10 @@ def continue_run(previous, duration=None, progress: bool = False, *, source: str
             both[k] = v
     attrs = dict(previous.attrs)
     for k in ("classification", "classification_confidence", "classification_reason", "classification_details",
-              "classifier_version"):
+              "classifier_version", "stopped_at", "stop_reason", "stop_checks", "stop_check_wall_time"):
         attrs.pop(k, None)
+    if "stop_rule" in attrs:
+        attrs["stop_rule"] = f"{attrs['stop_rule']}; then continued to the requested duration"
     for k, v in new.attrs.items():
         if k.startswith("solver_") and k in attrs and isinstance(v, (int, float)) and k not in ("solver_rtol", "solver_atol") \
                 and isinstance(attrs[k], (int, float, np.number)):

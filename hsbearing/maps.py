@@ -68,7 +68,8 @@ def _plan_vary(x, y) -> dict:
 
 def run_map(case, x, y, *, out_dir, jobs: int | None = None, scheduler: str | None = None, duration=None,
             progress: bool = True, point_fn: Callable | None = None, retry_failed: bool = False,
-            figure: bool = True) -> xr.Dataset:
+            figure: bool = True, warm_start: bool = False, cold_sample: int = 4,
+            stop: str | None = "converged") -> xr.Dataset:
     """Run a two-key cage-stability map and write ``out_dir/map.nc`` (and ``map.png``).
 
     Parameters
@@ -78,6 +79,13 @@ def run_map(case, x, y, *, out_dir, jobs: int | None = None, scheduler: str | No
     out_dir : directory of the point archives, ``sweep.nc``, ``map.nc`` and ``map.png``.
     jobs, scheduler, duration, progress, point_fn, retry_failed : as for :func:`hsbearing.sweeps.run_sweep`.
     figure : draw ``map.png``.
+    stop : stop rule of every point, "converged" (default, as ``hsbearing map``; docs/sweeps.md "Stop rule") or
+        "duration"; None = the case's ``[simulation] stop``.  Set in the case only when it changes it.
+    warm_start : experimental (docs/sweeps.md "Warm starts"): the seed points (every other value of each axis,
+        and the last) run cold, every other point starts from the final state of its nearest seed
+        (:class:`hsbearing.warmstart.WarmNearest`); ``cold_sample`` of the warm points are also run cold (in
+        ``out_dir/cold_sample``) and the label agreement is stored (``warm_start_agreement``,
+        ``warm_start_differences``).
 
     Returns
     -------
@@ -85,10 +93,22 @@ def run_map(case, x, y, *, out_dir, jobs: int | None = None, scheduler: str | No
         The map Dataset (dims ``(y_dim, x_dim)``).
     """
     base = case if not isinstance(case, (str, Path)) else load_case(case)
+    if stop is not None and stop != base.simulation.stop:
+        base = base.with_overrides(**{"simulation.stop": stop})
     vary = _plan_vary(x, y)
     t0 = time.perf_counter()
+    warm_attrs = {}
+    if warm_start:
+        if point_fn is not None:
+            raise ValueError("warm_start replaces the point function")
+        point_fn, warm_attrs = _warm_waves(base, vary, out_dir=out_dir, jobs=jobs, scheduler=scheduler,
+                                           duration=duration, progress=progress, retry_failed=retry_failed)
     ds = run_sweep(base, vary, jobs=jobs, scheduler=scheduler, out_dir=out_dir, kind="run", duration=duration,
                    progress=progress, point_fn=point_fn, retry_failed=retry_failed)
+    if warm_start:
+        warm_attrs.update(_cold_sample(base, vary, ds, point_fn, out_dir=out_dir, jobs=jobs, scheduler=scheduler,
+                                       duration=duration, progress=progress, n=cold_sample))
+        ds.attrs.update(warm_attrs)
     wall = time.perf_counter() - t0
     ky, kx = list(vary)
     dims = ds["status"].dims
@@ -103,6 +123,46 @@ def run_map(case, x, y, *, out_dir, jobs: int | None = None, scheduler: str | No
         except Exception as exc:  # noqa: BLE001 - the archives are written; the figure is a by-product
             print(f"hsbearing: no map figure: {type(exc).__name__}: {exc}", file=sys.stderr)
     return ds
+
+
+def _warm_waves(base, vary, *, out_dir, jobs, scheduler, duration, progress, retry_failed):
+    """Wave 1 of a warm-started map: the seed points, cold.  Returns the point function of wave 2 and attrs."""
+    from hsbearing.sweeps import plan_sweep
+    from hsbearing.warmstart import WarmNearest, seed_indices
+
+    full = plan_sweep(base, vary, duration=duration)
+    (ky, kx), (ay, ax) = list(vary), full.axes
+    sy, sx = seed_indices(len(ay.values)), seed_indices(len(ax.values))
+    fn = WarmNearest(index={pt.case.to_toml(): pt.index for pt in full.points if pt.case is not None})
+    seed_vary = {ky: [ay.values[i] for i in sy], kx: [ax.values[i] for i in sx]}
+    seeds = plan_sweep(base, seed_vary, duration=duration, point_fn=fn)
+    fn.seeds = {(sy[p.index[0]], sx[p.index[1]]): str(Path(out_dir) / p.archive) for p in seeds.points
+                if p.case is not None}
+    run_sweep(base, seed_vary, jobs=jobs, scheduler=scheduler, out_dir=out_dir, kind="run", duration=duration,
+              progress=progress, point_fn=fn, retry_failed=retry_failed)
+    return fn, {"warm_start": f"seeds (cold): {len(fn.seeds)} of {len(full.points)} points (every other value of "
+                              "each axis and the last); the others start from the final state of their nearest seed"}
+
+
+def _cold_sample(base, vary, ds, fn, *, out_dir, jobs, scheduler, duration, progress, n):
+    """Run ``n`` warm-started points cold as well (``out_dir/cold_sample``) and compare their labels."""
+    from hsbearing.sweeps import plan_sweep
+
+    full = plan_sweep(base, vary, duration=duration)
+    warm = [p for p in full.points if p.case is not None and p.index not in fn.seeds]
+    if not warm or n <= 0:
+        return {}
+    pick = [warm[int(k)] for k in np.unique(np.linspace(0, len(warm) - 1, min(n, len(warm))).round().astype(int))]
+    (ky, kx), (ay, ax) = list(vary), full.axes
+    zv = {ky: [ay.values[p.index[0]] for p in pick], kx: [ax.values[p.index[1]] for p in pick]}
+    cold = run_sweep(base, zv, zip=True, jobs=jobs, scheduler=scheduler, out_dir=Path(out_dir) / "cold_sample",
+                     kind="run", duration=duration, progress=progress)
+    lab_w = [str(ds["classification"].values[p.index]) for p in pick]
+    lab_c = [str(v) for v in np.asarray(cold["classification"].values).ravel()]
+    diff = [f"{ky}={ay.values[p.index[0]]}, {kx}={ax.values[p.index[1]]}: warm {w}, cold {c}"
+            for p, w, c in zip(pick, lab_w, lab_c) if w != c]
+    return {"warm_start_agreement": f"{len(pick) - len(diff)}/{len(pick)} sampled warm points have the cold label",
+            "warm_start_differences": "; ".join(diff) or "none"}
 
 
 def map_attrs(ds: xr.Dataset, kx: str, ky: str, dims, wall: float) -> dict:
@@ -170,6 +230,9 @@ def cli_main(args) -> int:
         k, _, v = item.partition("=")
         sets[k.strip()] = v.strip()
     case = load_case(args.case or DEFAULT_CASE, **sets)
+    stop = getattr(args, "stop", None)  # --stop RULE is --set simulation.stop=RULE, set only when it changes the
+    if stop and stop != case.simulation.stop:  # case (a default left out of the TOML keeps the archive hashes)
+        case = load_case(args.case or DEFAULT_CASE, **sets, **{"simulation.stop": stop})
     vary = _plan_vary(args.x, args.y)
     out = Path(args.output)
     if out.exists() and not out.is_dir():
@@ -189,9 +252,13 @@ def cli_main(args) -> int:
         raise CaseError("--x/--y", None, f"point {where} is not a valid case: {bad[0].error}")
     ds = run_map(case, args.x, args.y, out_dir=out, jobs=args.jobs, scheduler=args.scheduler,
                  duration=args.duration, progress=not getattr(args, "quiet", False),
-                 figure=not getattr(args, "no_figure", False))
+                 figure=not getattr(args, "no_figure", False), warm_start=bool(getattr(args, "warm_start", False)),
+                 cold_sample=int(getattr(args, "cold_sample", 4)), stop=None)  # --stop is already in the case
     for line in wall_time_lines(ds):
         print(line)
+    for k in ("warm_start", "warm_start_agreement", "warm_start_differences"):
+        if k in ds.attrs:
+            print(f"{k.replace('_', ' ')}: {ds.attrs[k]}")
     print(f"map: {out / 'map.nc'}")
     if not getattr(args, "no_figure", False) and (out / "map.png").exists():
         print(f"figure: {out / 'map.png'}")

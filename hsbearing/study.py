@@ -377,6 +377,7 @@ def run_study(
     bands: bool = False,
     band_samples_limit: int | None = None,
     report_only: bool = False,
+    stop: str | None = "converged",
 ) -> dict[str, Any]:
     """Run a study; returns ``{"tables": {id: Dataset}, "report": Path, "wall_time": s, ...}``.
 
@@ -391,9 +392,18 @@ def run_study(
     and the report says so); ``report_only`` computes nothing: the tables and
     the report are made from the archives already in ``DIR/runs`` (the others
     are "missing"), e.g. to look at a banded study while it runs (use a copy of
-    the directory: a running study holds its lock).
+    the directory: a running study holds its lock); ``stop`` ("duration" or
+    "converged", :mod:`hsbearing.stoprule`) sets ``simulation.stop`` of every
+    point (default converged, as ``hsbearing study``; "duration" or None: the
+    study case's, i.e. the whole duration).  It is part of each point's case,
+    hence of its archive hash: stopped and full-length runs never alias.
     """
     study = load_study(name)
+    # only "converged" is written into the cases: the study case stops at its duration, and a default left out of
+    # the TOML keeps the archive hashes of the full-length runs
+    if stop not in (None, "duration", "converged"):
+        raise CaseError("--stop", "stop", f"must be duration or converged, got {stop!r}")
+    stop_set = {"simulation.stop": "converged"} if stop == "converged" else {}
     out = Path(out_dir)
     dur = duration if duration is not None else study.spec["study"].get("duration")
     if isinstance(dur, str):
@@ -404,10 +414,10 @@ def run_study(
         raise CaseError(study.source_path, "table", f"no table selected (have: {', '.join(t['id'] for t in study.tables)})")
     if bands:
         return _run_banded(study, chosen, out, dur, jobs=jobs, scheduler=scheduler, progress=progress,
-                           point_fn=point_fn, limit=band_samples_limit, report_only=report_only)
+                           point_fn=point_fn, limit=band_samples_limit, report_only=report_only, stop_set=stop_set)
     plans = []
     for t in chosen:
-        base = load_case(study.spec["study"]["case"], **t.get("set", {}))
+        base = load_case(study.spec["study"]["case"], **t.get("set", {}), **stop_set)
         vary = {"lubricant.oil": study.oils, t["vary"]: list(t["values"])}
         plans.append(sweeps.plan_sweep(base, vary, kind="run", duration=dur, point_fn=point_fn,
                                        source=f"{study.source_path} [{t['id']}]"))
@@ -434,6 +444,7 @@ def run_study(
             "wall_time": wall,
             "backend": backend_label,
             "duration": dur,
+            "stop": "converged" if stop_set else "duration",
             "point_fn": sweeps._fn_name(point_fn),
             "n_unique_points": n_points,
             "n_computed": len({r.get("archive") or id(r) for recs in records for r in recs
@@ -473,7 +484,7 @@ def _execute_or_collect(plans, archive_dir: Path, *, progress, backend, report_o
 
 
 def _run_banded(study: Study, chosen: list[dict], out: Path, dur, *, jobs, scheduler, progress, point_fn,
-                limit: int | None = None, report_only: bool = False) -> dict[str, Any]:
+                limit: int | None = None, report_only: bool = False, stop_set: dict | None = None) -> dict[str, Any]:
     """cells x band samples in one pass (one progress bar over all points); see :func:`run_study`."""
     from hsbearing.models.geometry import GuideLandError, guide_lands
 
@@ -486,7 +497,7 @@ def _run_banded(study: Study, chosen: list[dict], out: Path, dur, *, jobs, sched
         for smp in samples:
             where = f"{study.source_path} [{t['id']}, band sample {smp.label}]"
             try:
-                base = load_case(study.spec["study"]["case"], **t.get("set", {}), **smp.overrides)
+                base = load_case(study.spec["study"]["case"], **t.get("set", {}), **smp.overrides, **(stop_set or {}))
                 guide_lands(base)
             except GuideLandError as exc:
                 raise CaseError(study.source_path, "bands", f"sample {smp.label} ({_sample_text(smp)}) is not a "
@@ -551,6 +562,7 @@ def _run_banded(study: Study, chosen: list[dict], out: Path, dur, *, jobs, sched
             "wall_time": wall,
             "backend": backend_label,
             "duration": dur,
+            "stop": "converged" if stop_set else "duration",
             "point_fn": sweeps._fn_name(point_fn),
             "n_unique_points": len(all_points),
             "n_computed": len({r.get("archive") or id(r) for rs in records for r in rs
@@ -600,7 +612,9 @@ def write_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, info:
     dur = info.get("duration")
     lines += ["## Run", "",
               f"- simulated time per point: {_fmt(dur * 1e3 if dur else float('nan'), '.4g')} ms"
-              + ("" if dur else " (the case's `[simulation] duration`)"),
+              + ("" if dur else " (the case's `[simulation] duration`)")
+              + (" at most: stop rule `converged` (a run stops when its answer has converged; its archive records "
+                 "`stopped_at` and `stop_reason`; docs/sweeps.md)" if info.get("stop") == "converged" else ""),
               f"- execution: {info['backend']} on {os.cpu_count()} core(s) of `{_host()}`",
               f"- points: {info['n_unique_points']} distinct cases ({info['n_computed']} computed in this invocation, "
               f"the others resumed from `{RUNS}/`)",
@@ -777,7 +791,8 @@ def write_band_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, 
     cores = os.cpu_count() or 1
     lines += ["## Run and wall time", "",
               f"- simulated time per point: {_fmt(dur * 1e3 if dur else float('nan'), '.4g')} ms"
-              + ("" if dur else " (the case's `[simulation] duration`)"),
+              + ("" if dur else " (the case's `[simulation] duration`)")
+              + (" at most: stop rule `converged` (docs/sweeps.md)" if info.get("stop") == "converged" else ""),
               f"- execution: {info['backend']} on {cores} core(s) of `{_host()}`",
               f"- points: {info['n_unique_points']} distinct cases = cells x {len(samples)} band samples "
               f"({info['n_computed']} computed in this invocation, the others resumed from `{RUNS}/`, e.g. the "
@@ -1467,7 +1482,7 @@ def cli_main(args) -> int:
         raise CaseError("--band-samples", None, "only with --bands")
     res = run_study(args.name, out, jobs=args.jobs, scheduler=args.scheduler, duration=args.duration, progress=True,
                     bands=bands, band_samples_limit=limit, tables=getattr(args, "tables", None),
-                    report_only=bool(getattr(args, "report_only", False)))
+                    report_only=bool(getattr(args, "report_only", False)), stop=getattr(args, "stop", None))
     n_bad = sum(int(((ds["status"] != sweeps.STATUS_OK) & (ds["status"] != STATUS_MISSING)).sum())
                 for ds in res["tables"].values())
     print(f"study {args.name}{' (bands)' if bands else ''}: {res['n_unique_points']} distinct points, "

@@ -1213,6 +1213,9 @@ def cli_main(args) -> int:
         k, _, v = item.partition("=")
         sets[k.strip()] = v.strip()
     case = load_case(args.case or DEFAULT_CASE, **sets)
+    stop = getattr(args, "stop", None)  # --stop RULE is --set simulation.stop=RULE, set only when it changes the
+    if stop and stop != case.simulation.stop:  # case (a default left out of the TOML keeps the archive hashes)
+        case = load_case(args.case or DEFAULT_CASE, **sets, **{"simulation.stop": stop})
     vary = _parse_vary(args.vary)
     out = Path(args.output)
     check_output_path(out, directory=True)

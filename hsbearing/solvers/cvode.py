@@ -249,7 +249,9 @@ def integrate(
     progress : show a tqdm bar of simulated time with ETA (stderr), updated at each output.
     wall_limit : stop (status "failed ... wall-time limit") after this many seconds; checked at each output in
         normal mode, at each internal step in one-step mode.
-    callback : optional ``callback(t, y)`` called at each output.
+    callback : optional ``callback(t, y)`` called at each output; a true return value stops the integration there
+        (status "ok", ``stats["stopped_by_callback"]`` = that time): the outputs so far are exactly the prefix of
+        the full integration (the solver is not restarted).
     stepping : "normal" (one CVODE call per output interval, statistics from CVODE's counters), "onestep"
         (one Python round trip per internal step, steps counted in Python) or "auto" (normal when CVODE's
         counters can be read, else onestep).  Both take the same internal steps.
@@ -284,6 +286,7 @@ def integrate(
     pr = _Progress(t_cur=t0)
     counters = None
     normal = False
+    stopped = None
     try:
         init = solver.init_step(t0, y0)
         if not init.success:
@@ -296,6 +299,8 @@ def integrate(
         normal = counters is not None and stepping != "onestep"
         loop = _normal_loop if normal else _onestep_loop
         loop(solver, counters, t_eval, ys, pr, wall0, wall_limit, callback, bar)
+    except _Stop as exc:
+        stopped = exc.t
     except _Failure as exc:
         status = f"failed at t = {exc.t:.6g} s: {exc.message}"
     except KeyboardInterrupt:
@@ -315,6 +320,8 @@ def integrate(
         "jacobian": "user" if jacfn is not None else "CVODE finite differences",
         "linear_solver": linsolver,
     }
+    if stopped is not None:
+        stats["stopped_by_callback"] = float(stopped)
     if cvode_settings:
         stats["cvode_settings"] = ", ".join(f"{k}={v}" for k, v in cvode_settings.items())
     if counters is not None and not normal and pr.nfev and counters.nfev() != pr.nfev:
@@ -377,10 +384,11 @@ def _accept_output(k, t_eval, ys, pr, callback, bar):
     if not math.isfinite(ys[k].sum()):  # one reduction (a third of np.all(np.isfinite()))
         raise _Failure(t_out, "non-finite state")
     pr.k_done = k + 1
-    if callback is not None:
-        callback(t_out, ys[k])
+    stop = callback is not None and callback(t_out, ys[k])
     if bar is not None:
         bar.update(t_out - float(t_eval[k - 1]))
+    if stop:
+        raise _Stop(t_out)
 
 
 def _onestep_loop(solver, counters, t_eval, ys, pr, wall0, wall_limit, callback, bar):
@@ -417,3 +425,11 @@ class _Failure(Exception):
         super().__init__(message)
         self.t = t
         self.message = message
+
+
+class _Stop(Exception):
+    """The output callback asked to stop at ``t`` (not a failure)."""
+
+    def __init__(self, t: float):
+        super().__init__(f"stopped at t = {t}")
+        self.t = t
