@@ -25,12 +25,17 @@ _parse_sets = parse_sets  # the older name (hsbearing.case.parse_sets)
 
 def _load(args) -> "object":
     sets = _parse_sets(getattr(args, "set", None))
-    if getattr(args, "section", None):  # --section NAME is --set simulation.section=NAME
-        sets["simulation.section"] = args.section
     case = load_case(args.case or DEFAULT_CASE, **sets)
-    stop = getattr(args, "stop", None)  # --stop RULE is --set simulation.stop=RULE, set only when it changes the
-    if stop and stop != case.simulation.stop:  # case (a default left out of the TOML keeps the archive hashes)
-        case = load_case(args.case or DEFAULT_CASE, **sets, **{"simulation.stop": stop})
+    # --stop RULE / --section NAME are --set simulation.stop / simulation.section, set only when they change the
+    # case (a default left out of the TOML keeps the archive hashes)
+    extra = {}
+    stop, section = getattr(args, "stop", None), getattr(args, "section", None)
+    if stop and stop != case.simulation.stop:
+        extra["simulation.stop"] = stop
+    if section and section != case.simulation.section:
+        extra["simulation.section"] = section
+    if extra:
+        case = load_case(args.case or DEFAULT_CASE, **sets, **extra)
     _print_envelope_warnings(case)
     return case
 
