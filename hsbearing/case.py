@@ -20,7 +20,6 @@ from __future__ import annotations
 
 import dataclasses
 import difflib
-import functools
 import math
 import os
 import re
@@ -51,32 +50,7 @@ SYSTEMS = ("angular_contact", "deep_groove", "gyro_ribbon_cage", "wire_race")
 #: Most cage start positions of the gyro SFMC start ensemble (each one is a run of one oscillation period).
 MAX_START_POSITIONS = 64
 
-#: Dimension name -> (pint dimensionality check unit, SI unit string).
-DIMENSIONS: dict[str, str] = {
-    "length": "m",
-    "angle": "rad",
-    "angular_speed": "rad/s",
-    "force": "N",
-    "moment": "N*m",
-    "temperature": "K",
-    "time": "s",
-    "pressure": "Pa",
-    "density": "kg/m**3",
-    "mass": "kg",
-    "inertia": "kg*m**2",
-    "dynamic_viscosity": "Pa*s",
-    "kinematic_viscosity": "m**2/s",
-    "stiffness": "N/m",
-    "damping": "N*s/m",
-    "pressure_coefficient": "1/Pa",
-    "thermal_conductivity": "W/(m*K)",
-    "temperature_coefficient": "1/K",
-    "velocity": "m/s",
-    "frequency": "Hz",
-    "volume_flow_rate": "m**3/s",
-    "specific_heat": "J/(kg*K)",
-    "heat_transfer_coefficient": "W/(m**2*K)",
-}
+from hsbearing.units import DIMENSIONS  # noqa: E402,F401 - dimension name -> SI unit string (public here)
 
 
 @dataclass(frozen=True)
@@ -279,168 +253,20 @@ SCHEMA: dict[str, dict[str, Field]] = {
 TABLES = tuple(SCHEMA)
 
 # ----------------------------------------------------------------------------
-# units
+# units: hsbearing.units (parse_quantity and its checks; re-exported here, where they always were)
 
-
-@functools.lru_cache(maxsize=1)
-def _ureg():
-    import pint
-
-    ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
-    ureg.define("rpm = revolution / minute = r_per_min")
-    ureg.define("rev = revolution")
-    ureg.define("r = revolution")  # "14000 r/min", the notation of the trade (and of what hsbearing prints)
-    return ureg
-
-
-#: Kinds whose SI unit pint treats as dimensionless or as 1/s, where a cycle and a radian are confused unless
-#: the angle is made explicit (issue 27): pint reads "Hz" and "1/min" as 1/s and "25 %" as 0.25 rad.
-_ANGULAR_KINDS = ("angle", "angular_speed", "frequency")
-
-
-def _has_angle_unit(q, ureg) -> bool:
-    """True if the unit of ``q`` contains an angle unit (rad, deg, revolution, turn, cycle, rpm ...)."""
-    for name in q._units:
-        _, base = ureg.get_base_units(name)
-        if "radian" in base._units:
-            return True
-    return False
-
-
-def _angular_si(q, ureg, kind: str, value: str, source: str, key: str | None) -> float:
-    """SI value of an angle [rad], an angular speed [rad/s] or a frequency [Hz = cycles/s], never confusing
-    cycles with radians.
-
-    - angle: the unit must be an angle unit (``deg``, ``rad``, ``turn``); a quoted bare number or a ratio
-      (``"0.5"``, ``"25 %"``) is refused (only zero may be written without a unit).
-    - angular speed: with an angle unit (``rad/s``, ``rpm``, ``r/min``, ``rev/s``, ``deg/s``) as written;
-      without one (``Hz``, ``1/min``, ``1/s``, ``kHz``) the number counts **revolutions** per unit time,
-      so ``"233.33 Hz"`` = 233.33 rev/s = 2 pi 233.33 rad/s and ``"14000 1/min"`` = 14000 r/min.
-    - frequency: cycles per second; an angular unit (``rad/s``, ``rpm``) is converted to cycles.
-    """
-    has_angle = _has_angle_unit(q, ureg)
-    dim = q.dimensionality
-    if kind == "angle":
-        if q.magnitude == 0 and not dim:
-            return 0.0
-        if not has_angle or dim:
-            raise CaseError(source, key, f"{value!r} is not an angle: give an angle unit, e.g. \"{q.magnitude:g} deg\" "
-                                         "(a bare number or a ratio is not read as radians)")
-        return float(q.to("radian").magnitude)
-    if dim != ureg.Quantity(1, "1/s").dimensionality:
-        raise CaseError(source, key, f"{value!r} is not {_a(kind)} (expected units like {_example_unit(kind)})")
-    if kind == "angular_speed":
-        if has_angle:
-            return float(q.to("radian/second").magnitude)
-        return float(q.to("1/second").magnitude) * 2.0 * math.pi  # revolutions per second -> rad/s
-    # frequency [Hz]: cycles per second
-    if has_angle:
-        return float(q.to("radian/second").magnitude) / (2.0 * math.pi)
-    return float(q.to("1/second").magnitude)
-
-
-def parse_quantity(value: Any, kind: str, *, source: str = "<value>", key: str | None = None) -> float:
-    """Convert a case-file value of dimension ``kind`` to an SI float.
-
-    Strings carry units (``"9.525 mm"``); a bare number is accepted for a
-    dimensional key only if it is zero (``0``) -- otherwise the unit is
-    ambiguous and a :class:`CaseError` asks for one.
-    """
-    if kind not in DIMENSIONS:
-        raise KeyError(kind)
-    si = DIMENSIONS[kind]
-    if isinstance(value, bool):
-        raise CaseError(source, key, f"expected {_a(kind)} with units, got {value!r}")
-    if isinstance(value, (int, float)):
-        if value == 0:
-            return 0.0
-        raise CaseError(source, key, f"expected {_a(kind)} with units like \"{value} {_example_unit(kind)}\", got bare number {value!r}")
-    if not isinstance(value, str):
-        raise CaseError(source, key, f"expected a quantity string with units, got {type(value).__name__}")
-    _check_quantity_text(value, kind, source, key)
-    ureg = _ureg()
-    try:
-        q = ureg.Quantity(value.strip())
-    except Exception as exc:  # pint raises several kinds
-        raise CaseError(source, key, f"cannot parse quantity {value!r} ({type(exc).__name__})") from None
-    if not isinstance(q, ureg.Quantity):  # plain number in a string
-        q = ureg.Quantity(float(q), "")
-    try:
-        if kind == "temperature":
-            out = q.to("kelvin").magnitude
-        elif kind in _ANGULAR_KINDS:
-            out = _angular_si(q, ureg, kind, value, source, key)
-        else:
-            out = q.to(si).magnitude
-    except CaseError:
-        raise
-    except Exception:
-        if not q._units and kind != "temperature":
-            raise CaseError(source, key, f"{value!r} has no unit: write e.g. \"{value.strip()} {_example_unit(kind)}\" "
-                                         "(no unit is assumed)") from None
-        raise CaseError(
-            source, key, f"{value!r} is not {_a(kind)} (expected units like {_example_unit(kind)})"
-        ) from None
-    try:
-        out = float(out)
-    except (TypeError, ValueError, OverflowError):
-        raise CaseError(source, key, f"cannot parse quantity {value!r} (not a real number)") from None
-    if not math.isfinite(out):
-        raise CaseError(source, key, f"must be finite, got {value!r}")
-    limit = MAX_MAGNITUDE.get(kind, 1e20)
-    if abs(out) > limit:
-        raise CaseError(source, key, f"{value!r} is an absurd magnitude for a {kind.replace('_', ' ')} "
-                                     f"(more than {limit:g} {DIMENSIONS[kind]})")
-    return out
-
-
-#: Largest accepted magnitude of a quantity, in SI units of its dimension: far above any bearing
-#: (a 100 m bearing, 1e7 rad/s, 1e10 N), so that only typing errors such as "1e30 mm" are refused.
-MAX_MAGNITUDE: dict[str, float] = {
-    "length": 100.0, "angle": 1e4, "angular_speed": 1e7, "force": 1e10, "moment": 1e10, "temperature": 1e4,
-    "time": 1e7, "pressure": 1e13, "density": 1e5, "mass": 1e7, "inertia": 1e7, "dynamic_viscosity": 1e8,
-    "kinematic_viscosity": 1e2, "stiffness": 1e15, "damping": 1e12, "pressure_coefficient": 1e-3,
-    "thermal_conductivity": 1e4, "temperature_coefficient": 1e2, "velocity": 1e5, "frequency": 1e9,
-    "volume_flow_rate": 10.0, "specific_heat": 1e6, "heat_transfer_coefficient": 1e8,
-}
-
-#: Longest quantity string accepted (a case value is a number and a unit).
-MAX_QUANTITY_CHARS = 100
-
-# a power operator and its exponent: only a small literal exponent of a unit is accepted ("m^3", "m**-2")
-_POWER = re.compile(r"(\*\*|\^)")
-_UNIT_POWER = re.compile(r"[A-Za-z_\u00b5\u03bc\u00b0]\s*(?:\*\*|\^)\s*\(?\s*[-+]?\d{1,2}(?:\.\d+)?\s*\)?(?!\s*(?:\*\*|\^|\d))")
-
-
-def _check_quantity_text(value: str, kind: str, source: str, key: str | None) -> None:
-    """Refuse, before pint sees it, text whose evaluation is unbounded.
-
-    pint evaluates powers of integers exactly (``"10**10**10 mm"`` never returns), so a power is
-    accepted only as a small literal exponent of a unit (``"kg/m^3"``, ``"m**2/s"``); numbers are
-    written in e-notation (``"1e10"``).
-    """
-    if len(value) > MAX_QUANTITY_CHARS:
-        raise CaseError(source, key, f"quantity text longer than {MAX_QUANTITY_CHARS} characters")
-    n_pow = len(_POWER.findall(value))
-    if n_pow and len(_UNIT_POWER.findall(value)) != n_pow:
-        raise CaseError(source, key, f"cannot parse quantity {value!r}: a power is accepted only as a small "
-                                     "exponent of a unit (m^3, m**2); write numbers in e-notation (1e10)")
-
-
-def _a(kind: str) -> str:
-    """``"angular_speed"`` -> ``"an angular speed"``, ``"length"`` -> ``"a length"`` (for messages)."""
-    words = kind.replace("_", " ")
-    return ("an " if words[:1] in "aeiou" else "a ") + words
-
-
-def _example_unit(kind: str) -> str:
-    return {
-        "length": "mm", "angle": "deg", "angular_speed": "rpm", "force": "N", "moment": "N*m",
-        "temperature": "degC", "time": "s", "pressure": "GPa", "density": "kg/m^3", "mass": "kg",
-        "inertia": "kg*m^2", "dynamic_viscosity": "Pa*s", "kinematic_viscosity": "mm^2/s",
-        "volume_flow_rate": "L/min", "specific_heat": "J/(kg*K)", "heat_transfer_coefficient": "W/(m^2*K)",
-    }.get(kind, DIMENSIONS[kind])
-
+from hsbearing.units import (  # noqa: E402,F401,I001 - the public names of the case module
+    _ANGULAR_KINDS,
+    MAX_MAGNITUDE,
+    MAX_QUANTITY_CHARS,
+    _a,
+    _angular_si,
+    _check_quantity_text,
+    _example_unit,
+    _has_angle_unit,
+    _ureg,
+    parse_quantity,
+)
 
 # ----------------------------------------------------------------------------
 # dataclasses generated from the schema
@@ -460,7 +286,7 @@ def _make_dataclass(name: str, fields: Mapping[str, Field], extra: tuple = ()):
 Bearing = _make_dataclass("Bearing", SCHEMA["bearing"])
 Cage = _make_dataclass("Cage", SCHEMA["cage"])
 Material = _make_dataclass("Material", SCHEMA["materials.ball"])
-#: ``case.lubricant.definition`` is the parsed lubricant file (:class:`hsbearing.models.lubricant.LubricantDefinition`)
+#: ``case.lubricant.definition`` is the parsed lubricant file (:class:`hsbearing.lubricant.LubricantDefinition`)
 #: when the oil comes from one, else None.
 Lubricant = _make_dataclass("Lubricant", SCHEMA["lubricant"],
                             extra=(("definition", Any, dataclasses.field(default=None, compare=False)),))
@@ -779,11 +605,11 @@ def _build_checked(text: str, source: str, overrides: Mapping[str, Any]) -> Case
 
 def _apply_lubricant_file(raw: dict, values: dict, source: str, overridden: set | None = None):
     """A lubricant file (``lubricant.file``, or ``lubricant.oil`` naming a bundled lubricant or a .toml file)
-    -> its :class:`~hsbearing.models.lubricant.LubricantDefinition`; fills the lubricant values at the case
+    -> its :class:`~hsbearing.lubricant.LubricantDefinition`; fills the lubricant values at the case
     temperature (nu, rho, alpha) that the case does not give itself, and names the traction law.  None
     when the oil is a built-in name (4109, 4106, 4050).  The file's text is embedded in ``raw`` (key
     ``lubricant.file_text``), so the archived case and its hash carry the oil's data."""
-    from hsbearing.models import lubricant as lubmod
+    from hsbearing import lubricant as lubmod
     from hsbearing.models import traction
 
     lub = values["lubricant"]
@@ -979,7 +805,7 @@ def _check_physical(case: Case, source: str) -> None:
         if oil not in traction.OILS:
             close = difflib.get_close_matches(oil, list(traction.OILS), n=1)
             hint = f"; did you mean {close[0]!r}?" if close else ""
-            from hsbearing.models.lubricant import bundled_lubricants
+            from hsbearing.lubricant import bundled_lubricants
 
             raise CaseError(source, "lubricant.oil", f"unknown oil {oil!r}{hint} (known: {', '.join(traction.OILS)}; "
                             f"bundled lubricants: {', '.join(bundled_lubricants())}; or a lubricant file path ending in .toml)")

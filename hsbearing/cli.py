@@ -174,11 +174,10 @@ def cmd_check(args) -> int:
     print(f"case {case.name} ({case.system}) from {case.source}: valid")
     for line in geometry.describe(case):
         print("  " + line)
-    if case.system in ("angular_contact", "deep_groove", "gyro_ribbon_cage"):
-        from hsbearing.models import lubricant
+    from hsbearing import lubricant
 
-        for line in lubricant.describe(case):  # the oil at the case temperature; a warning if alpha is estimated
-            print("  " + line)
+    for line in lubricant.describe(case):  # the oil at the case temperature; a warning if alpha is estimated
+        print("  " + line)
     return 0
 
 
@@ -193,7 +192,7 @@ def cmd_oils(args) -> int:
             print(line)
         return 0
     if not args.at:
-        from hsbearing.models import lubricant
+        from hsbearing import lubricant
 
         path = lubricant.resolve_lubricant(args.name)
         if path is None:

@@ -9,11 +9,19 @@ class CaseError(ValueError):
     """Bad input in a case file: carries the file and the key for a one-line message."""
 
     def __init__(self, source: str, key: str | None, message: str):
-        self.source = str(source)
-        self.key = key
-        self.message = message
-        where = f"{self.source}: {key}: " if key else f"{self.source}: "
-        super().__init__(where + message)
+        self.source = _one_line(str(source))
+        self.key = None if key is None else _one_line(str(key))
+        self.message = _one_line(str(message))
+        where = f"{self.source}: {self.key}: " if self.key else f"{self.source}: "
+        super().__init__(where + self.message)
+
+
+def _one_line(text: str) -> str:
+    """``text`` with every control character (CR, LF, tab, ...) written as its escape: an error stays one line
+    whatever the user's input contained (a quoted value is echoed back in the message)."""
+    if text.isprintable():
+        return text
+    return "".join(c if c.isprintable() else c.encode("unicode_escape").decode("ascii") for c in text)
 
 
 class SolverError(RuntimeError):

@@ -4,7 +4,7 @@
 properties; :func:`at_case` evaluates one lubricant (bundled name or file) at a case's temperature and
 at the contacts of the case's quasi-static solution (viscosity, alpha, central / minimum film thickness
 and film parameter at the inner and outer contacts); :func:`plot_traction` draws mu(S) of the oil's
-traction law at those contacts (PNG, atomic write).  The definitions: :mod:`hsbearing.models.lubricant`.
+traction law at those contacts (PNG, atomic write).  The definitions: :mod:`hsbearing.lubricant`.
 """
 
 from __future__ import annotations
@@ -13,8 +13,8 @@ from pathlib import Path
 
 import numpy as np
 
+from hsbearing import lubricant as lubmod
 from hsbearing.errors import CaseError
-from hsbearing.models import lubricant as lubmod
 
 __all__ = ["library_rows", "format_library", "at_case", "format_at_case", "plot_traction"]
 

@@ -15,7 +15,8 @@ import pytest
 
 from hsbearing.case import load_case, loads_case
 from hsbearing.cli import main
-from hsbearing.models import ehl, lubricant, viscosity
+from hsbearing import lubricant
+from hsbearing.models import ehl, viscosity
 
 GOOD = """\
 name = "my oil"

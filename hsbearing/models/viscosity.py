@@ -1,7 +1,7 @@
 """Ambient-pressure viscosity of the aviation oils 4109, 4106 and 4050 against temperature.
 
 (Oils defined in a lubricant file -- ``lubricant.file``, issue 26 -- use the same Walther relation
-through their own points: :mod:`hsbearing.models.lubricant`.)
+through their own points: :mod:`hsbearing.lubricant`.)
 
 Two laws, selected by the case key ``lubricant.viscosity_law`` (decision and evidence in
 docs/traction.md, "Viscosity"):

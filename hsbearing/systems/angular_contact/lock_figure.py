@@ -32,7 +32,7 @@ def plot_lock(ds, path) -> Path:
 
     from hsbearing.analysis import poincare
     from hsbearing.analysis.classify import whirl_cage_phase, whirl_lock
-    from hsbearing.plotting import save_figure
+    from hsbearing.plotting.common import save_figure
 
     t = np.asarray(ds["time"].values, float)
     mask, _ = poincare.after_transient(ds)

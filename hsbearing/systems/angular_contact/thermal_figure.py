@@ -22,8 +22,7 @@ def plot_thermal(ds, path):
     from matplotlib import cm, colors
     from matplotlib.figure import Figure
 
-    from hsbearing.plotting import save_figure
-    from hsbearing.plotting.common import title_lines
+    from hsbearing.plotting.common import save_figure, title_lines
 
     nodes = [str(n) for n in ds.node.values]
     T = {n: float(v) - 273.15 for n, v in zip(nodes, ds.node_temperature.values)}

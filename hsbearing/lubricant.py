@@ -230,7 +230,7 @@ def load_lubricant(path: str | Path) -> LubricantDefinition:
 
 
 def _q(value, kind, src, key, *, positive=True):
-    from hsbearing.case import parse_quantity
+    from hsbearing.units import parse_quantity
 
     x = parse_quantity(value, kind, source=src, key=key)
     if positive and not x > 0:
@@ -422,6 +422,8 @@ def describe(case) -> list[str]:
     """Lines for ``hsbearing check``: the case's lubricant at its temperature (and a warning if alpha is estimated)."""
     from hsbearing.models import ehl
 
+    if case.system not in ("angular_contact", "deep_groove", "gyro_ribbon_cage"):
+        return []  # the wire-race model uses no lubricant data
     lub = case.lubricant
     d = getattr(lub, "definition", None)
     lines = []
