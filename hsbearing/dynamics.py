@@ -229,7 +229,7 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
         m_c=g.cage_mass, Ip_c=g.cage_axial_inertia, Id_c=g.cage_diametral_inertia,
         # guide lands (a ball-piloted cage has none: radius nan, clearance 1 m so nothing divides by 0)
         guide=kio.GUIDANCE[lands.guidance], n_land=lands.count,
-        R_land=lands.radius, L_land=lands.width, c_land=lands.clearance if lands.count else 1.0,
+        R_land=lands.radius, L_land=lands.width, c_land=lands.clearance,
         a_land=abs(lands.offsets[0]) if lands.count else 0.0,
         eps_max=opt["land_eps_max"], K_land=opt["land_contact_K"], offset_eps=opt["land_offset_eps"],
         # inner ring body and loads
