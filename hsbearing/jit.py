@@ -3,10 +3,10 @@
 numba compiles a ``@njit(cache=True)`` function at its first call for each argument-type signature and
 keeps the machine code on disk (``__pycache__`` next to the source, or ``NUMBA_CACHE_DIR``), so only
 the first run after an install (or after an edit of a compiled source or of a constant it captures:
-:mod:`hsbearing.compile_cache` keys the caches on them) pays the ~20 s.  Two things
+:mod:`hsbearing.compile_cache` keys the caches on them) pays the ~40 s (measured 2026-11-26: 54 s first make run, 15.6 s the next).  Two things
 follow for the progress bar of a simulation:
 
-- :func:`compile_notice` prints "compiling the model (first run only, ~20 s)" when the on-disk cache
+- :func:`compile_notice` prints "compiling the model (first run only, ~40 s)" when the on-disk cache
   of the kernels has nothing usable (a cold cache), before anything is compiled;
 - :func:`warm_up` calls the right-hand side (and Jacobian) once with the argument types the integrator
   will use -- CVODE hands the state over as a *read-only* array, which numba compiles as a signature of
@@ -51,7 +51,7 @@ def cache_is_cold(dispatchers: Iterable) -> bool:
     return False
 
 
-def compile_notice(dispatchers: Iterable, what: str = "the model", seconds: int = 20, stream=None) -> bool:
+def compile_notice(dispatchers: Iterable, what: str = "the model", seconds: int = 40, stream=None) -> bool:
     """Print :data:`NOTICE` to ``stream`` (stderr) if :func:`cache_is_cold`; return whether it did."""
     if not cache_is_cold(list(dispatchers)):
         return False
