@@ -832,23 +832,8 @@ def classify_motion(t, y, z, vy=None, vz=None, cage_angle=None, *, clearance: fl
         det = {"n_points": 0, "kind": "still", "period": 1, "reason": why}
         return "1 period", 1.0, {**det, **extra}
     # 3. the section
-    if section == "cage_revolution":
-        if phi is None:
-            raise ValueError("classify_motion: section 'cage_revolution' needs cage_angle")
-        ph = phi if np.nanmean(np.diff(phi)) >= 0 else -phi
-        tc = _pc.crossing_times(t, ph)
-        defn = {"kind": section}
-    elif section == "transverse":
-        tc, defn = _pc.transverse_crossings(t, y, z, vy, vz)
-        defn = {"kind": section, **defn}
-    elif section == "plane":
-        zc = z - np.mean(z)
-        up = np.nonzero((zc[:-1] < 0.0) & (zc[1:] >= 0.0))[0]
-        frac = -zc[up] / (zc[up + 1] - zc[up])
-        tc = t[up] + frac * (t[up + 1] - t[up])
-        defn = {"kind": section, "centre_z": float(np.mean(z)), "sense": 1}
-    else:
-        _pc.section_description(section)  # raises with the known names
+    tc, d = _pc.section_crossings(section, t, y, z, vy, vz, phi)
+    defn = {"kind": section, **d}
     pts = np.column_stack([np.interp(tc, t, y), np.interp(tc, t, vy)])
     extra.update(section=defn, times=tc, points=pts)
     orbit = np.column_stack([y, vy])

@@ -68,6 +68,7 @@ __all__ = [
     "SECTIONS",
     "DEFAULT_SECTION",
     "transverse_crossings",
+    "section_crossings",
     "DEFAULT_TRANSIENT_FRACTION",
     "section_description",
     "cage_rotation_angle",
@@ -298,6 +299,29 @@ def transverse_crossings(t, y, z, vy=None, vz=None, hysteresis: float = 0.05):
     return t[i][keep] + frac[keep] * (t[i + 1][keep] - t[i][keep]), defn
 
 
+def section_crossings(section: str, t, y, z, vy=None, vz=None, phi=None) -> tuple[np.ndarray, dict]:
+    """Crossing times [s] of ``section`` over samples (t, D_Y, D_Z[, V_Y, V_Z, cage angle phi]) of the analysed
+    window, and the section's definition (centre and sense where it has them; ``kind`` not included).
+
+    ``"cage_revolution"``: the cage angle (turned positive) crossing multiples of 2 pi (needs ``phi``);
+    ``"transverse"``: :func:`transverse_crossings`; ``"plane"``: D_Z crossing its mean upwards."""
+    section_description(section)  # validates the name
+    t = np.asarray(t, dtype=float)
+    if section == "cage_revolution":
+        if phi is None:
+            raise ValueError("section 'cage_revolution' needs the cage angle")
+        phase = np.asarray(phi, dtype=float)
+        if np.nanmean(np.diff(phase)) < 0:  # cage turning the negative way: count its revolutions
+            phase = -phase
+        return crossing_times(t, phase), {}
+    if section == "transverse":
+        return transverse_crossings(t, y, z, vy, vz)
+    zc = np.asarray(z, dtype=float) - np.mean(z)
+    up = np.nonzero((zc[:-1] < 0.0) & (zc[1:] >= 0.0))[0]
+    frac = -zc[up] / (zc[up + 1] - zc[up])
+    return t[up] + frac * (t[up + 1] - t[up]), {"centre_z": float(np.mean(z)), "sense": 1}
+
+
 def poincare_section(ds, section: str = DEFAULT_SECTION, transient=None, return_definition: bool = False):
     """Section crossing times [s] and points (D_Y [m], V_Y [m/s]) after the transient.
 
@@ -323,22 +347,11 @@ def poincare_section(ds, section: str = DEFAULT_SECTION, transient=None, return_
         return (*out, defn) if return_definition else out
     y = np.asarray(ds["cage_center_y"].values, dtype=float)
     vy = cage_velocity(ds, "y")
-    if section == "cage_revolution":
-        phase = cage_rotation_angle(ds)[mask]
-        if np.nanmean(np.diff(phase)) < 0:  # cage turning the negative way: count its revolutions
-            phase = -phase
-        tc = crossing_times(ts, phase)
-    elif section == "transverse":
-        z = np.asarray(ds["cage_center_z"].values, dtype=float)
-        tc, d = transverse_crossings(ts, y[mask], z[mask], vy[mask], cage_velocity(ds, "z")[mask])
-        defn.update(d)
-    else:
-        z = np.asarray(ds["cage_center_z"].values, dtype=float)[mask]
-        zc = z - np.mean(z)
-        up = np.nonzero((zc[:-1] < 0.0) & (zc[1:] >= 0.0))[0]
-        frac = -zc[up] / (zc[up + 1] - zc[up])
-        tc = ts[up] + frac * (ts[up + 1] - ts[up])
-        defn.update(centre_z=float(np.mean(z)), sense=1)
+    z = np.asarray(ds["cage_center_z"].values, dtype=float)
+    phi = cage_rotation_angle(ds)[mask] if section == "cage_revolution" else None
+    vz = cage_velocity(ds, "z")[mask] if section == "transverse" else None
+    tc, d = section_crossings(section, ts, y[mask], z[mask], vy[mask], vz, phi)
+    defn.update(d)
     pts = np.column_stack([np.interp(tc, t, y), np.interp(tc, t, vy)])
     return (tc, pts, defn) if return_definition else (tc, pts)
 
