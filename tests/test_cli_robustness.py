@@ -21,6 +21,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 import xarray as xr
+from _cli_checks import one_error_line as _one_error_line
 
 import hsbearing
 from hsbearing import cli
@@ -34,17 +35,6 @@ HSBEARING = str(Path(sys.executable).with_name("hsbearing"))
 
 def _files(d: Path) -> set[str]:
     return {str(p.relative_to(d)) for p in d.rglob("*")}
-
-
-def _one_error_line(capsys, rc, *needles, code=2):
-    err = capsys.readouterr().err
-    lines = [ln for ln in err.splitlines() if ln.strip()]
-    assert rc == code, err
-    assert len(lines) == 1, err
-    assert "Traceback" not in err
-    for n in needles:
-        assert re.search(n, lines[0]), (n, lines[0])
-    return lines[0]
 
 
 @pytest.fixture

@@ -13,21 +13,13 @@ import time
 from pathlib import Path
 
 import pytest
+from _cli_checks import one_error_line as _one_line
 
 import hsbearing
 from hsbearing import cli
 from hsbearing.case import case_path
 
 BASE = case_path("zhang2016").read_text()
-
-
-def _one_line(capsys, rc, *needles, code=2):
-    err = capsys.readouterr().err
-    lines = [ln for ln in err.splitlines() if ln.strip()]
-    assert rc == code and len(lines) == 1 and "Traceback" not in err, (rc, err)
-    for n in needles:
-        assert re.search(n, lines[0]), (n, lines[0])
-    return lines[0]
 
 
 @pytest.fixture

@@ -22,6 +22,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from _cli_checks import one_error_line as _one_error_line
 
 import hsbearing
 from hsbearing import cli
@@ -33,17 +34,6 @@ ROOT = Path(__file__).resolve().parents[1]
 
 def _files(d: Path) -> set[str]:
     return {str(p.relative_to(d)) for p in d.rglob("*")}
-
-
-def _one_error_line(capsys_or_err, rc, *needles, code=2):
-    err = capsys_or_err if isinstance(capsys_or_err, str) else capsys_or_err.readouterr().err
-    lines = [ln for ln in err.splitlines() if ln.strip()]
-    assert rc == code, err
-    assert len(lines) == 1, err
-    assert "Traceback" not in err
-    for n in needles:
-        assert re.search(n, lines[0]), (n, lines[0])
-    return lines[0]
 
 
 @pytest.fixture
