@@ -474,12 +474,6 @@ def archive_is_complete(path: str | os.PathLike) -> bool:
         return False
 
 
-def _classifier_version() -> str:
-    from hsbearing.analysis.orbit import CLASSIFIER_VERSION
-
-    return CLASSIFIER_VERSION
-
-
 def _read_record(path: Path, expected_hash: str | None = None) -> dict | None:
     """The sweep record of a point archive, or None if it is not a complete, readable archive.
 
@@ -502,9 +496,9 @@ def _read_record(path: Path, expected_hash: str | None = None) -> dict | None:
             if rec is None:  # an archive written by something else
                 rec = {"status": str(ds.attrs["status"]), "error": str(ds.attrs.get("error", "")),
                        "wall_time": float("nan"), "summary_error": "no summary stored"}
-            stale = (ds.attrs.get("sweep_kind", "run") == "run" and "time" in ds.dims
-                     and "poincare_section_kind" in ds.attrs  # classified by annotate (not a stand-in's label)
-                     and (rec.get("summary") or {}).get("classifier_version") != _classifier_version())
+            from hsbearing.analysis.orbit import classified_by_older_rules
+
+            stale = ds.attrs.get("sweep_kind", "run") == "run" and "time" in ds.dims and classified_by_older_rules(ds)
             if stale:  # classified by older rules: re-read with the current classifier (the run is kept)
                 rec["summary_error"] = "classified by an older classifier version"
             if rec.get("summary_error"):  # summarise again (the analysis may have been fixed since)

@@ -38,7 +38,7 @@ from hsbearing.results import VARIABLES, register
 
 _trapz = getattr(np, "trapezoid", None) or np.trapz  # numpy < 2 has only trapz
 
-__all__ = ["annotate", "summary", "CLASSIFIER_VERSION", "whirl_metrics", "whirl_frequency", "whirl_ratio_note", "REQUIRED",
+__all__ = ["annotate", "summary", "CLASSIFIER_VERSION", "classified_by_older_rules", "whirl_metrics", "whirl_frequency", "whirl_ratio_note", "REQUIRED",
            "PARKED_MOTION_FRACTION", "PARKED_OFFSET_FRACTION"]
 
 #: A cage is "parked" when its centre, after the transient, moves less than this fraction of the guide
@@ -339,12 +339,16 @@ def _scalar(ds, name):
     return float("nan")
 
 
-def _needs_annotation(ds) -> bool:
-    """Not classified at all, or classified by :func:`annotate` under older rules (it always stores the section
-    kind; a label put in the attrs by another producer, e.g. a study's stand-in point function, is kept)."""
-    if "classification" not in ds.attrs:
-        return True
+def classified_by_older_rules(ds) -> bool:
+    """Classified by :func:`annotate` under other rules than :data:`CLASSIFIER_VERSION` (annotate always stores
+    the section kind; a label put in the attrs by another producer, e.g. a study's stand-in point function, is
+    not annotate's and is kept)."""
     return "poincare_section_kind" in ds.attrs and ds.attrs.get("classifier_version") != CLASSIFIER_VERSION
+
+
+def _needs_annotation(ds) -> bool:
+    """Not classified at all, or classified by :func:`annotate` under older rules."""
+    return "classification" not in ds.attrs or classified_by_older_rules(ds)
 
 
 def summary(ds: xr.Dataset, case=None) -> dict[str, Any]:
