@@ -735,7 +735,8 @@ def classify_motion(t, y, z, vy=None, vz=None, cage_angle=None, *, clearance: fl
                     section: str = "transverse", scale=None,
                     growth_ratio: float = MOTION_DEFAULTS["growth_ratio"],
                     growth_floor: float = MOTION_DEFAULTS["growth_floor"],
-                    still_fraction: float = MOTION_DEFAULTS["still_fraction"], **classify_kw):
+                    still_fraction: float = MOTION_DEFAULTS["still_fraction"], growth: dict | None = None,
+                    lock: dict | None = None, **classify_kw):
     """Classify the cage-centre motion over an analysed window (after the transient).
 
     Order (docs/analysis.md, "Classification of a run"):
@@ -766,6 +767,10 @@ def classify_motion(t, y, z, vy=None, vz=None, cage_angle=None, *, clearance: fl
         ``"transverse"`` (default), ``"cage_revolution"`` or ``"plane"``.
     scale : (2,) array_like, optional
         Attractor extent of (D_Y, V_Y) for the tolerance (default: from the orbit, floored as above).
+    growth, lock : dict, optional
+        :func:`whirl_growth` and :func:`whirl_lock` of these same samples, e.g. the ``growth`` and ``lock``
+        details of an earlier call under another section: taken as given instead of computed again (neither
+        depends on the section).
 
     Returns
     -------
@@ -787,8 +792,11 @@ def classify_motion(t, y, z, vy=None, vz=None, cage_angle=None, *, clearance: fl
     t, y, z, vy, vz = t[ok], y[ok], z[ok], vy[ok], vz[ok]
     phi = None if cage_angle is None else np.asarray(cage_angle, float)[ok]
     c = float(clearance) if clearance is not None and math.isfinite(clearance) and clearance > 0 else None
-    extra: dict = {"growth": whirl_growth(t, y, z),
-                   "lock": whirl_lock(t, y, z, phi) if phi is not None else None,
+    if growth is None:
+        growth = whirl_growth(t, y, z)
+    if lock is None and phi is not None:
+        lock = whirl_lock(t, y, z, phi)
+    extra: dict = {"growth": growth, "lock": lock,
                    "orbit_rms_radius": None, "modulation_y": None, "modulation_vy": None,
                    "section": {"kind": section}, "times": np.zeros(0), "points": np.zeros((0, 2))}
     if t.size < 16:

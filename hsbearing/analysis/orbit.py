@@ -296,10 +296,12 @@ def annotate(ds: xr.Dataset, case=None, *, alpha=None, section: str = _pc.DEFAUL
     ds["poincare_time"] = _var("poincare_time", tc)
     ds["poincare_y"] = _var("poincare_y", pts[:, 0] if len(pts) else np.zeros(0))
     ds["poincare_vy"] = _var("poincare_vy", pts[:, 1] if len(pts) else np.zeros(0))
-    # --- the other section side by side (the clock section under the transverse default, and vice versa)
+    # --- the other section side by side (the clock section under the transverse default, and vice versa); the
+    # growth and lock tests do not depend on the section: those of the first classification are passed on
     other = "cage_revolution" if section != "cage_revolution" else "transverse"
     try:
-        label_o, conf_o, det_o = _motion(t_m, y_m, z_m, vy_m, vz_m, phi_m, clearance=gcl, section=other, **classify_kw)
+        label_o, conf_o, det_o = _motion(t_m, y_m, z_m, vy_m, vz_m, phi_m, clearance=gcl, section=other,
+                                         growth=det.get("growth"), lock=det.get("lock"), **classify_kw)
     except Exception as exc:  # noqa: BLE001 - the side-by-side label is a report, never a failure of the run
         label_o, conf_o, det_o = "undetermined", 0.0, {"reason": f"not computed: {exc}"}
     # --- sub-label of the class from the continuous orbit, and the instability indicator
