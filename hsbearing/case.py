@@ -569,8 +569,7 @@ def _build_checked(text: str, source: str, overrides: Mapping[str, Any]) -> Case
     override_lines = []
     for k, v in (overrides or {}).items():
         table, leaf = resolve_key(k, source=f"{source} (override)")
-        kind = SCHEMA[table][leaf].kind
-        _get_table(raw, table)[leaf] = str(v) if kind in ("str", "choice") else _parse_override_value(v)
+        _get_table(raw, table)[leaf] = _override_literal(SCHEMA[table][leaf].kind, v)
         override_lines.append(f"# {table}.{leaf} = {v!r}")
     full_text = text if not override_lines else text.rstrip("\n") + "\n# --- overrides ---\n" + "\n".join(override_lines) + "\n"
     values = _validate_tables(raw, source)
@@ -733,13 +732,15 @@ MAX_INTEGER = 2**53
 
 
 def _convert(v: Any, fld: Field, source: str, full: str) -> Any:
-    if fld.kind == "str":
-        if not isinstance(v, str):
+    """A case-file value of key ``full`` in its type (quantities in SI), range-checked."""
+    return _check_range(_coerce(v, fld, source, full), v, fld, source, full)
+
+
+def _coerce(v: Any, fld: Field, source: str, full: str) -> Any:
+    """A case-file value of key ``full`` in its type, quantities in SI: the type rules without the range ones."""
+    if fld.kind in ("str", "choice"):
+        if fld.kind == "str" and not isinstance(v, str):
             raise CaseError(source, full, f"expected a string, got {v!r}")
-        return v
-    if fld.kind == "choice":
-        if v not in fld.choices:
-            raise CaseError(source, full, f"unknown value {v!r} (allowed: {', '.join(fld.choices)})")
         return v
     if fld.kind == "bool":
         if not isinstance(v, bool):
@@ -760,6 +761,17 @@ def _convert(v: Any, fld: Field, source: str, full: str) -> Any:
         x = parse_quantity(v, fld.kind, source=source, key=full)
     if not math.isfinite(x):
         raise CaseError(source, full, f"must be finite, got {v!r}")
+    return x
+
+
+def _check_range(x: Any, v: Any, fld: Field, source: str, full: str) -> Any:
+    """``x`` (the value ``v`` as given, converted) within the key's vocabulary and bounds."""
+    if fld.kind == "choice":
+        if x not in fld.choices:
+            raise CaseError(source, full, f"unknown value {v!r} (allowed: {', '.join(fld.choices)})")
+        return x
+    if fld.kind in ("str", "bool"):
+        return x
     if fld.positive and x <= 0:
         raise CaseError(source, full, f"must be positive, got {v!r}")
     if fld.nonneg and x < 0:
@@ -769,6 +781,21 @@ def _convert(v: Any, fld: Field, source: str, full: str) -> Any:
     if fld.maximum is not None and x > fld.maximum:
         raise CaseError(source, full, f"must be <= {fld.maximum}, got {v!r}")
     return x
+
+
+def read_override(value: Any, fld: Field, *, source: str = "<override>", key: str | None = None) -> Any:
+    """A value given for a key on top of a case (``--set``, a ``--vary`` item, a study table's value), read as
+    :func:`load_case` reads an override: text is a TOML literal (``"0.52"``, ``"12"``, ``"true"``) or, for a
+    dimension, a quantity (``"100 N"``; a bare number other than 0 is refused); str and choice keys keep the
+    text.  Returns the value in the key's type, a quantity in SI.  The key's range checks (positive, bounds,
+    choices) are left to the case: a value out of range makes an invalid case, not a bad value list."""
+    return _coerce(_override_literal(fld.kind, value), fld, source, key or "<override>")
+
+
+def _override_literal(kind: str, value: Any) -> Any:
+    """An override as it goes into the case's TOML tables: str/choice keys as text, others a TOML literal
+    when the text is one (``"0.52"`` -> 0.52; ``"100 N"`` stays text)."""
+    return str(value) if kind in ("str", "choice") else _parse_override_value(value)
 
 
 def _check_physical(case: Case, source: str) -> None:

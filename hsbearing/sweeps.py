@@ -76,10 +76,12 @@ from hsbearing.case import (
     load_case,
     loads_case,
     parse_quantity,
+    read_override,
     resolve_key,
 )
 from hsbearing.errors import SolverError
 from hsbearing.results import VARIABLES, check_output_path, register, standard_attrs, write_netcdf
+from hsbearing.units import split_number
 
 __all__ = [
     "run_sweep",
@@ -128,9 +130,6 @@ _RECORD_VARS = ("status", "error", "wall_time", "archive", "resumed")
 # ----------------------------------------------------------------------------- values
 
 
-_NUM_UNIT = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
-
-
 @dataclass(frozen=True)
 class Axis:
     """One varied key: the case key, the dim name, the values as given and as coordinates."""
@@ -153,9 +152,12 @@ def parse_values(key: str, spec: str | Sequence[Any], *, source: str = "--vary",
     ``spec`` is a list (``["100 N", "1 kN"]``, ``["4109", "4106"]``,
     ``[0.52, 0.53]``) or a CLI string ``"100,500,1000N"`` in which a unit
     written after the last item applies to every item that has none
-    (``"4109,4106"`` stays strings).  Quantities become SI floats in the
-    coordinates; an unparseable item or a wrong dimension raises
-    :class:`CaseError` naming ``source`` and the key.
+    (``"4109,4106"`` stays strings).  Every item is read by the case's own
+    rules, as ``--set`` and a case file are (:func:`hsbearing.case.read_override`:
+    a TOML literal, or a quantity with any unit a case accepts); quantities
+    become SI floats in the coordinates.  An unreadable item or a wrong
+    dimension raises :class:`CaseError` naming ``source`` and the key; a value
+    out of the key's range is left to the point's case (an invalid point).
     """
     table, leaf, fld = _field(key, source)
     full = f"{table}.{leaf}"
@@ -164,59 +166,40 @@ def parse_values(key: str, spec: str | Sequence[Any], *, source: str = "--vary",
         if any(not s for s in items):
             raise CaseError(source, full, f"empty item in value list {spec!r}")
         if fld.kind in DIMENSIONS:
-            m = _NUM_UNIT.match(items[-1])
-            unit = m.group(2) if m else ""
-            norm = []
-            for s in items:
-                m = _NUM_UNIT.match(s)
-                if m and not m.group(2) and unit:
-                    s = f"{m.group(1)} {unit}"
-                elif m and m.group(2):
-                    s = f"{m.group(1)} {m.group(2)}"
-                norm.append(s)
-            items = norm
+            items = _unit_after_last(items)
     else:
         items = list(spec)
     if not items:
         raise CaseError(source, full, "no values given")
     values, coords = [], []
     for item in items:
+        x = read_override(item, fld, source=source, key=full)
         if fld.kind in DIMENSIONS:
-            if isinstance(item, str) and _NUM_UNIT.match(item) and not _NUM_UNIT.match(item).group(2) and float(item) != 0:
-                raise CaseError(source, full, f"value {item!r} needs a unit, e.g. \"{item} {_unit_hint(fld.kind)}\"")
-            coord = parse_quantity(item, fld.kind, source=source, key=full)
             values.append(item if isinstance(item, str) else f"{item} {DIMENSIONS[fld.kind]}")
-            coords.append(coord)
-        elif fld.kind == "number":
-            try:
-                x = float(item)
-            except (TypeError, ValueError):
-                raise CaseError(source, full, f"expected a plain number, got {item!r}") from None
+        elif fld.kind in ("str", "choice"):
+            x = str(item)
             values.append(x)
-            coords.append(x)
-        elif fld.kind == "int":
-            try:
-                x = int(str(item))
-            except ValueError:
-                raise CaseError(source, full, f"expected a whole number, got {item!r}") from None
+        else:  # number, int, bool: the value itself; a bool's coordinate is 0/1
             values.append(x)
-            coords.append(x)
-        elif fld.kind == "bool":
-            s = str(item).lower()
-            if s not in ("true", "false"):
-                raise CaseError(source, full, f"expected true or false, got {item!r}")
-            values.append(s == "true")
-            coords.append(int(s == "true"))
-        else:  # str, choice
-            values.append(str(item))
-            coords.append(str(item))
+        coords.append(int(x) if fld.kind == "bool" else x)
     if unique and len(set(coords)) != len(coords):
         raise CaseError(source, full, f"repeated value in {items!r}")
     return values, coords
 
 
-def _unit_hint(kind: str) -> str:
-    return {"force": "N", "temperature": "degC", "angular_speed": "rpm", "length": "mm", "time": "s"}.get(kind, DIMENSIONS[kind])
+def _unit_after_last(items: list[str]) -> list[str]:
+    """The CLI list convenience: ``["100", "500", "1000N"]`` -> ``["100 N", "500 N", "1000 N"]`` -- the unit
+    written after the last item goes to every bare number, and a number and its unit are written with one
+    space (the override text, hence the archive hash, does not depend on how the list was typed)."""
+    num, unit = split_number(items[-1])
+    unit = unit if num else ""
+    out = []
+    for s in items:
+        num, rest = split_number(s)
+        if num and (rest or unit):
+            s = f"{num} {rest or unit}"
+        out.append(s)
+    return out
 
 
 def _override_literal(kind: str, value: Any) -> Any:

@@ -117,7 +117,8 @@ def parse_quantity(value: Any, kind: str, *, source: str = "<value>", key: str |
     if isinstance(value, (int, float)):
         if value == 0:
             return 0.0
-        raise CaseError(source, key, f"expected {_a(kind)} with units like \"{value} {_example_unit(kind)}\", got bare number {value!r}")
+        raise CaseError(source, key, f"expected {_a(kind)} with units like \"{value} {_example_unit(kind)}\", got bare number "
+                                     f"{value!r}: a value needs a unit (only 0 may be written without one)")
     if not isinstance(value, str):
         raise CaseError(source, key, f"expected a quantity string with units, got {type(value).__name__}")
     _check_quantity_text(value, kind, source, key)
@@ -155,6 +156,23 @@ def parse_quantity(value: Any, kind: str, *, source: str = "<value>", key: str |
         raise CaseError(source, key, f"{value!r} is an absurd magnitude for a {kind.replace('_', ' ')} "
                                      f"(more than {limit:g} {DIMENSIONS[kind]})")
     return out
+
+
+def split_number(text: str) -> tuple[str, str]:
+    """``"2.5kN"`` -> ``("2.5", "kN")``: the leading number of a quantity text (the longest start of it that
+    Python's ``float`` reads, beginning with a digit, a sign or a point) and the rest, both stripped;
+    ``("", text)`` when the text does not begin with a number, ``(text, "")`` for a bare number.  Text only:
+    the quantity itself is read by :func:`parse_quantity`."""
+    s = text.strip()
+    if not s or len(s) > MAX_QUANTITY_CHARS or not (s[0].isdigit() or s[0] in "+-."):
+        return "", s
+    for end in range(len(s), 0, -1):
+        try:
+            float(s[:end])
+        except ValueError:
+            continue
+        return s[:end].strip(), s[end:].strip()
+    return "", s
 
 
 #: Largest accepted magnitude of a quantity, in SI units of its dimension: far above any bearing
