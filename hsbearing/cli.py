@@ -455,7 +455,7 @@ def cmd_study(args) -> int:
     if args.scheduler:
         sweeps.check_scheduler_address(args.scheduler)
 
-    rc = study.cli_main(args)
+    rc = study.cli_main(args, run_study=study.run_study)  # looked up here: the package's name is the API
     if not getattr(args, "no_figure", False) and not getattr(args, "bands", False):  # banded tables: report figures
         out = Path(args.output)
         for t in study.load_study(args.name).tables:

@@ -33,7 +33,7 @@ import xarray as xr
 import hsbearing.analysis.orbit  # noqa: F401 - registers the summary variables (units, long_name) before assemble
 from hsbearing.case import CaseError, load_case, resolve_key
 from hsbearing.results import write_netcdf
-from hsbearing.sweeps import plan_sweep, run_sweep
+from hsbearing.sweeps import cli_base_case, plan_sweep, run_sweep
 
 __all__ = ["run_map", "INDICATOR", "INDICATOR_DEFINITION", "wall_time_lines", "cli_main"]
 
@@ -221,18 +221,7 @@ def cli_main(args) -> int:
     Exit 0 when every point is ok, 1 when some point failed numerically, 2 on bad input (checked before
     anything is computed or written: keys, values, every point's case, the output directory).
     """
-    from hsbearing.case import DEFAULT_CASE
-
-    sets = {}
-    for item in getattr(args, "set", None) or []:
-        if "=" not in item:
-            raise CaseError("--set", item, "expected key=value")
-        k, _, v = item.partition("=")
-        sets[k.strip()] = v.strip()
-    case = load_case(args.case or DEFAULT_CASE, **sets)
-    stop = getattr(args, "stop", None)  # --stop RULE is --set simulation.stop=RULE, set only when it changes the
-    if stop and stop != case.simulation.stop:  # case (a default left out of the TOML keeps the archive hashes)
-        case = load_case(args.case or DEFAULT_CASE, **sets, **{"simulation.stop": stop})
+    case = cli_base_case(args)
     vary = _plan_vary(args.x, args.y)
     out = Path(args.output)
     if out.exists() and not out.is_dir():

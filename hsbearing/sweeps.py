@@ -1173,6 +1173,20 @@ def print_table(ds: xr.Dataset, file=None) -> None:
         print("  ".join(parts), file=file)
 
 
+def cli_base_case(args) -> Case:
+    """The case of ``hsbearing sweep`` / ``hsbearing map``: ``CASE`` (default: the default case) with the
+    repeated ``--set key=value`` overrides and ``--stop RULE`` (as ``--set simulation.stop=RULE``, set only when
+    it changes the case: a default left out of the TOML keeps the archive hashes)."""
+    from hsbearing.case import DEFAULT_CASE, parse_sets
+
+    sets = parse_sets(getattr(args, "set", None))
+    case = load_case(args.case or DEFAULT_CASE, **sets)
+    stop = getattr(args, "stop", None)
+    if stop and stop != case.simulation.stop:
+        case = load_case(args.case or DEFAULT_CASE, **sets, **{"simulation.stop": stop})
+    return case
+
+
 def cli_main(args) -> int:
     """``hsbearing sweep CASE --vary KEY=V1,V2 [--zip] [-j N] [--scheduler ADDR] [--kind] [--duration] -o DIR``.
 
@@ -1181,18 +1195,7 @@ def cli_main(args) -> int:
     kept), 2 on bad input, including a varied value that makes an invalid
     case (nothing computed or written), unless ``--keep-going``.
     """
-    from hsbearing.case import DEFAULT_CASE
-
-    sets = {}
-    for item in getattr(args, "set", None) or []:
-        if "=" not in item:
-            raise CaseError("--set", item, "expected key=value")
-        k, _, v = item.partition("=")
-        sets[k.strip()] = v.strip()
-    case = load_case(args.case or DEFAULT_CASE, **sets)
-    stop = getattr(args, "stop", None)  # --stop RULE is --set simulation.stop=RULE, set only when it changes the
-    if stop and stop != case.simulation.stop:  # case (a default left out of the TOML keeps the archive hashes)
-        case = load_case(args.case or DEFAULT_CASE, **sets, **{"simulation.stop": stop})
+    case = cli_base_case(args)
     vary = _parse_vary(args.vary)
     out = Path(args.output)
     check_output_path(out, directory=True)

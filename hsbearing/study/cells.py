@@ -14,6 +14,14 @@ from hsbearing import sweeps
 from hsbearing.study.spec import normalise_label
 
 
+def _tables_in(study, datasets: dict[str, xr.Dataset]):
+    """(table spec, its Dataset, its dim) of every study table that has a Dataset, in the study's order."""
+    for t in study.tables:
+        ds = datasets.get(t["id"])
+        if ds is not None:
+            yield t, ds, t["vary"].rpartition(".")[2]
+
+
 def _value_label(ds: xr.Dataset, dim: str, i: int) -> str:
     return str(ds[f"{dim}_label"].values[i])
 

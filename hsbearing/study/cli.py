@@ -4,18 +4,21 @@ from __future__ import annotations
 
 import sys
 from pathlib import Path
+from typing import Callable
 
 from hsbearing import sweeps
 from hsbearing.case import CaseError
+from hsbearing.study.execute import run_study as _run_study
 from hsbearing.study.spec import BANDS_SUFFIX, STATUS_MISSING
 
 
-def cli_main(args) -> int:
+def cli_main(args, run_study: Callable | None = None) -> int:
     """``hsbearing study NAME -o DIR [--bands [--band-samples K] | --no-bands] [--table ID ...] [-j N]
     [--scheduler ADDR] [--duration 0.05s]``.
 
     Exit 0 when every point completed, 1 when some did not (the report lists
-    them), 2 on bad input.
+    them), 2 on bad input.  ``run_study``: the function that runs the study (default
+    :func:`hsbearing.study.execute.run_study`; ``hsbearing study`` passes ``hsbearing.study.run_study``).
     """
     out = Path(args.output)
     if out.exists() and not out.is_dir():
@@ -24,11 +27,11 @@ def cli_main(args) -> int:
     limit = getattr(args, "band_samples", None)
     if limit is not None and not bands:
         raise CaseError("--band-samples", None, "only with --bands")
-    from hsbearing import study  # run_study through the package: callers (tests) may replace it there
-
-    res = study.run_study(args.name, out, jobs=args.jobs, scheduler=args.scheduler, duration=args.duration,
-                          progress=True, bands=bands, band_samples_limit=limit, tables=getattr(args, "tables", None),
-                          report_only=bool(getattr(args, "report_only", False)), stop=getattr(args, "stop", None))
+    res = (run_study or _run_study)(args.name, out, jobs=args.jobs, scheduler=args.scheduler, duration=args.duration,
+                                    progress=True, bands=bands, band_samples_limit=limit,
+                                    tables=getattr(args, "tables", None),
+                                    report_only=bool(getattr(args, "report_only", False)),
+                                    stop=getattr(args, "stop", None))
     n_bad = sum(int(((ds["status"] != sweeps.STATUS_OK) & (ds["status"] != STATUS_MISSING)).sum())
                 for ds in res["tables"].values())
     print(f"study {args.name}{' (bands)' if bands else ''}: {res['n_unique_points']} distinct points, "

@@ -24,6 +24,7 @@ from hsbearing.study.cells import (
     _point_walls,
     _section_stats,
     _sum_wall,
+    _tables_in,
     _value_label,
 )
 from hsbearing.study.figures import _plot_cells, _plot_gallery, _plot_slip, _plot_slip_band
@@ -47,11 +48,7 @@ def write_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, info:
     totals = [0, 0, 0]  # agree, classified, undetermined
     alt_totals = [0, 0]  # the cage-revolution (clock) section's label: agree, classified
     disagreements: list[str] = []
-    for t in study.tables:
-        ds = datasets.get(t["id"])
-        if ds is None:
-            continue
-        dim = t["vary"].rpartition(".")[2]
+    for t, ds, dim in _tables_in(study, datasets):
         lines += [f"## {t.get('title', t['id'])}", ""]
         header = f"| {t.get('axis_label', dim)} | " + " | ".join(f"{o} paper | {o} ours" for o in study.oils) + " |"
         lines += [header, "|" + "---|" * (1 + 2 * len(study.oils))]
@@ -207,11 +204,7 @@ def write_band_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, 
     # -- per table
     all_stats: list[dict] = []
     per_table: list[tuple[str, dict]] = []
-    for t in study.tables:
-        ds = datasets.get(t["id"])
-        if ds is None:
-            continue
-        dim = t["vary"].rpartition(".")[2]
+    for t, ds, dim in _tables_in(study, datasets):
         lines += [f"## {t.get('title', t['id'])}", "",
                   "Class fractions over the band samples that completed (sub-labels of \"1 period\" in brackets); "
                   "*majority*: the most frequent class (ties joined by /); *agrees*: the paper's class is the "

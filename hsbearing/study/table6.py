@@ -9,7 +9,7 @@ import numpy as np
 import xarray as xr
 
 from hsbearing import sweeps
-from hsbearing.study.cells import _cell_stats, _fmt, _ours, _value_label, stability_rank
+from hsbearing.study.cells import _cell_stats, _fmt, _ours, _tables_in, _value_label, stability_rank
 from hsbearing.study.spec import Study
 
 TABLE6_RULE = (
@@ -78,11 +78,7 @@ def derive_table6(study: Study, datasets: dict[str, xr.Dataset]) -> dict[str, An
     "table": {oil: {table: "category (values)"}}}``."""
     best: dict[str, list] = {}
     table: dict[str, dict[str, str]] = {o: {} for o in study.oils}
-    for t in study.tables:
-        ds = datasets.get(t["id"])
-        if ds is None:
-            continue
-        dim = t["vary"].rpartition(".")[2]
+    for t, ds, dim in _tables_in(study, datasets):
         cats = _categories(t)
         rows = []
         per_oil: dict[str, dict[str, list[str]]] = {o: {} for o in study.oils}
