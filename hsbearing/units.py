@@ -193,6 +193,10 @@ _POWER = re.compile(r"(\*\*|\^)")
 _UNIT_POWER = re.compile(r"[A-Za-z_\u00b5\u03bc\u00b0]\s*(?:\*\*|\^)\s*\(?\s*[-+]?\d{1,2}(?:\.\d+)?\s*\)?(?!\s*(?:\*\*|\^|\d))")
 
 
+# a number written in groups ("1 000 N"), not a number before a unit like "1/min"
+_SPLIT_NUMBER = re.compile(r"\d\s+[-+]?\d*\.?\d+(?=\s*[A-Za-z\u00b0%]|\s*$)")
+
+
 def _check_quantity_text(value: str, kind: str, source: str, key: str | None) -> None:
     """Refuse, before pint sees it, text whose evaluation is unbounded.
 
@@ -206,6 +210,9 @@ def _check_quantity_text(value: str, kind: str, source: str, key: str | None) ->
     if n_pow and len(_UNIT_POWER.findall(value)) != n_pow:
         raise CaseError(source, key, f"cannot parse quantity {value!r}: a power is accepted only as a small "
                                      "exponent of a unit (m^3, m**2); write numbers in e-notation (1e10)")
+    if _SPLIT_NUMBER.search(value):  # pint reads "1 000 N" as 1 x 000 = 0 N
+        raise CaseError(source, key, f"cannot parse quantity {value!r}: digits separated by a space "
+                                     "(write one number, e.g. 1000 N or 1e3 N)")
 
 
 def _a(kind: str) -> str:

@@ -69,3 +69,16 @@ def test_cage_speed_same_for_hz_and_rpm(capsys):
     assert cage("233.3333 Hz") == pytest.approx(ref, rel=1e-5)
     assert cage("14000 1/min") == pytest.approx(ref, rel=1e-9)
     assert cage("14000 r/min") == pytest.approx(ref, rel=1e-9)
+
+
+@pytest.mark.parametrize("text", ["1 000 N", "2 500.5 N", "1 -5 N"])
+def test_digits_separated_by_a_space_are_refused(text):
+    """pint multiplies juxtaposed numbers ("1 000" -> 1 x 000 = 0): a thousands separator silently gave 0 N."""
+    with pytest.raises(CaseError, match="digits separated by a space"):
+        parse_quantity(text, "force", source="case.toml", key="load.axial")
+
+
+def test_ordinary_quantities_still_parse():
+    assert parse_quantity("1000 N", "force") == 1000.0
+    assert parse_quantity("1.5 kN", "force") == 1500.0
+    assert parse_quantity("1e3 N", "force") == 1000.0
