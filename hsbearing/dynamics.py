@@ -635,6 +635,10 @@ def to_dataset(model: DynamicModel, t, Y, stats, status="ok", annotate: bool = T
         pocket_clearance=geom.pocket_clearance, theoretical_cage_speed_nominal=wth,
         initial_state=model.info.get("initial"), friction=int(model.info["friction"]),
         damping=int(model.info["damping"]), model_options=model.info["options"],
+        drag_law=(f"C_D {model.info['drag_coefficient']:.6g} at ball Reynolds number {model.info['drag_reynolds_number']:.6g} "
+                  f"(initial orbital speed {model.info['drag_orbital_speed']:.6g} m/s); cavity oil fraction "
+                  f"{model.info['cavity_oil_fraction']:.6g} ({model.info['cavity_oil_fraction_source']}); mixture density "
+                  f"{model.info['drag_density']:.6g} kg/m^3 (models/drag.py)"),
         state_layout="hsbearing.models.state (state-major, 9 Z + 22)",
         precision="per-ball forces, speeds, angles and ratios float32; positions and cage/ring variables float64",
     )
