@@ -252,10 +252,12 @@ OURS_AS_SKF = {
     "seal": (),
 }
 
-#: Surrogate of the SKF speed ratings for the validity warning [mm r/min]: the model is stated for "constant speed,
-#: below the speed ratings" (SKF, "The SKF model for calculating the frictional moment", conditions of validity);
-#: a case gives no speed rating, so n d_m above 1e6 (above the catalogue reference speeds of single-row angular
-#: contact ball bearings, order 0.7-1e6 mm r/min; assumed, not read from the tables) is flagged.
+#: Surrogate of the SKF speed ratings for the validity warning [mm r/min].  Read (SKF, "The SKF model for calculating
+#: the frictional moment", list of conditions at its start; scribd copy of the catalogue section): the model holds for
+#: "constant speed, below the speed ratings" and a "bearing [that] does not exceed the limits of misalignment".  The
+#: speed ratings are the per-bearing reference and limiting speeds of the product tables, which could not be read
+#: here, and a case carries none: n d_m above 1e6 is flagged as a stand-in (ASSUMED, not from the tables; single-row
+#: angular contact ball bearings are rated at a few 1e5 to ~1e6 mm r/min with oil).  The warning says so.
 SKF_NDM_LIMIT = 1.0e6
 
 
@@ -265,9 +267,10 @@ def skf_validity_warnings(case, n_rpm) -> list[str]:
     dm_mm = case.bearing.pitch_diameter * 1e3
     ndm = float(np.max(np.abs(n_rpm))) * dm_mm
     if ndm > SKF_NDM_LIMIT:
-        out.append(f"SKF 2004 model outside its range: n d_m = {ndm:.3g} mm r/min above {SKF_NDM_LIMIT:.0e} (the model is "
-                   "stated for constant speed below the bearing's speed ratings; SKF, 'The SKF model for calculating the "
-                   "frictional moment'); its G_rr, G_sl were not fitted there: order of magnitude only")
+        out.append(f"SKF 2004 model likely outside its range: n d_m = {ndm:.3g} mm r/min above {SKF_NDM_LIMIT:.0e} (the "
+                   "model is stated for 'constant speed, below the speed ratings' -- SKF, 'The SKF model for calculating "
+                   "the frictional moment'; the bearing's own reference/limiting speeds are not in the case, the 1e6 "
+                   "stand-in is assumed); its G_rr, G_sl were not fitted there: order of magnitude only")
     lub = case.lubricant.lubrication
     if lub not in ("oil_jet", "oil_bath", "oil_air", "grease"):
         out.append(f"SKF 2004 model outside its range: lubrication = {lub} (the model is for grease, oil bath, oil-air "

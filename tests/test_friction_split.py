@@ -23,7 +23,7 @@ def test_split_sums_to_totals_and_validity():
     grouped = [s for v in rating.OURS_AS_SKF.values() for s in v]
     assert sorted(grouped) == sorted(SOURCES)
     # 30000 r/min x 46 mm = 1.38e6 mm r/min: outside the SKF model's speed range
-    assert "SKF 2004 model outside its range" in ds.attrs["warnings"]
+    assert "SKF 2004 model likely outside its range" in ds.attrs["warnings"] and "speed ratings" in ds.attrs["warnings"]
     assert (ds.cavity_oil_fraction.values == 0.05).all()
     assert (1e3 < ds.drag_reynolds_number.values).all() and (ds.drag_reynolds_number.values < 2e5).all()
 

@@ -11,17 +11,16 @@ References
     unit-dependent anyway; the drag is a minor term here (docs/validation/cage_whirl.md).
 [2] Zhang W. et al., Chin. J. Aeronaut. 29 (2016), Eq. (7) (F_D).
 [3] Parker R. J., *Comparison of predicted and experimental thermal performance of
-    angular-contact ball bearings*, NASA TP-2275 (1984): the empirical fraction of oil in
-    the air-oil mixture of the cavity of a jet-lubricated bearing,
+    angular-contact ball bearings*, NASA TP-2275 (1984): an empirical oil content of the air-oil
+    mixture in the cavity of a jet-lubricated bearing, in the form used here
     X = 1e5 W^0.37 / (n d_m^1.7), W oil flow [cm^3/min], n shaft speed [r/min], d_m pitch
-    diameter [mm]; reproduced in [1] (ball drag) and used by Pouly et al. (2010) and later
-    thermal-network papers.  NOT read here from TP-2275 or from [1]: the form and the
-    constants are those of the secondary reproductions; whether X is a fraction or a
-    percentage is not printed consistently in them.  It is read as a fraction: it then gives
-    0.01-0.15 for jet-lubricated bearings of d_m 40-150 mm at 1-3e6 n d_m and 0.5-4 L/min,
-    the range of the cavity oil fractions of CFD studies of jet-lubricated bearings
-    (e.g. Wu et al., Appl. Therm. Eng. 105 (2016) 217); as a percentage drag would vanish.
-    docs/power_loss.md, "Oil supply and the cavity oil fraction".
+    diameter [mm].  **UNVERIFIED** (issue 29, session 7): neither TP-2275 nor a reproduction of
+    the formula (Harris & Kotzalas Vol. 2; Pouly et al. 2010) could be read through this project's
+    search tools; no public code implementing it was found either.  The form, the constant and
+    the units are those of secondary recollection; in particular whether X is a fraction or a
+    percentage is open (read as a percentage the drag almost vanishes).  It is read as a fraction.
+    What was tried and what the 35-mm TP-2275 bearing says about the two readings:
+    docs/power_loss.md, "Oil supply and the cavity oil fraction" and "Measured heat generation".
 [4] Clift R., Grace J. R., Weber M. E., *Bubbles, Drops, and Particles*, Academic Press (1978),
     Ch. 5, Table 5.2: the standard drag curve of a rigid sphere in a steady uniform stream as ten
     correlations in w = log10 Re over 0 < Re < ~1e7, including the drag crisis (3.38e5-4e5).
@@ -54,9 +53,10 @@ DEFAULT_OIL_FRACTION = 0.05
 
 
 def parker_cavity_oil_fraction(flow_rate: float, speed: float, pitch_diameter: float) -> float:
-    """Oil volume fraction X of the bearing cavity of a jet-lubricated ball bearing ([3]) [-].
+    """Oil volume fraction X of the bearing cavity of a jet-lubricated ball bearing ([3], UNVERIFIED) [-].
 
-    X = 1e5 W^0.37 / (n d_m^1.7)  with W [cm^3/min], n [r/min], d_m [mm]  ([3], as reproduced in [1]).
+    X = 1e5 W^0.37 / (n d_m^1.7)  with W [cm^3/min], n [r/min], d_m [mm]  ([3]: form, constant and units
+    not checked against TP-2275; X read as a fraction, not a percentage).
 
     Arguments in SI: ``flow_rate`` [m^3/s] (W = 6e7 flow_rate), ``speed`` [rad/s] of the inner ring
     relative to the outer (n = 30 |speed| / pi), ``pitch_diameter`` [m].  Zero flow gives 0 (dry
@@ -91,7 +91,8 @@ def cavity_oil_fraction(oil_volume_fraction, oil_flow_rate, speed: float, pitch_
     if lubrication == "dry":
         return 0.0, "lubrication = dry"
     if oil_flow_rate is not None and lubrication in ("oil_jet", "oil_air"):
-        return parker_cavity_oil_fraction(oil_flow_rate, speed, pitch_diameter), "Parker (NASA TP-2275) from oil_flow_rate"
+        return (parker_cavity_oil_fraction(oil_flow_rate, speed, pitch_diameter),
+                "Parker (NASA TP-2275) from oil_flow_rate -- form and units UNVERIFIED, docs/power_loss.md")
     return DEFAULT_OIL_FRACTION, "default 0.05 (no oil_volume_fraction, no oil_flow_rate for a jet / air-oil supply)"
 
 
