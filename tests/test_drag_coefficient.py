@@ -96,3 +96,24 @@ def test_model_uses_the_curve_at_the_initial_orbital_speed():
     assert P == pytest.approx(Z * 0.5 * m.info["drag_coefficient"] * rho * math.pi * D * D / 4 * v**2.95, rel=2e-3)
     # an explicit option still overrides (the former behaviour)
     assert build_model(case, drag_coefficient=0.5).info["drag_coefficient"] == 0.5
+
+
+def test_friction_reports_the_drag_law_and_warns_past_2e5():
+    """``hsbearing friction`` archives the C_D the model used (= the curve at the archived Re) and warns once the ball
+    Reynolds number passes 2e5 (zhang2016 at 60 000 r/min: Re ~2.5e5, the start of the crisis region)."""
+    from hsbearing.case import load_case
+    from hsbearing.rating import DRAG_CRISIS_RE, friction_angular_contact
+
+    ds = friction_angular_contact(load_case("zhang2016"), np.array([14000.0, 60000.0]) * math.pi / 30)
+    Re, cd = ds["drag_reynolds_number"].values, ds["drag_coefficient"].values
+    assert Re[0] < DRAG_CRISIS_RE < Re[1]
+    for r, c in zip(Re, cd):
+        assert c == pytest.approx(drag.sphere_drag_coefficient(r), rel=1e-12)
+    assert "drag crisis" in ds.attrs["warnings"]
+    ds0 = friction_angular_contact(load_case("zhang2016"), np.array([14000.0]) * math.pi / 30)
+    assert "drag crisis" not in ds0.attrs["warnings"]
+
+
+def test_parker_source_is_labelled_unverified():
+    _, src = drag.cavity_oil_fraction(None, 1e-5, 1000.0, 0.05, "oil_jet")
+    assert "Parker" in src and "UNVERIFIED" in src
