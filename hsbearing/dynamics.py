@@ -23,7 +23,7 @@ from hsbearing.models import hertz
 from hsbearing.models import kernel as K
 from hsbearing.models import kernel_io as kio
 from hsbearing.models.ball import strip_load_weights
-from hsbearing.models.drag import cavity_oil_fraction, mixture_density
+from hsbearing.models.drag import ball_drag_coefficient, cavity_oil_fraction, mixture_density, mixture_viscosity
 from hsbearing.models.geometry import curvature_radii, derive
 from hsbearing.models.state import StateLayout
 
@@ -40,7 +40,7 @@ MODEL_DEFAULTS = {
     "pocket_film_min": 0.5e-6,  # m, pocket film floor h_c (composite roughness ball/polyamide, docs/pocket.md)
     "pocket_stations": 16,  # stations around the pocket wall (models/pocket.py; 0.3 % of the film load)
     "pocket_v0": 0.01,  # m/s, Coulomb regularisation of the pocket friction
-    "drag_coefficient": 0.5,  # C_D of a sphere (Re ~ 1e3..1e5)
+    "drag_coefficient": None,  # C_D of the ball drag; None: the sphere's C_D(Re) at the initial orbital speed (models/drag.py)
     "drag_v0": 0.01,  # m/s
     "land_length": None,  # m, width of each guide-land film (None: the case's lands, geometry.guide_lands)
     "land_eps_max": 0.95,  # saturation of the guide-land eccentricity ratio
@@ -201,6 +201,17 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
     eta, alpha, law = _oil(case)
     op = case.operating
     zeta = opt["contact_damping_ratio"]
+    qu, qw = strip_load_weights(opt["quadrature_points"])
+    layout = StateLayout(Z)
+    y0, info = initial_state(case, layout, g, kind=initial)
+    # ball drag: mixture of the cavity, and C_D at the orbital speed of the initial state (one value per case)
+    X, X_source = cavity_oil_fraction(case.lubricant.oil_volume_fraction, case.lubricant.oil_flow_rate,
+                                      op.inner_speed - op.outer_speed, dm, case.lubricant.lubrication)
+    rho_e, mu_e = mixture_density(case.lubricant.density, X), mixture_viscosity(eta, X)
+    v_orbit = float(y0[layout.cage("phidot_c")]) * 0.5 * dm  # the balls start at the cage speed
+    C_D, Re_D = ball_drag_coefficient(rho_e, mu_e, v_orbit, D)
+    if opt["drag_coefficient"] is not None:
+        C_D = float(opt["drag_coefficient"])
     # every kernel parameter, by name (declared with units in hsbearing/models/kernel_io.py)
     vals = dict(
         # balls
@@ -221,10 +232,7 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
         mu_c=case.friction.cage_coefficient, v0_c=opt["pocket_v0"],
         R_bore_c=0.5 * cg.bore_diameter, R_out_c=0.5 * cg.outside_diameter, n_pocket=opt["pocket_stations"],
         # drag
-        rho_e=mixture_density(case.lubricant.density, cavity_oil_fraction(
-            case.lubricant.oil_volume_fraction, case.lubricant.oil_flow_rate, op.inner_speed - op.outer_speed, dm,
-            case.lubricant.lubrication)[0]),
-        C_D=opt["drag_coefficient"], v0_D=opt["drag_v0"],
+        rho_e=rho_e, C_D=C_D, v0_D=opt["drag_v0"],
         # cage body
         m_c=g.cage_mass, Ip_c=g.cage_axial_inertia, Id_c=g.cage_diametral_inertia,
         # guide lands (a ball-piloted cage has none: radius nan, clearance 1 m so nothing divides by 0)
@@ -245,12 +253,11 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
         if not (math.isfinite(vals[name]) and vals[name] > 0):
             raise CaseError(case.source, "cage" if name.endswith("_c") else "bearing",
                             f"cannot derive {name} (give the masses/inertias or the dimensions)")
-    qu, qw = strip_load_weights(opt["quadrature_points"])
-    layout = StateLayout(Z)
-    y0, info = initial_state(case, layout, g, kind=initial)
     hscale = _typical_scales(layout, case)
     info.update(guide_lands=lands, options=opt, friction=friction, damping=damping, ehl_rolling=ehl_rolling, drag=drag,
-                oil_viscosity=eta, contact_K_inner=float(ci.K), contact_K_outer=float(co.K), pocket_K=float(cc.K))
+                oil_viscosity=eta, cavity_oil_fraction=X, cavity_oil_fraction_source=X_source, drag_density=rho_e,
+                drag_viscosity=mu_e, drag_orbital_speed=v_orbit, drag_reynolds_number=Re_D, drag_coefficient=C_D,
+                contact_K_inner=float(ci.K), contact_K_outer=float(co.K), pocket_K=float(cc.K))
     return DynamicModel(case=case, layout=layout, P=p, qu=np.ascontiguousarray(qu), qw=np.ascontiguousarray(qw),
                         y0=y0, hscale=hscale, info=info)
 
@@ -628,6 +635,10 @@ def to_dataset(model: DynamicModel, t, Y, stats, status="ok", annotate: bool = T
         pocket_clearance=geom.pocket_clearance, theoretical_cage_speed_nominal=wth,
         initial_state=model.info.get("initial"), friction=int(model.info["friction"]),
         damping=int(model.info["damping"]), model_options=model.info["options"],
+        drag_law=(f"C_D {model.info['drag_coefficient']:.6g} at ball Reynolds number {model.info['drag_reynolds_number']:.6g} "
+                  f"(initial orbital speed {model.info['drag_orbital_speed']:.6g} m/s); cavity oil fraction "
+                  f"{model.info['cavity_oil_fraction']:.6g} ({model.info['cavity_oil_fraction_source']}); mixture density "
+                  f"{model.info['drag_density']:.6g} kg/m^3 (models/drag.py)"),
         state_layout="hsbearing.models.state (state-major, 9 Z + 22)",
         precision="per-ball forces, speeds, angles and ratios float32; positions and cage/ring variables float64",
     )

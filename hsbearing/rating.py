@@ -225,6 +225,8 @@ def quasi_static_power_loss(case, speed=None, with_state: bool = False):
     out["drive_torque"] = float(pv["drive_torque"][0])
     w = abs(case.operating.inner_speed - case.operating.outer_speed)
     out["friction_torque"] = out["power_loss"] / w if w > 0 else float("nan")
+    for key in ("cavity_oil_fraction", "drag_reynolds_number", "drag_coefficient"):  # the drag law's inputs (build_model)
+        out[key] = float(m.info[key])
     if with_state:  # the quasi-static Dataset the state comes from, and the case at that speed
         out["state"], out["case"] = m.info["quasistatic"], case
     return out
@@ -250,10 +252,12 @@ OURS_AS_SKF = {
     "seal": (),
 }
 
-#: Surrogate of the SKF speed ratings for the validity warning [mm r/min]: the model is stated for "constant speed,
-#: below the speed ratings" (SKF, "The SKF model for calculating the frictional moment", conditions of validity);
-#: a case gives no speed rating, so n d_m above 1e6 (above the catalogue reference speeds of single-row angular
-#: contact ball bearings, order 0.7-1e6 mm r/min; assumed, not read from the tables) is flagged.
+#: Surrogate of the SKF speed ratings for the validity warning [mm r/min].  Read (SKF, "The SKF model for calculating
+#: the frictional moment", list of conditions at its start; scribd copy of the catalogue section): the model holds for
+#: "constant speed, below the speed ratings" and a "bearing [that] does not exceed the limits of misalignment".  The
+#: speed ratings are the per-bearing reference and limiting speeds of the product tables, which could not be read
+#: here, and a case carries none: n d_m above 1e6 is flagged as a stand-in (ASSUMED, not from the tables; single-row
+#: angular contact ball bearings are rated at a few 1e5 to ~1e6 mm r/min with oil).  The warning says so.
 SKF_NDM_LIMIT = 1.0e6
 
 
@@ -263,14 +267,20 @@ def skf_validity_warnings(case, n_rpm) -> list[str]:
     dm_mm = case.bearing.pitch_diameter * 1e3
     ndm = float(np.max(np.abs(n_rpm))) * dm_mm
     if ndm > SKF_NDM_LIMIT:
-        out.append(f"SKF 2004 model outside its range: n d_m = {ndm:.3g} mm r/min above {SKF_NDM_LIMIT:.0e} (the model is "
-                   "stated for constant speed below the bearing's speed ratings; SKF, 'The SKF model for calculating the "
-                   "frictional moment'); its G_rr, G_sl were not fitted there: order of magnitude only")
+        out.append(f"SKF 2004 model likely outside its range: n d_m = {ndm:.3g} mm r/min above {SKF_NDM_LIMIT:.0e} (the "
+                   "model is stated for 'constant speed, below the speed ratings' -- SKF, 'The SKF model for calculating "
+                   "the frictional moment'; the bearing's own reference/limiting speeds are not in the case, the 1e6 "
+                   "stand-in is assumed); its G_rr, G_sl were not fitted there: order of magnitude only")
     lub = case.lubricant.lubrication
     if lub not in ("oil_jet", "oil_bath", "oil_air", "grease"):
         out.append(f"SKF 2004 model outside its range: lubrication = {lub} (the model is for grease, oil bath, oil-air "
                    "or oil jet lubrication)")
     return out
+
+
+#: Ball Reynolds number above which the drag warning is given: from 2e5 a smooth sphere's C_D (standard drag
+#: curve, models/drag.py [4]) enters its crisis, and free-stream turbulence moves the crisis lower.
+DRAG_CRISIS_RE = 2.0e5
 
 
 def _register_qs_power():
@@ -281,7 +291,9 @@ def _register_qs_power():
     register("cavity_oil_fraction", ("speed",), "1", "oil volume fraction of the air-oil mixture the ball drag uses "
              "(lubricant.oil_volume_fraction, or Parker's correlation from lubricant.oil_flow_rate)")
     register("drag_reynolds_number", ("speed",), "1", "Reynolds number of the ball in the air-oil mixture, "
-             "rho_e v D / mu_e at the cage orbital speed (C_D = 0.5 holds for 1e3..2e5)")
+             "rho_e v D / mu_e at the cage orbital speed of the quasi-static state")
+    register("drag_coefficient", ("speed",), "1", "drag coefficient C_D of the ball drag: the smooth sphere's standard "
+             "drag curve (Clift, Grace & Weber 1978, Table 5.2) at drag_reynolds_number")
     for term in ("rolling", "sliding", "drag", "seal"):
         register(f"qs_power_as_skf_{term}", ("speed",), "W", f"our quasi-static power loss grouped as the SKF "
                  f"{term} term (rating.OURS_AS_SKF)")
@@ -308,10 +320,8 @@ def friction_angular_contact(case, speeds):
     from hsbearing import contact_state
 
     warns = []
-    cage_speeds = []
     for r in rows:
         q = r.pop("state")
-        cage_speeds.append(float(np.asarray(q["cage_speed"]).ravel()[0]))
         for x in contact_state.warnings_for(q.assign(**{k: ("ball", v) for k, v in
                                                         contact_state.quasi_static_contact_state(r.pop("case"), q).items()}), case):
             if x not in warns:
@@ -328,23 +338,20 @@ def friction_angular_contact(case, speeds):
     data["skf_power_drag"] = data["skf_drag_torque"] * wa
     data["skf_power_seal"] = np.zeros(len(w))  # open bearing: no seal moment
     from hsbearing.models import drag as drag_model
-    from hsbearing.models import ehl
 
-    lub, g_dm, D = case.lubricant, case.bearing.pitch_diameter, case.bearing.ball_diameter
-    eta = ehl.lubricant_parameters(case)["eta"]
-    X = np.array([drag_model.cavity_oil_fraction(lub.oil_volume_fraction, lub.oil_flow_rate, wi - case.operating.outer_speed,
-                                                 g_dm, lub.lubrication)[0] for wi in w])
-    xsrc = drag_model.cavity_oil_fraction(lub.oil_volume_fraction, lub.oil_flow_rate, w[0] if len(w) else 0.0, g_dm,
-                                          lub.lubrication)[1]
-    data["cavity_oil_fraction"] = X
-    v_orbit = np.array(cage_speeds) * 0.5 * g_dm
-    data["drag_reynolds_number"] = np.array([drag_model.ball_reynolds_number(
-        drag_model.mixture_density(lub.density, x), v, D, drag_model.mixture_viscosity(eta, x)) for x, v in zip(X, v_orbit)])
+    lub = case.lubricant
+    # the drag law's inputs as the model used them (dynamics.build_model: one law for run and friction)
+    for key in ("cavity_oil_fraction", "drag_reynolds_number", "drag_coefficient"):
+        data[key] = np.array([r[key] for r in rows])
+    xsrc = drag_model.cavity_oil_fraction(lub.oil_volume_fraction, lub.oil_flow_rate, w[0] if len(w) else 0.0,
+                                          case.bearing.pitch_diameter, lub.lubrication)[1]
     warns += [x for x in skf_validity_warnings(case, wa * 30.0 / math.pi) if x not in warns]
     Re_max = float(np.max(data["drag_reynolds_number"])) if len(w) else 0.0
-    if Re_max > 2e5:
-        warns.append(f"ball Reynolds number up to {Re_max:.3g} in the air-oil mixture: above 2e5 (drag crisis of a sphere, "
-                     "C_D falls to ~0.1-0.2) the constant C_D = 0.5 of the drag overestimates it (docs/power_loss.md)")
+    if Re_max > DRAG_CRISIS_RE:
+        warns.append(f"ball Reynolds number up to {Re_max:.3g} in the air-oil mixture: near or past the drag crisis of a "
+                     f"smooth sphere (C_D {float(np.max(data['drag_coefficient'])):.2g}..{float(np.min(data['drag_coefficient'])):.2g} "
+                     "from the standard drag curve); where the crisis sits in the turbulent cavity is not known: the drag "
+                     "there is uncertain by a factor ~5 (docs/power_loss.md)")
     attrs = standard_attrs(case, "ok", title="hsbearing friction: quasi-static power loss by source, SKF 2004 model",
                            note_quasi_static=_NOTE_QS, note_skf=_NOTE_SKF, cavity_oil_fraction_source=xsrc,
                            warnings=" | ".join(warns) if warns else "none")

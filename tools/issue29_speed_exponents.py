@@ -5,6 +5,9 @@ No public geometry of the NASA 35-mm (TP 1732) and 120-mm (TN D-7870) bearings c
 (docs/validation/nasa_heat_generation.md), so both bearings are ASSUMED geometrically similar to the 7206-size
 bearing of zhang2016 (every length scaled by d_m / 46 mm, 11 balls, 25 deg, same conformities, same PA66 cage,
 oil 4109 at 130 degC), axial load scaled with d_m^2 (1 kN at d_m 46 mm), oil jet at the flow given below.
+The drag uses the model's law (models/drag.py): Parker's cavity fraction (read as a fraction, unverified) or the
+constant 0.05, and C_D(Re) of the smooth sphere's standard drag curve at the quasi-static orbital speed; the
+columns X, Re_ball, C_D show them.  Past Re ~3.4e5 the curve's drag crisis makes the drag fall with speed.
 Usage: PYTHONPATH=. python tools/issue29_speed_exponents.py
 """
 
@@ -55,11 +58,12 @@ def sweep(label, dm_mm, bore, flow, rpms):
             rows.append(r)
         res[variant] = rows
         srcs = ["race_traction", "ehl_rolling", "pocket_film", "guide_land", "drag", "power_loss"]
-        print(f"  [{variant}] n [r/min] " + " ".join(f"{s:>14s}" for s in srcs) + "   n d_m [1e6]")
+        print(f"  [{variant}] n [r/min] " + " ".join(f"{s:>14s}" for s in srcs) + "   n d_m [1e6]        X   Re_ball   C_D")
         for n, r in zip(rpms, rows):
             if r is None:
                 continue
-            print(f"  [{variant}] {n:9.0f} " + " ".join(f"{r[s]:14.4g}" for s in srcs) + f"   {n * dm_mm / 1e6:.2f}")
+            print(f"  [{variant}] {n:9.0f} " + " ".join(f"{r[s]:14.4g}" for s in srcs) + f"   {n * dm_mm / 1e6:11.2f}"
+                  f" {r['cavity_oil_fraction']:8.3g} {r['drag_reynolds_number']:9.3g} {r['drag_coefficient']:5.3f}")
         ok = [(n, r) for n, r in zip(rpms, rows) if r is not None]
         if len(ok) >= 2:
             ln = np.log([n for n, _ in ok])

@@ -40,7 +40,7 @@ def main() -> None:
     out = {}
     for name, case, span, n, take in (("default", hsbearing.load_case("zhang2016"), 0.02, 4001, 80),
                                       ("t5", hsbearing.load_case("zhang2016", **T5), 0.02, 2001, 80)):
-        m = build_model(case)
+        m = build_model(case, drag_coefficient=0.5)  # the stored data's C_D (before C_D(Re), issue 29 session 7)
         sim = case.simulation
         res = integrate(m.rhs, m.y0, np.linspace(0.0, span, n), rtol=float(sim.rtol),
                         atol=m.layout.atol(float(sim.atol)), jacfn=m.jac)

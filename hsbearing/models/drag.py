@@ -11,17 +11,25 @@ References
     unit-dependent anyway; the drag is a minor term here (docs/validation/cage_whirl.md).
 [2] Zhang W. et al., Chin. J. Aeronaut. 29 (2016), Eq. (7) (F_D).
 [3] Parker R. J., *Comparison of predicted and experimental thermal performance of
-    angular-contact ball bearings*, NASA TP-2275 (1984): the empirical fraction of oil in
-    the air-oil mixture of the cavity of a jet-lubricated bearing,
+    angular-contact ball bearings*, NASA TP-2275 (1984): an empirical oil content of the air-oil
+    mixture in the cavity of a jet-lubricated bearing, in the form used here
     X = 1e5 W^0.37 / (n d_m^1.7), W oil flow [cm^3/min], n shaft speed [r/min], d_m pitch
-    diameter [mm]; reproduced in [1] (ball drag) and used by Pouly et al. (2010) and later
-    thermal-network papers.  NOT read here from TP-2275 or from [1]: the form and the
-    constants are those of the secondary reproductions; whether X is a fraction or a
-    percentage is not printed consistently in them.  It is read as a fraction: it then gives
-    0.01-0.15 for jet-lubricated bearings of d_m 40-150 mm at 1-3e6 n d_m and 0.5-4 L/min,
-    the range of the cavity oil fractions of CFD studies of jet-lubricated bearings
-    (e.g. Wu et al., Appl. Therm. Eng. 105 (2016) 217); as a percentage drag would vanish.
-    docs/power_loss.md, "Oil supply and the cavity oil fraction".
+    diameter [mm].  **UNVERIFIED** (issue 29, session 7): neither TP-2275 nor a reproduction of
+    the formula (Harris & Kotzalas Vol. 2; Pouly et al. 2010) could be read through this project's
+    search tools; no public code implementing it was found either.  The form, the constant and
+    the units are those of secondary recollection; in particular whether X is a fraction or a
+    percentage is open (read as a percentage the drag almost vanishes).  It is read as a fraction.
+    What was tried and what the 35-mm TP-2275 bearing says about the two readings:
+    docs/power_loss.md, "Oil supply and the cavity oil fraction" and "Measured heat generation".
+[4] Clift R., Grace J. R., Weber M. E., *Bubbles, Drops, and Particles*, Academic Press (1978),
+    Ch. 5, Table 5.2: the standard drag curve of a rigid sphere in a steady uniform stream as ten
+    correlations in w = log10 Re over 0 < Re < ~1e7, including the drag crisis (3.38e5-4e5).
+    Not read here in the book: the ten forms and constants are those of several independent
+    public implementations that cite this table (e.g. the ``fluids`` library, ``drag.py``,
+    ``Clift``), which agree with each other.  Checked in tests/test_drag_coefficient.py against
+    the measured sphere drag of Roos & Willmarth, AIAA J. 9 (1971) 285 (tabulated in the
+    ``sheardata`` collection, CC-BY-4.0) and against points read from Achenbach, J. Fluid
+    Mech. 54 (1972) 565, Fig. 4 (through the crisis).
 """
 
 from __future__ import annotations
@@ -33,7 +41,8 @@ from numba import njit
 from hsbearing.compile_cache import check_compile_cache
 
 __all__ = ["mixture_density", "ball_drag_force", "parker_cavity_oil_fraction", "cavity_oil_fraction",
-           "DEFAULT_OIL_FRACTION", "mixture_viscosity", "ball_reynolds_number", "AIR_VISCOSITY"]
+           "DEFAULT_OIL_FRACTION", "mixture_viscosity", "ball_reynolds_number", "AIR_VISCOSITY",
+           "sphere_drag_coefficient", "ball_drag_coefficient"]
 
 #: air density at the bearing temperature is small; 1.1 kg/m^3 (about 50-130 degC) is used.
 AIR_DENSITY = 1.1
@@ -44,9 +53,10 @@ DEFAULT_OIL_FRACTION = 0.05
 
 
 def parker_cavity_oil_fraction(flow_rate: float, speed: float, pitch_diameter: float) -> float:
-    """Oil volume fraction X of the bearing cavity of a jet-lubricated ball bearing ([3]) [-].
+    """Oil volume fraction X of the bearing cavity of a jet-lubricated ball bearing ([3], UNVERIFIED) [-].
 
-    X = 1e5 W^0.37 / (n d_m^1.7)  with W [cm^3/min], n [r/min], d_m [mm]  ([3], as reproduced in [1]).
+    X = 1e5 W^0.37 / (n d_m^1.7)  with W [cm^3/min], n [r/min], d_m [mm]  ([3]: form, constant and units
+    not checked against TP-2275; X read as a fraction, not a percentage).
 
     Arguments in SI: ``flow_rate`` [m^3/s] (W = 6e7 flow_rate), ``speed`` [rad/s] of the inner ring
     relative to the outer (n = 30 |speed| / pi), ``pitch_diameter`` [m].  Zero flow gives 0 (dry
@@ -81,7 +91,8 @@ def cavity_oil_fraction(oil_volume_fraction, oil_flow_rate, speed: float, pitch_
     if lubrication == "dry":
         return 0.0, "lubrication = dry"
     if oil_flow_rate is not None and lubrication in ("oil_jet", "oil_air"):
-        return parker_cavity_oil_fraction(oil_flow_rate, speed, pitch_diameter), "Parker (NASA TP-2275) from oil_flow_rate"
+        return (parker_cavity_oil_fraction(oil_flow_rate, speed, pitch_diameter),
+                "Parker (NASA TP-2275) from oil_flow_rate -- form and units UNVERIFIED, docs/power_loss.md")
     return DEFAULT_OIL_FRACTION, "default 0.05 (no oil_volume_fraction, no oil_flow_rate for a jet / air-oil supply)"
 
 
@@ -101,14 +112,72 @@ def mixture_viscosity(oil_viscosity: float, oil_volume_fraction: float, air_visc
 
 
 def ball_reynolds_number(rho_e: float, v: float, D: float, mu_e: float) -> float:
-    """Reynolds number of the ball in the mixture Re = rho_e |v| D / mu_e [-].
-
-    The drag coefficient C_D is kept constant (0.5, ``dynamics.DEFAULT_OPTIONS``): the drag
-    coefficient of a sphere is 0.4-0.5 over 1e3 < Re < 2e5 (Newton regime, below the drag crisis;
-    e.g. White, *Fluid Mechanics*, Fig. 7.16), and the bearing cavity stays in that range
-    (``hsbearing friction`` prints Re; docs/power_loss.md).
-    """
+    """Reynolds number of the ball in the mixture Re = rho_e |v| D / mu_e [-] (v: orbital speed of the
+    ball centre relative to the mixture, taken at rest; D: ball diameter)."""
     return rho_e * abs(v) * D / mu_e
+
+
+def sphere_drag_coefficient(Re: float) -> float:
+    """Drag coefficient C_D(Re) of a smooth rigid sphere in a steady uniform stream ([4], Table 5.2).
+
+    With w = log10 Re:
+
+    ==================  ============================================
+    Re < 0.01           C_D = 3/16 + 24/Re
+    0.01 .. 20          C_D = 24/Re (1 + 0.1315 Re^(0.82 - 0.05 w))
+    20 .. 260           C_D = 24/Re (1 + 0.1935 Re^0.6305)
+    260 .. 1.5e3        log10 C_D = 1.6435 - 1.1242 w + 0.1558 w^2
+    1.5e3 .. 1.2e4      log10 C_D = -2.4571 + 2.5558 w - 0.9295 w^2 + 0.1049 w^3
+    1.2e4 .. 4.4e4      log10 C_D = -1.9181 + 0.6370 w - 0.0636 w^2
+    4.4e4 .. 3.38e5     log10 C_D = -4.3390 + 1.5809 w - 0.1546 w^2
+    3.38e5 .. 4e5       C_D = 29.78 - 5.3 w          (drag crisis)
+    4e5 .. 1e6          C_D = 0.1 w - 0.49
+    > 1e6               C_D = 0.19 - 8e4 / Re
+    ==================  ============================================
+
+    Re must be > 0.  The crisis (C_D 0.48 -> 0.07 between 3.4e5 and 4e5) is that of a smooth sphere
+    in a low-turbulence stream; free-stream turbulence and roughness move it to lower Re
+    (docs/power_loss.md, "The drag coefficient").
+    """
+    if not Re > 0.0:
+        raise ValueError("Reynolds number must be > 0")
+    w = math.log10(Re)
+    if Re < 0.01:
+        return 3.0 / 16.0 + 24.0 / Re
+    if Re <= 20.0:
+        return 24.0 / Re * (1.0 + 0.1315 * Re ** (0.82 - 0.05 * w))
+    if Re <= 260.0:
+        return 24.0 / Re * (1.0 + 0.1935 * Re**0.6305)
+    if Re <= 1.5e3:
+        return 10.0 ** (1.6435 - 1.1242 * w + 0.1558 * w * w)
+    if Re <= 1.2e4:
+        return 10.0 ** (-2.4571 + 2.5558 * w - 0.9295 * w * w + 0.1049 * w**3)
+    if Re <= 4.4e4:
+        return 10.0 ** (-1.9181 + 0.6370 * w - 0.0636 * w * w)
+    if Re <= 3.38e5:
+        return 10.0 ** (-4.3390 + 1.5809 * w - 0.1546 * w * w)
+    if Re <= 4.0e5:
+        return 29.78 - 5.3 * w
+    if Re <= 1.0e6:
+        return 0.1 * w - 0.49
+    return 0.19 - 8.0e4 / Re
+
+
+#: Below this ball Reynolds number the drag coefficient is taken at it: a bearing standing still or
+#: creeping has no meaningful drag Reynolds number, and the drag (~ v^1.95) is negligible there.
+RE_FLOOR = 1.0
+
+
+def ball_drag_coefficient(rho_e: float, mu_e: float, v: float, D: float) -> tuple[float, float]:
+    """(C_D, Re) of the ball drag: :func:`sphere_drag_coefficient` at the ball Reynolds number
+    :func:`ball_reynolds_number` (floored at :data:`RE_FLOOR`) ([4]).
+
+    One value per case: :func:`hsbearing.dynamics.build_model` evaluates it at the orbital speed of
+    the initial (quasi-static) state and the kernel keeps it for the run; ``hsbearing friction``
+    reports the same number.
+    """
+    Re = ball_reynolds_number(rho_e, v, D, mu_e)
+    return sphere_drag_coefficient(max(Re, RE_FLOOR)), Re
 
 
 @njit(cache=True)

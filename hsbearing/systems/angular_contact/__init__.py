@@ -77,9 +77,10 @@ def friction_command(case, args) -> int:
                                 ("SKF 2004", "skf_power_", ds.skf_total_torque.values[i] * abs(wi))):
             print("  ".join([f"{_rpm(wi):14.0f}", f"{label:>14s}"] + [f"{ds[pre + t].values[i]:14.4g}" for t in
                                                                       ("rolling", "sliding", "drag", "seal")] + [f"{tot:14.4g}"]))
-    X, Re = ds["cavity_oil_fraction"].values, ds["drag_reynolds_number"].values
+    X, Re, CD = ds["cavity_oil_fraction"].values, ds["drag_reynolds_number"].values, ds["drag_coefficient"].values
     print(f"drag: cavity oil fraction {', '.join(f'{x:.4g}' for x in X)} ({ds.attrs.get('cavity_oil_fraction_source', '')}); "
-          f"ball Reynolds number {', '.join(f'{r:.3g}' for r in Re)} (C_D = 0.5 is the sphere's value for 1e3 < Re < 2e5)")
+          f"ball Reynolds number {', '.join(f'{r:.3g}' for r in Re)}; C_D {', '.join(f'{c:.3g}' for c in CD)} (smooth "
+          "sphere, standard drag curve of Clift, Grace & Weber 1978, Table 5.2)")
     print("note: " + _NOTE_QS)
     print("note: " + _NOTE_SKF)
     if case.friction.law == "coulomb":
