@@ -349,9 +349,9 @@ def friction_angular_contact(case, speeds):
     Re_max = float(np.max(data["drag_reynolds_number"])) if len(w) else 0.0
     if Re_max > DRAG_CRISIS_RE:
         warns.append(f"ball Reynolds number up to {Re_max:.3g} in the air-oil mixture: near or past the drag crisis of a "
-                     f"smooth sphere (C_D {float(np.max(data['drag_coefficient'])):.2g}..{float(np.min(data['drag_coefficient'])):.2g} "
-                     "from the standard drag curve); where the crisis sits in the turbulent cavity is not known: the drag "
-                     "there is uncertain by a factor ~5 (docs/power_loss.md)")
+                     f"smooth sphere; C_D is held at its subcritical value ({float(np.min(data['drag_coefficient'])):.2g}, "
+                     "no crisis applied); if the cavity flow does reach a crisis the drag there is up to ~5x lower "
+                     "(docs/power_loss.md)")
     attrs = standard_attrs(case, "ok", title="hsbearing friction: quasi-static power loss by source, SKF 2004 model",
                            note_quasi_static=_NOTE_QS, note_skf=_NOTE_SKF, cavity_oil_fraction_source=xsrc,
                            warnings=" | ".join(warns) if warns else "none")

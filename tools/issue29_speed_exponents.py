@@ -7,7 +7,7 @@ bearing of zhang2016 (every length scaled by d_m / 46 mm, 11 balls, 25 deg, same
 oil 4109 at 130 degC), axial load scaled with d_m^2 (1 kN at d_m 46 mm), oil jet at the flow given below.
 The drag uses the model's law (models/drag.py): Parker's cavity fraction (read as a fraction, unverified) or the
 constant 0.05, and C_D(Re) of the smooth sphere's standard drag curve at the quasi-static orbital speed; the
-columns X, Re_ball, C_D show them.  Past Re ~3.4e5 the curve's drag crisis makes the drag fall with speed.
+columns X, Re_ball, C_D show them.  Past Re 3.38e5 C_D is held (no drag crisis in the cavity: models/drag.py RE_SUBCRITICAL_MAX).
 Usage: PYTHONPATH=. python tools/issue29_speed_exponents.py
 """
 

@@ -42,7 +42,7 @@ from hsbearing.compile_cache import check_compile_cache
 
 __all__ = ["mixture_density", "ball_drag_force", "parker_cavity_oil_fraction", "cavity_oil_fraction",
            "DEFAULT_OIL_FRACTION", "mixture_viscosity", "ball_reynolds_number", "AIR_VISCOSITY",
-           "sphere_drag_coefficient", "ball_drag_coefficient"]
+           "sphere_drag_coefficient", "ball_drag_coefficient", "RE_SUBCRITICAL_MAX"]
 
 #: air density at the bearing temperature is small; 1.1 kg/m^3 (about 50-130 degC) is used.
 AIR_DENSITY = 1.1
@@ -168,16 +168,28 @@ def sphere_drag_coefficient(Re: float) -> float:
 RE_FLOOR = 1.0
 
 
+#: End of the subcritical branch of the standard drag curve ([4], Table 5.2).  The ball drag holds C_D at its
+#: value here for larger Re (0.474): the smooth sphere's drag crisis is not applied in a bearing cavity.
+#: Evidence: with the crisis the computed drag, and the total power loss, FALL with speed across it
+#: (35-mm 7206-similar bearing: drag 2841 W at 60 000 r/min, 1049 W at 72 000), while every measured
+#: bearing heat generation over speed rises monotonically (NASA TP-2275 35-mm: 350, 700, 1100, 1400 W at
+#: 28, 48, 64, 72 krpm; docs/power_loss.md); the ball spins, runs in its neighbour's wake in a turbulent,
+#: oil-laden cavity, not in the quiet stream of the crisis measurements.
+RE_SUBCRITICAL_MAX = 3.38e5
+
+
 def ball_drag_coefficient(rho_e: float, mu_e: float, v: float, D: float) -> tuple[float, float]:
     """(C_D, Re) of the ball drag: :func:`sphere_drag_coefficient` at the ball Reynolds number
-    :func:`ball_reynolds_number` (floored at :data:`RE_FLOOR`) ([4]).
+    :func:`ball_reynolds_number` (floored at :data:`RE_FLOOR`), without the drag crisis: held at
+    C_D(:data:`RE_SUBCRITICAL_MAX`) above it ([4]; the decision and its evidence: docs/power_loss.md).
+    The returned Re is the actual one.
 
     One value per case: :func:`hsbearing.dynamics.build_model` evaluates it at the orbital speed of
     the initial (quasi-static) state and the kernel keeps it for the run; ``hsbearing friction``
     reports the same number.
     """
     Re = ball_reynolds_number(rho_e, v, D, mu_e)
-    return sphere_drag_coefficient(max(Re, RE_FLOOR)), Re
+    return sphere_drag_coefficient(min(max(Re, RE_FLOOR), RE_SUBCRITICAL_MAX)), Re
 
 
 @njit(cache=True)
