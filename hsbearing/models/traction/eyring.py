@@ -96,7 +96,7 @@ DEFAULT_LAMBDA = LAMBDA_BRACKET[1]
 #: Default elastic shear modulus of the film [Pa] (geometric middle of 0.1-1 GPa, [6]).
 DEFAULT_SHEAR_MODULUS = 0.3e9
 #: Gauss-Legendre nodes in theta across the minor axis of a strip (x = b_u sin theta).
-N_MINOR = 6
+N_MINOR = 8
 #: ln z above which asinh(z) = ln(2 z) to double precision (1/(4 z^2) < 2^-53 for z > 2.4e7).
 LOG_ASINH = 17.0
 
