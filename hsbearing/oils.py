@@ -112,6 +112,29 @@ def format_at_case(case, d) -> list[str]:
     return lines
 
 
+def contact_conditions(case, qs, side):
+    """(Q [N], U [m/s], Rx [m], Ry [m]) of the most loaded ball's ``side`` ("inner"/"outer") contact of the
+    quasi-static solution ``qs`` (rolling speed of the ball centre's orbit against the race, no spin)."""
+    from hsbearing.models.geometry import derive
+
+    g = derive(case)
+    D = g.D
+    wm, rb = qs["ball_orbit_speed"].values, qs["ball_center_radial"].values
+    Qs = qs[f"{side}_contact_load"].values
+    i = int(np.nanargmax(Qs))
+    a = float(qs[f"{side}_contact_angle"].values[i])
+    if side == "inner":
+        U = abs(case.operating.inner_speed - wm[i]) * (rb[i] - 0.5 * D * np.cos(a))
+        Rx = 0.5 * D * (1.0 - D * np.cos(a) / g.dm)
+        f = g.fi
+    else:
+        U = abs(case.operating.outer_speed - wm[i]) * (rb[i] + 0.5 * D * np.cos(a))
+        Rx = 0.5 * D * (1.0 + D * np.cos(a) / g.dm)
+        f = g.fo
+    Ry = f * D / (2.0 * f - 1.0)  # ball against the groove of radius f D
+    return float(Qs[i]), float(U), float(Rx), float(Ry)
+
+
 def contact_traction(case, S, Q, U, Rx, Ry):
     """mu(S) of the case's traction law at one ball/race contact (load Q [N], rolling speed U [m/s], radii
     Rx, Ry [m]): the registered seed laws, the physical model (with the contact's Hertz ellipse, the oil's
@@ -139,31 +162,16 @@ def plot_traction(case, qs, path) -> Path:
     from matplotlib.figure import Figure
 
     from hsbearing.models import traction
-    from hsbearing.models.geometry import derive
     from hsbearing.plotting.common import save_figure
 
     lub = case.lubricant
-    g = derive(case)
-    D = g.D
-    wm, rb = qs["ball_orbit_speed"].values, qs["ball_center_radial"].values
     S = np.logspace(-5, np.log10(0.2), 400)
     fig = Figure(figsize=(6.4, 4.2))
     ax = fig.add_subplot(111)
     for side, color in (("inner", "tab:blue"), ("outer", "tab:red")):
-        Q = qs[f"{side}_contact_load"].values
-        i = int(np.nanargmax(Q))
-        a = float(qs[f"{side}_contact_angle"].values[i])
-        if side == "inner":
-            U = abs(case.operating.inner_speed - wm[i]) * (rb[i] - 0.5 * D * np.cos(a))
-            Rx = 0.5 * D * (1.0 - D * np.cos(a) / g.dm)
-            f = g.fi
-        else:
-            U = abs(case.operating.outer_speed - wm[i]) * (rb[i] + 0.5 * D * np.cos(a))
-            Rx = 0.5 * D * (1.0 + D * np.cos(a) / g.dm)
-            f = g.fo
-        Ry = f * D / (2.0 * f - 1.0)  # ball against the groove of radius f D
-        mu = contact_traction(case, S, float(Q[i]), float(U), float(Rx), float(Ry))
-        ax.semilogx(S * 100.0, mu, color=color, label=f"{side}: Q = {Q[i]:.0f} N, U = {U:.1f} m/s")
+        Q, U, Rx, Ry = contact_conditions(case, qs, side)
+        mu = contact_traction(case, S, Q, U, Rx, Ry)
+        ax.semilogx(S * 100.0, mu, color=color, label=f"{side}: Q = {Q:.0f} N, U = {U:.1f} m/s")
     ax.set_xlabel("slide-roll ratio S [%]")
     ax.set_ylabel("traction coefficient mu [-]")
     name = lub.definition.name if lub.definition is not None else lub.oil
