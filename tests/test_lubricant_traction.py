@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from _cli_checks import one_error_line
 
 from hsbearing import lubricant
 from hsbearing.case import load_case
@@ -16,8 +17,6 @@ from hsbearing.cli import main
 from hsbearing.models import kernel_io as kio
 from hsbearing.models import traction
 from hsbearing.models.traction import zhang2016
-
-from _cli_checks import one_error_line
 
 HEAD = """\
 name = "data-sheet ester"

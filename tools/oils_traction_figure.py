@@ -68,7 +68,7 @@ def table(rows):
             out.append(f"| {r['oil']} | {r['T']:g} | {r['Q']:.0f} | {r['U']:.1f} | {r['p0'] / 1e9:.2f} | {r['hc'] * 1e9:.0f} | "
                        f"{'default' if m == 'seed' else 'eyring'} | " + " | ".join(f"{x:.4f}" for x in r[f"tab_{m}"]) + " |")
         ratio = r["tab_eyring"] / r["tab_seed"]
-        out.append(f"| | | | | | | eyring/default | " + " | ".join(f"{x:.2f}" for x in ratio) + " |")
+        out.append("| | | | | | | eyring/default | " + " | ".join(f"{x:.2f}" for x in ratio) + " |")
     return out
 
 

@@ -13,6 +13,7 @@ import math
 import numba
 
 from hsbearing.compile_cache import check_compile_cache
+from hsbearing.models.traction.eyring import LOG_ASINH, MINOR_NODES
 from hsbearing.models.traction.zhang2016 import (
     LOAD_FACTOR_SHARPNESS,
     NOTCH_SHARPNESS,
@@ -23,8 +24,6 @@ from hsbearing.models.traction.zhang2016 import (
     U_FLOOR,
     W_FLOOR,
 )
-
-from hsbearing.models.traction.eyring import LOG_ASINH, MINOR_NODES
 
 __all__ = ["coefficients_nb", "mu_nb", "traction_coefficients_nb", "traction_mu_nb", "eyring_coefficients_nb",
            "eyring_strip_mu_nb", "EYRING_LAW_ID", "COEFFICIENTS_LAW_ID"]
