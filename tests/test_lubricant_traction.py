@@ -189,3 +189,19 @@ def test_short_dynamic_run_with_the_physical_model(tmp_path, capsys):
                             "-o", str(tmp_path / "run.nc")], capsys)
     assert rc == 0, err
     assert "status: ok" in stdout
+
+
+def test_oils_at_a_case_draws_the_physical_model(tmp_path, capsys):
+    from hsbearing import oils, quasistatic
+
+    p = _write(tmp_path, EYRING)
+    png = tmp_path / "mu.png"
+    rc, out, err = _cli(["oils", str(p), "--at", "zhang2016", "-o", str(png)], capsys)
+    assert rc == 0, err
+    assert "physical model (eyring): Lambda = 0.05" in out and png.read_bytes()[:4] == b"\x89PNG"
+    # the drawn curve is the physical model at that contact: it tends to the file's Lambda at large slip
+    case = load_case("zhang2016", **{"lubricant.file": str(p)})
+    qs = quasistatic.solve_case(case)
+    Q, U, Rx, Ry = oils.contact_conditions(case, qs, "inner")
+    mu = oils.contact_traction(case, np.array([1e-3, 0.05, 1e3]), Q, U, Rx, Ry)
+    assert np.all(np.diff(mu) > 0) and mu[-1] == pytest.approx(0.05, rel=0.01)
