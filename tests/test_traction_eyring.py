@@ -32,7 +32,7 @@ def _contact(W=W, U=U, G=ey.DEFAULT_SHEAR_MODULUS, Lam=ey.DEFAULT_LAMBDA, alpha=
 
 
 def test_defaults_inside_the_cited_ranges():
-    # Eyring stress 2 Lambda / alpha of the seed oils inside the 2-20 MPa of EHL oils (Evans & Johnson 1986),
+    # Eyring stress 2 Lambda / alpha of the seed oils inside the 2-20 MPa usually quoted from Evans & Johnson 1986,
     # Lambda inside the measured 0.035-0.088 (Arana et al. 2019 Table 2), G inside 0.1-1 GPa (Johnson & Roberts 1974)
     for oil in traction.OILS.values():
         tau0 = ey.eyring_stress_default(ey.DEFAULT_LAMBDA, oil.alpha)

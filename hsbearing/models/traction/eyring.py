@@ -20,11 +20,14 @@ The last line is the exact solution of the Maxwell equation U dtau/dx / G + tau 
 viscosity constant along the path (Johnson & Tevaarwerk's elastic-viscous film, [1]); with the non-linear
 flow stress tau_f in place of eta S U / h it is the Johnson-Tevaarwerk "elastic then plastic" shape.  So:
 
-* small S: tau = tau_el (the film's elastic compliance sets the slope, as it does in every measured EHL
-  traction curve at high pressure; the viscous slope with Barus viscosity is orders of magnitude stiffer),
-  the rolling creep of the solids (Carter, C = 2 R_x / b) in series with it through
-  ``G_eff = G C / (E_f + C)`` with E_f = 4 G b / (pi h p_0) the film's slope (:func:`effective_shear_modulus`);
-  the contact's low-slip slope is then exactly 1 / (1/E_f + 1/C), the estimate of ``linear_region``;
+* small S: tau = min-like of tau_el and the viscous stress point by point; in the high-pressure centre
+  the film's elastic compliance sets the slope (the viscous slope with Barus viscosity is orders of
+  magnitude stiffer there), at the low-pressure edge the viscous one does (Deborah number < 1).  The
+  rolling creep of the solids (Carter, C = 2 R_x / b) is in series with the film through
+  ``G_eff = G C / (E_f + C)``, E_f = 4 G b / (pi h p_0) the elastic film's slope
+  (:func:`effective_shear_modulus`): where the film is elastic over the whole contact the low-slip slope is
+  1 / (1/E_f + 1/C), the estimate of ``linear_region`` (tested: 0.975 of it); with the default G at the
+  default case the viscous edge brings it to 0.65 of that contact-level series;
 * large S: tau -> tau_L = Lambda p at every point, so mu -> Lambda;
 * in between the Eyring flow (tau_0, log in S) and the limiting shear set the knee.
 
@@ -62,7 +65,8 @@ References
     Lond. A 356 (1977) 215-236 (Maxwell model with Eyring dashpot; elastic, non-linear viscous and
     elastic-plastic regimes of the traction curve).
 [2] Evans C. R., Johnson K. L., "The rheological properties of elastohydrodynamic lubricants",
-    Proc. IMechE C 200 (1986) 303-312 (Eyring stress of EHL oils, of order 2-20 MPa).
+    Proc. IMechE C 200 (1986) 303-312 (Eyring stress of EHL oils; the range of order 2-20 MPa is the one
+    usually quoted from it -- the paper itself could not be retrieved through this session's search tools).
 [3] Bair S., Winer W. O., "A rheological model for elastohydrodynamic contacts based on primary
     laboratory data", J. Lubr. Technol. 101 (1979) 258-265 (limiting shear stress tau_L = Lambda p).
     The cap of the Eyring stress at tau_L is the plain minimum in [5] Eq. (7); here a smooth 4-norm
