@@ -837,10 +837,15 @@ def _check_physical(case: Case, source: str) -> None:
             raise CaseError(source, "lubricant.oil", f"unknown oil {oil!r}{hint} (known: {', '.join(traction.OILS)}; "
                             f"bundled lubricants: {', '.join(bundled_lubricants())}; or a lubricant file path ending in .toml)")
         law = case.lubricant.traction_law
-        if law not in traction.KNOWN_LAWS[oil]:
+        d = case.lubricant.definition
+        if law == traction.USER_LAW:
+            if d is None or d.coefficients is None:
+                raise CaseError(source, "lubricant.traction_law", "law 'user' needs a lubricant file with traction.model = "
+                                "\"coefficients\" or \"table\" (docs/traction.md, \"Lubricant files\")")
+        elif law not in traction.KNOWN_LAWS[oil]:
             raise CaseError(source, "lubricant.traction_law",
                             f"unknown traction law {law!r} for oil {oil} (known: {', '.join(traction.KNOWN_LAWS[oil])})")
-        if case.system == "angular_contact" and case.lubricant.temperature <= 273.15:
+        if case.system == "angular_contact" and case.lubricant.temperature <= 273.15 and traction.is_seed_law(law):
             raise CaseError(source, "lubricant.temperature",
                             "the seed 004 traction laws are fitted in degC and undefined at or below 0 degC")
 

@@ -151,6 +151,20 @@ def _oil(case):
     return lub["eta"], lub["alpha"], traction.law_id(case.lubricant.oil, case.lubricant.traction_law)
 
 
+def traction_values(case, alpha) -> dict:
+    """Kernel parameters of the oil-independent traction laws (docs/traction.md, "Physical model"):
+    tau0, Lambda, G of the physical model at the case temperature (the lubricant file's, else the defaults of
+    :class:`hsbearing.models.traction.eyring.EyringParameters` with the oil's alpha) and c_A .. c_D of the
+    "user" law (the lubricant file's coefficients; zeros when the case uses another law)."""
+    from hsbearing.models.traction import eyring
+
+    d = getattr(case.lubricant, "definition", None)
+    params = getattr(d, "eyring", None) or eyring.EyringParameters()
+    tau0, Lam, G = params.at(case.lubricant.temperature, alpha)
+    A, B, C, D = getattr(d, "coefficients", None) or (0.0, 0.0, 0.0, 0.0)
+    return dict(tau0=tau0, Lambda=Lam, G=G, c_A=A, c_B=B, c_C=C, c_D=D)
+
+
 def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rolling: bool = True,
                 drag: bool = True, initial: str = "quasistatic", **options) -> DynamicModel:
     """Build the compiled dynamic model of ``case``.
@@ -227,6 +241,7 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
         # lubricant and traction law
         eta_in=eta, alpha=alpha, eta_film=eta,
         law_id=law, T_K=case.lubricant.temperature, U_eps=opt["rolling_eps"], s_eps=opt["slip_eps"],
+        **traction_values(case, alpha),
         # pocket
         c_p=g.pocket_clearance, K_c=float(cc.K), h_min=opt["pocket_film_min"],
         mu_c=case.friction.cage_coefficient, v0_c=opt["pocket_v0"],

@@ -63,7 +63,21 @@ ALPHA_ESTIMATES = ("so_klaus_1980",)
 KEYS = ("name", "class", "description", "source", "density", "density_temperature",
         "density_temperature_coefficient", "viscosity", "viscosity_index", "pressure_viscosity_coefficient",
         "thermal_conductivity", "traction")
-TRACTION_KEYS = ("oil", "law")
+#: ``traction.model``: the registered curve fits (oil + law), the physical model, the seed form with user
+#: coefficients, a measured mu(S) table (fitted by the seed form).  docs/traction.md, "Lubricant files".
+TRACTION_MODELS = ("zhang2016", "eyring", "coefficients", "table")
+TRACTION_KEYS_BY_MODEL = {
+    "zhang2016": ("model", "oil", "law"),
+    "eyring": ("model", "oil", "limiting_shear_coefficient", "eyring_stress", "shear_modulus", "reference_temperature",
+               "limiting_shear_temperature_coefficient", "eyring_stress_temperature_coefficient"),
+    "coefficients": ("model", "oil", "coefficients", "temperature", "load", "speed"),
+    "table": ("model", "oil", "slide_roll_ratio", "mu", "temperature", "load", "speed"),
+}
+TRACTION_KEYS = tuple(dict.fromkeys(k for keys in TRACTION_KEYS_BY_MODEL.values() for k in keys))
+#: A measured table must be followed by its fitted seed form within max(TABLE_FIT_ABS, TABLE_FIT_REL * max mu).
+TABLE_FIT_ABS, TABLE_FIT_REL = 0.002, 0.1
+#: |T_case - T_stated| beyond which ``hsbearing check`` warns that user traction data is used outside its conditions [K].
+CONDITIONS_WARN_DT = 10.0
 
 WALTHER_OFFSET = 0.7  # [mm^2/s], ASTM D341 [1]
 T40, T100 = 313.15, 373.15
@@ -106,6 +120,12 @@ class LubricantDefinition:
     alpha_points: tuple | None = None  #: ((T [K], alpha [1/Pa]), ...), linear in T, held at the ends
     alpha_estimate: str | None = None  #: name of the correlation (ALPHA_ESTIMATES) when estimated
     conductivity: float | None = None  #: thermal conductivity [W/(m K)]
+    traction_model: str = "zhang2016"  #: one of TRACTION_MODELS
+    eyring: object = None  #: models.traction.eyring.EyringParameters (model "eyring")
+    coefficients: tuple | None = None  #: (A, B, C, D), S a fraction (models "coefficients" and "table")
+    traction_table: tuple | None = None  #: ((S...), (mu...)) as given (model "table")
+    traction_conditions: dict | None = None  #: stated conditions {"T": K, "W": N, "U": m/s} (None entries: not stated)
+    table_fit_deviation: float | None = None  #: largest |fit - table| [-] (model "table")
     viscosity_index: float | None = None  #: VI as stated by the source (reported, not used)
     text: str = field(default="", repr=False)  #: the file's TOML text
 
@@ -376,26 +396,51 @@ def loads_lubricant(text: str, source: str = "<lubricant>", *, default_name: str
     # --- traction
     tr = raw.get("traction")
     if tr is None:
-        raise CaseError(src, "traction", "missing required table [traction] with oil = one of "
-                                         f"{', '.join(traction.OILS)} (whose registered laws the oil uses) and law")
+        raise CaseError(src, "traction", "missing required table [traction]: model = one of "
+                                         f"{', '.join(TRACTION_MODELS)} (zhang2016: with oil = one of {', '.join(traction.OILS)} "
+                                         "whose registered laws the oil uses, and law)")
     if not isinstance(tr, dict):
         raise CaseError(src, "traction", f"expected a table [traction], got {tr!r}")
+    model = tr.get("model", "zhang2016")
+    if model not in TRACTION_MODELS:
+        close = difflib.get_close_matches(str(model), TRACTION_MODELS, n=1)
+        hint = f"; did you mean {close[0]!r}?" if close else ""
+        raise CaseError(src, "traction.model", f"unknown traction model {model!r}{hint} (known: {', '.join(TRACTION_MODELS)})")
+    allowed = TRACTION_KEYS_BY_MODEL[model]
     for k in tr:
-        if k not in TRACTION_KEYS:
-            close = difflib.get_close_matches(k, TRACTION_KEYS, n=1)
+        if k not in allowed:
+            close = difflib.get_close_matches(k, allowed, n=1)
             hint = f"; did you mean 'traction.{close[0]}'?" if close else ""
-            raise CaseError(src, f"traction.{k}", f"unknown key{hint} (known: {', '.join(TRACTION_KEYS)})")
+            other = [m for m, keys in TRACTION_KEYS_BY_MODEL.items() if k in keys]
+            why = f" (a key of model {' / '.join(other)})" if other else ""
+            raise CaseError(src, f"traction.{k}", f"not a key of traction model {model!r}{why}{hint} "
+                                                  f"(known: {', '.join(allowed)})")
     toil = tr.get("oil")
-    if toil is None:
+    if toil is None and model == "zhang2016":
         raise CaseError(src, "traction.oil", f"missing required key (one of {', '.join(traction.OILS)}: the registered "
-                                             "oil whose traction laws this oil uses; no physical traction model yet)")
-    toil = str(toil)
+                                             "oil whose traction laws this oil uses; or traction.model = \"eyring\", "
+                                             "the physical model)")
+    toil = str(toil) if toil is not None else "4109"
     if toil not in traction.OILS:
         raise CaseError(src, "traction.oil", f"unknown registered oil {toil!r} (known: {', '.join(traction.OILS)})")
     law = tr.get("law", "default")
-    if not isinstance(law, str) or law not in traction.KNOWN_LAWS[toil]:
-        raise CaseError(src, "traction.law", f"unknown traction law {law!r} for oil {toil} "
-                                             f"(known: {', '.join(traction.KNOWN_LAWS[toil])})")
+    eyring_params = coefficients = table = conditions = None
+    fit_dev = None
+    if model == "zhang2016":
+        seed = [x for x in traction.KNOWN_LAWS[toil] if x != traction.EYRING_LAW]
+        if not isinstance(law, str) or law not in seed:
+            raise CaseError(src, "traction.law", f"unknown traction law {law!r} for oil {toil} (known: {', '.join(seed)}; "
+                                                 "the physical model is traction.model = \"eyring\")")
+    elif model == "eyring":
+        law = traction.EYRING_LAW
+        eyring_params = _eyring_parameters(tr, src)
+    else:
+        law = traction.USER_LAW
+        conditions = _traction_conditions(tr, src, model)
+        if model == "coefficients":
+            coefficients = _user_coefficients(tr, src)
+        else:
+            table, coefficients, fit_dev = _traction_table(tr, src)
 
     d = LubricantDefinition(
         name=name, oil_class=oil_class, path=source, viscosity_points=tuple((T, v) for T, v, _ in parsed),
@@ -403,6 +448,8 @@ def loads_lubricant(text: str, source: str = "<lubricant>", *, default_name: str
         source=text_key("source"), density_ref=density_ref, density_temperature=density_T,
         density_coefficient=density_k, alpha_value=alpha_value, alpha_points=alpha_points,
         alpha_estimate=alpha_estimate, conductivity=K, viscosity_index=None if vi is None else float(vi), text=text,
+        traction_model=model, eyring=eyring_params, coefficients=coefficients, traction_table=table,
+        traction_conditions=conditions, table_fit_deviation=fit_dev,
     )
     # a Walther line must come out of the points (falling viscosity, finite coefficients)
     try:
@@ -412,6 +459,137 @@ def loads_lubricant(text: str, source: str = "<lubricant>", *, default_name: str
     if not (math.isfinite(A) and math.isfinite(B) and B > 0):
         raise CaseError(src, "viscosity", "no ASTM D341 (Walther) line through these points")
     return d
+
+
+def _number(v, src, key):
+    if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+        raise CaseError(src, key, f"expected a plain number, got {v!r}")
+    return float(v)
+
+
+def _eyring_parameters(tr, src):
+    """traction.model = "eyring": the rheological constants (defaults: models.traction.eyring)."""
+    from hsbearing.models.traction import eyring
+
+    kw = {}
+    if "limiting_shear_coefficient" in tr:
+        lam = _number(tr["limiting_shear_coefficient"], src, "traction.limiting_shear_coefficient")
+        if not 0.01 <= lam <= 0.15:
+            raise CaseError(src, "traction.limiting_shear_coefficient",
+                            f"{lam:g} is outside 0.01-0.15 (measured tau_L/p of oils: 0.035-0.088)")
+        kw["Lambda"] = lam
+    if "eyring_stress" in tr:
+        tau0 = _q(tr["eyring_stress"], "pressure", src, "traction.eyring_stress")
+        if not 0.1e6 <= tau0 <= 100e6:
+            raise CaseError(src, "traction.eyring_stress", f"{tau0 / 1e6:g} MPa is outside 0.1-100 MPa "
+                                                           "(Eyring stresses of EHL oils: about 2-20 MPa)")
+        kw["tau0"] = tau0
+    if "shear_modulus" in tr:
+        G = _q(tr["shear_modulus"], "pressure", src, "traction.shear_modulus")
+        if not 1e6 <= G <= 1e11:
+            raise CaseError(src, "traction.shear_modulus", f"{G:.3g} Pa is outside 1 MPa-100 GPa "
+                                                           "(EHL films: about 0.1-1 GPa)")
+        kw["G"] = G
+    if "reference_temperature" in tr:
+        kw["T_ref"] = _q(tr["reference_temperature"], "temperature", src, "traction.reference_temperature")
+    for key, field_ in (("limiting_shear_temperature_coefficient", "k_Lambda"),
+                        ("eyring_stress_temperature_coefficient", "k_tau0")):
+        if key in tr:
+            k = _q(tr[key], "temperature_coefficient", src, f"traction.{key}", positive=False)
+            if not abs(k) <= 0.02:
+                raise CaseError(src, f"traction.{key}", f"{k:g} 1/K is outside -0.02 to 0.02 1/K")
+            kw[field_] = k
+    if "eyring_stress_temperature_coefficient" in tr and "eyring_stress" not in tr:
+        raise CaseError(src, "traction.eyring_stress_temperature_coefficient",
+                        "needs traction.eyring_stress (without it tau_0 = 2 Lambda / alpha follows alpha(T))")
+    return eyring.EyringParameters(**kw)
+
+
+def _traction_conditions(tr, src, model):
+    """Stated conditions of user traction data: temperature (required), load and speed (optional, reported)."""
+    if "temperature" not in tr:
+        raise CaseError(src, "traction.temperature", f"missing required key: the temperature at which the {model} "
+                                                     "were measured or fitted (e.g. \"80 degC\")")
+    out = {"T": _q(tr["temperature"], "temperature", src, "traction.temperature"), "W": None, "U": None}
+    if "load" in tr:
+        out["W"] = _q(tr["load"], "force", src, "traction.load")
+    if "speed" in tr:
+        out["U"] = _q(tr["speed"], "velocity", src, "traction.speed")
+    return out
+
+
+def _check_curve(A, B, C, D, src, key):
+    """A user curve must be a traction curve: bounded, 0 <= mu < 0.5 for 0 < S <= 1."""
+    from hsbearing.models.traction import zhang2016
+
+    S = np.logspace(-5, 0, 200)
+    mu = zhang2016.traction_coefficient(A, B, C, D, S)
+    if not np.all(np.isfinite(mu)) or mu.min() < -1e-3 or mu.max() >= 0.5:
+        raise CaseError(src, key, f"mu = (A + B S) exp(-C S) + D with these values is not a traction curve: it reaches "
+                                  f"{mu.min():.3g} to {mu.max():.3g} for S in 1e-5..1 (S a fraction; expected 0 to 0.5)")
+
+
+def _user_coefficients(tr, src):
+    key = "traction.coefficients"
+    if "coefficients" not in tr:
+        raise CaseError(src, key, "missing required key: [A, B, C, D] of mu = (A + B S) exp(-C S) + D, S a fraction")
+    c = tr["coefficients"]
+    if not (isinstance(c, list) and len(c) == 4):
+        raise CaseError(src, key, f"expected [A, B, C, D] (four numbers), got {c!r}")
+    A, B, C, D = (_number(v, src, key) for v in c)
+    if not C > 0.0:
+        raise CaseError(src, key, f"C must be positive (mu grows without bound otherwise), got {C:g}")
+    _check_curve(A, B, C, D, src, key)
+    return (A, B, C, D)
+
+
+def fit_seed_form(S, mu):
+    """Least-squares (B, C, D) of mu = D (1 - e^(-C S)) + B S e^(-C S) (the seed form with A = -D: mu(0) = 0)
+    through a measured table; returns ((A, B, C, D), largest |fit - mu|)."""
+    from scipy.optimize import least_squares
+
+    S, mu = np.asarray(S, dtype=float), np.asarray(mu, dtype=float)
+
+    def f(x):
+        B, lC, D = x
+        e = np.exp(-np.exp(lC) * S)
+        return D * (1.0 - e) + B * S * e - mu
+
+    best = None
+    for S_half in S:  # starts: the knee at each tabulated slip
+        x0 = (0.0, math.log(math.log(2.0) / S_half), float(mu.max()))
+        r = least_squares(f, x0, method="lm", max_nfev=2000)
+        if best is None or r.cost < best.cost:
+            best = r
+    B, lC, D = best.x
+    return (-D, B, math.exp(lC), D), float(np.max(np.abs(f(best.x))))
+
+
+def _traction_table(tr, src):
+    for k in ("slide_roll_ratio", "mu"):
+        if k not in tr:
+            raise CaseError(src, f"traction.{k}", "missing required key: a measured table gives slide_roll_ratio "
+                                                  "(fractions, increasing) and mu (same length, at least 4 points)")
+    S = tr["slide_roll_ratio"]
+    mu = tr["mu"]
+    if not isinstance(S, list) or len(S) < 4:
+        raise CaseError(src, "traction.slide_roll_ratio", f"expected a list of at least 4 slide-roll ratios, got {S!r}")
+    if not isinstance(mu, list) or len(mu) != len(S):
+        raise CaseError(src, "traction.mu", f"expected a list of {len(S)} traction coefficients (one per slide_roll_ratio)")
+    S = [_number(v, src, "traction.slide_roll_ratio") for v in S]
+    mu = [_number(v, src, "traction.mu") for v in mu]
+    if not (S[0] > 0 and all(b > a for a, b in zip(S, S[1:])) and S[-1] <= 1.0):
+        raise CaseError(src, "traction.slide_roll_ratio", "must increase strictly within (0, 1] (fractions, not percent)")
+    if not all(0.0 <= m < 0.5 for m in mu):
+        raise CaseError(src, "traction.mu", "traction coefficients must lie in 0 to 0.5")
+    coefs, dev = fit_seed_form(S, mu)
+    tol = max(TABLE_FIT_ABS, TABLE_FIT_REL * max(mu))
+    if not dev <= tol:
+        raise CaseError(src, "traction.mu", f"the seed form (A + B S) exp(-C S) + D with A = -D follows this table only "
+                                            f"within {dev:.3g} (tolerance {tol:.3g}): give its coefficients "
+                                            "(traction.model = \"coefficients\") or use traction.model = \"eyring\"")
+    _check_curve(*coefs, src, "traction.mu")
+    return (tuple(S), tuple(mu)), coefs, dev
 
 
 # ----------------------------------------------------------------------------
@@ -433,7 +611,7 @@ def describe(case) -> list[str]:
         lines.append(f"lubricant: oil {lub.oil} (built-in), traction law {lub.traction_law}")
     else:
         lines.append(f"lubricant: {d.name} ({d.oil_class or 'class not given'}) from {d.path}; "
-                     f"traction: laws of oil {d.traction_oil}, law {d.traction_law}")
+                     f"traction: {traction_summary(d)}")
     lines.append(f"  at {T - 273.15:.4g} degC: eta = {lp['eta'] * 1e3:.4g} mPa s, nu = {lp['eta'] / lub.density * 1e6:.4g} mm^2/s, "
                  f"rho = {lub.density:.4g} kg/m^3, alpha = {lp['alpha'] * 1e9:.4g} GPa^-1")
     if d is not None and d.density_ref is None and (case.raw or {}).get("lubricant", {}).get("density") is None:
@@ -441,4 +619,34 @@ def describe(case) -> list[str]:
     if d is not None and d.alpha_estimated and lub.pressure_viscosity_coefficient is not None \
             and "pressure_viscosity_coefficient" not in (case.raw or {}).get("lubricant", {}):
         lines.append(f"  warning: alpha of {d.name} is ESTIMATED ({d.alpha_estimate} correlation), not measured")
+    if d is not None and d.traction_conditions is not None and lub.traction_law == "user":
+        lines.extend(condition_warnings(d, T))
     return lines
+
+
+def traction_summary(d) -> str:
+    """One phrase naming a lubricant definition's traction model."""
+    if d.traction_model == "zhang2016":
+        return f"laws of oil {d.traction_oil}, law {d.traction_law}"
+    if d.traction_model == "eyring":
+        e = d.eyring
+        tau = "2 Lambda/alpha" if e.tau0 is None else f"{e.tau0 / 1e6:.3g} MPa"
+        return f"physical model (eyring): Lambda = {e.Lambda:.3g}, tau0 = {tau}, G = {e.G / 1e9:.3g} GPa"
+    A, B, C, D = d.coefficients
+    src = "fitted to a measured table" if d.traction_model == "table" else "given"
+    return f"seed form with user coefficients ({src}): A = {A:.4g}, B = {B:.4g}, C = {C:.4g}, D = {D:.4g}"
+
+
+def condition_warnings(d, T) -> list[str]:
+    """The user traction data is used as given (no scaling): warn outside its stated temperature; report load/speed."""
+    c = d.traction_conditions
+    out = []
+    if abs(T - c["T"]) > CONDITIONS_WARN_DT:
+        out.append(f"  warning: the traction {'table' if d.traction_model == 'table' else 'coefficients'} of {d.name} "
+                   f"were stated at {c['T'] - 273.15:.4g} degC and are used as given at {T - 273.15:.4g} degC "
+                   "(no temperature scaling; docs/traction.md)")
+    if c["W"] is not None or c["U"] is not None:
+        w = f"{c['W']:.4g} N" if c["W"] is not None else "load not stated"
+        u = f"{c['U']:.4g} m/s" if c["U"] is not None else "speed not stated"
+        out.append(f"  note: user traction stated at {w}, {u}; every contact uses it unscaled")
+    return out

@@ -46,7 +46,7 @@ def library_rows() -> list[dict]:
             "name": stem, "title": d.name, "class": d.oil_class, "nu40": nu40, "nu100": nu100,
             "eta40": None if (kin or rho_known) else d.dynamic_viscosity(T40, 870.0) * 1e3,
             "vi": d.viscosity_index, "rho15": d.density(288.15) if rho_known else None, "alpha40": alpha,
-            "traction": f"{d.traction_oil}/{d.traction_law}",
+            "traction": f"{d.traction_oil}/{d.traction_law}" if d.traction_model == "zhang2016" else d.traction_model,
         })
     return rows
 
@@ -103,13 +103,55 @@ def format_at_case(case, d) -> list[str]:
              f"  eta = {d['eta'] * 1e3:.4g} mPa s, nu = {d['nu'] * 1e6:.4g} mm^2/s, rho = {d['rho']:.4g} kg/m^3"
              + ("" if dfn.density_ref is not None else " (the case's lubricant.density)"),
              f"  alpha = {d['alpha'] * 1e9:.4g} GPa^-1" + (f"  (ESTIMATED, {dfn.alpha_estimate})" if d["alpha_estimated"] else ""),
-             f"  traction: law {lub.traction_law} of oil {lub.oil}"]
+             f"  traction: {lubmod.traction_summary(dfn)}"]
     for side in ("inner", "outer"):
         s = d[side]
         lines.append(f"  {side} contact (most loaded ball {s['ball']}): Q = {s['Q']:.4g} N, p_max = {s['p'] * 1e-9:.3g} GPa, "
                      f"h_c = {s['hc'] * 1e9:.4g} nm, h_min = {s['hmin'] * 1e9:.4g} nm, lambda = {s['lam']:.3g} "
                      f"(lowest over the balls {s['lam_min']:.3g})")
     return lines
+
+
+def contact_conditions(case, qs, side):
+    """(Q [N], U [m/s], Rx [m], Ry [m]) of the most loaded ball's ``side`` ("inner"/"outer") contact of the
+    quasi-static solution ``qs`` (rolling speed of the ball centre's orbit against the race, no spin)."""
+    from hsbearing.models.geometry import derive
+
+    g = derive(case)
+    D = g.D
+    wm, rb = qs["ball_orbit_speed"].values, qs["ball_center_radial"].values
+    Qs = qs[f"{side}_contact_load"].values
+    i = int(np.nanargmax(Qs))
+    a = float(qs[f"{side}_contact_angle"].values[i])
+    if side == "inner":
+        U = abs(case.operating.inner_speed - wm[i]) * (rb[i] - 0.5 * D * np.cos(a))
+        Rx = 0.5 * D * (1.0 - D * np.cos(a) / g.dm)
+        f = g.fi
+    else:
+        U = abs(case.operating.outer_speed - wm[i]) * (rb[i] + 0.5 * D * np.cos(a))
+        Rx = 0.5 * D * (1.0 + D * np.cos(a) / g.dm)
+        f = g.fo
+    Ry = f * D / (2.0 * f - 1.0)  # ball against the groove of radius f D
+    return float(Qs[i]), float(U), float(Rx), float(Ry)
+
+
+def contact_traction(case, S, Q, U, Rx, Ry):
+    """mu(S) of the case's traction law at one ball/race contact (load Q [N], rolling speed U [m/s], radii
+    Rx, Ry [m]): the registered seed laws, the physical model (with the contact's Hertz ellipse, the oil's
+    eta and alpha at the case temperature and the case's rheological constants) or the user coefficients."""
+    from hsbearing.dynamics import traction_values
+    from hsbearing.models import ehl, hertz, traction
+
+    lub = case.lubricant
+    mb, mr = case.materials.ball, case.materials.races
+    Ep = float(hertz.reduced_modulus(mb.elastic_modulus, mb.poisson_ratio, mr.elastic_modulus, mr.poisson_ratio))
+    lp = ehl.lubricant_parameters(case)
+    tv = traction_values(case, lp["alpha"])
+    pc = hertz.point_contact(Rx, Ry, Q, mb.elastic_modulus, mb.poisson_ratio, mr.elastic_modulus, mr.poisson_ratio)
+    return traction.contact_mu(lub.oil, S, Q, U, lub.temperature, Ep, Rx, Ry, law=lub.traction_law,
+                               k=float(pc.ellipticity), a=float(pc.a), eta=lp["eta"], alpha=lp["alpha"],
+                               eyring=(tv["tau0"], tv["Lambda"], tv["G"]),
+                               coefficients=(tv["c_A"], tv["c_B"], tv["c_C"], tv["c_D"]))
 
 
 def plot_traction(case, qs, path) -> Path:
@@ -119,35 +161,23 @@ def plot_traction(case, qs, path) -> Path:
     matplotlib.use("Agg", force=False)
     from matplotlib.figure import Figure
 
-    from hsbearing.models import hertz, traction
-    from hsbearing.models.geometry import derive
+    from hsbearing.models import traction
     from hsbearing.plotting.common import save_figure
 
     lub = case.lubricant
-    mb, mr = case.materials.ball, case.materials.races
-    Ep = float(hertz.reduced_modulus(mb.elastic_modulus, mb.poisson_ratio, mr.elastic_modulus, mr.poisson_ratio))
-    g = derive(case)
-    D = g.D
-    wm, rb = qs["ball_orbit_speed"].values, qs["ball_center_radial"].values
     S = np.logspace(-5, np.log10(0.2), 400)
     fig = Figure(figsize=(6.4, 4.2))
     ax = fig.add_subplot(111)
     for side, color in (("inner", "tab:blue"), ("outer", "tab:red")):
-        Q = qs[f"{side}_contact_load"].values
-        i = int(np.nanargmax(Q))
-        a = float(qs[f"{side}_contact_angle"].values[i])
-        if side == "inner":
-            U = abs(case.operating.inner_speed - wm[i]) * (rb[i] - 0.5 * D * np.cos(a))
-            Rx = 0.5 * D * (1.0 - D * np.cos(a) / g.dm)
-        else:
-            U = abs(case.operating.outer_speed - wm[i]) * (rb[i] + 0.5 * D * np.cos(a))
-            Rx = 0.5 * D * (1.0 + D * np.cos(a) / g.dm)
-        mu = traction.contact_mu(lub.oil, S, Q[i], U, lub.temperature, Ep, Rx, law=lub.traction_law)
-        ax.semilogx(S * 100.0, mu, color=color, label=f"{side}: Q = {Q[i]:.0f} N, U = {U:.1f} m/s")
+        Q, U, Rx, Ry = contact_conditions(case, qs, side)
+        mu = contact_traction(case, S, Q, U, Rx, Ry)
+        ax.semilogx(S * 100.0, mu, color=color, label=f"{side}: Q = {Q:.0f} N, U = {U:.1f} m/s")
     ax.set_xlabel("slide-roll ratio S [%]")
     ax.set_ylabel("traction coefficient mu [-]")
     name = lub.definition.name if lub.definition is not None else lub.oil
-    ax.set_title(f"{name}: law {traction.law_name(lub.oil, lub.traction_law)} of oil {lub.oil}, "
+    lawtxt = (f"law {traction.law_name(lub.oil, lub.traction_law)} of oil {lub.oil}" if traction.is_seed_law(lub.traction_law)
+              else f"law {lub.traction_law}")
+    ax.set_title(f"{name}: {lawtxt}, "
                  f"{lub.temperature - 273.15:.0f} degC, case {case.name}", fontsize=9)
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8)

@@ -23,7 +23,9 @@ import pytest
 import hsbearing
 from hsbearing.models import kernel_io as kio
 
-KERNEL_SRC = (Path(kio.__file__).parent / "kernel.py").read_text()
+# the kernel and the traction-law kernels it hands its parameter record to (traction_coefficients_nb)
+KERNEL_SRC = (Path(kio.__file__).parent / "kernel.py").read_text() + \
+    (Path(kio.__file__).parent / "traction" / "_kernels.py").read_text()
 
 
 def test_every_declared_parameter_is_read_and_every_read_one_declared():

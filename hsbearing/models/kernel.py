@@ -49,7 +49,7 @@ from hsbearing.models.kernel_io import (  # noqa: F401  (AUX_INDEX, GAUX_INDEX, 
 from hsbearing.models.pocket import pocket_wrench
 from hsbearing.models.power import couple_power, elastic_energy_hertz, normal_damping_power, sliding_power
 from hsbearing.models.ring import inner_groove_centre, ring_equations_of_motion, tilt_generalised_moments, tilt_rotation
-from hsbearing.models.traction._kernels import coefficients_nb, mu_nb
+from hsbearing.models.traction._kernels import traction_coefficients_nb, traction_mu_nb
 
 # Parameters: the record P (one-element structured array, P[0] read as ``p.<group>.<name>``) and the
 # output columns AUX / GAUX are declared, with units, in hsbearing.models.kernel_io.
@@ -123,8 +123,8 @@ def _race_contact(p, qu, qw, Q, nx, nr, nt, x, r, vx, vr, thd, wx, wy, wz,
     # spin-to-roll ratio (relative angular velocity along the normal / rolling speed)
     spin_roll = -((wx - Wx) * nx + (wy - Wr) * nr + (wz - Wt) * nt) * D2 / U
     if p.switches.friction:
-        A, B, C, Dd = coefficients_nb(p.traction.law_id, Q, U, p.traction.T_K, p.race.Ep, Rx)
         a = acoef * np.cbrt(Q)  # semi-major axis, constant ellipticity
+        tc = traction_coefficients_nb(p, Q, U, Rx, ke, a)  # per-contact coefficients of the law (traction/_kernels)
         iU = 1.0 / U
         seps = p.traction.s_eps
         # symmetric nodes (qu[n-1-k] = -qu[k], Gauss-Legendre): phi of the mirror node is exactly -phi, so its
@@ -157,7 +157,7 @@ def _race_contact(p, qu, qw, Q, nx, nr, nt, x, r, vx, vr, thd, wx, wy, wz,
                 s1 = dvx * t1x + dvr * t1r + dvt * t1t
                 s2 = dvx * ux + dvr * ur + dvt * ut
                 sreg = math.sqrt(s1 * s1 + s2 * s2 + seps * seps)  # regularised slip speed [m/s]
-                mu = mu_nb(A, B, C, Dd, sreg * iU)  # S = sreg / U
+                mu = traction_mu_nb(p.traction.law_id, tc, sreg * iU, qu[k])  # S = sreg / U, strip at y = a u_k
                 q = Q * qw[k]
                 f = -q * mu / sreg  # traction opposes the local slip  [5] of models.ball
                 f1 = f * s1

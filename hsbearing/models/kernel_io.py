@@ -69,6 +69,13 @@ PARAMETERS = (
     ("traction", "T_K", _F, "K", "lubricant temperature of the traction law"),
     ("traction", "U_eps", _F, "m/s", "regularisation of the rolling speed |U|"),
     ("traction", "s_eps", _F, "m/s", "regularisation of the slip speed in the traction direction"),
+    ("traction", "tau0", _F, "Pa", "Eyring stress of the physical traction model (law eyring; models.traction.eyring)"),
+    ("traction", "Lambda", _F, "1", "limiting-shear-stress coefficient tau_L / p of the physical traction model"),
+    ("traction", "G", _F, "Pa", "elastic shear modulus of the film in the physical traction model"),
+    ("traction", "c_A", _F, "1", "user coefficient A of mu = (A + B S) exp(-C S) + D (law user; S a fraction)"),
+    ("traction", "c_B", _F, "1", "user coefficient B of mu = (A + B S) exp(-C S) + D"),
+    ("traction", "c_C", _F, "1", "user coefficient C of mu = (A + B S) exp(-C S) + D"),
+    ("traction", "c_D", _F, "1", "user coefficient D of mu = (A + B S) exp(-C S) + D"),
     # ---- ball/cage pocket (models.pocket)
     ("pocket", "c_p", _F, "m", "pocket clearance (pocket radius - ball radius)"),
     ("pocket", "K_c", _F, "N/m^1.5", "Hertz load-deflection constant ball/pocket"),

@@ -38,9 +38,21 @@ OILS: dict[str, OilProperties] = {
 
 from hsbearing.models.traction import zhang2016  # noqa: E402
 
-#: law names accepted by :func:`get` for each oil ("default" resolves per oil)
+#: The physical model (:mod:`hsbearing.models.traction.eyring`): a law of every oil, fed by the oil's own
+#: viscosity and alpha (its rheological constants: kernel parameters traction.tau0, Lambda, G).
+EYRING_LAW = "eyring"
+#: The seed form mu = (A + B S) e^(-C S) + D with constant user coefficients (a lubricant file's
+#: ``traction.model = "coefficients"`` or a fitted ``"table"``; kernel parameters traction.c_A .. c_D).
+USER_LAW = "user"
+#: Kernel law ids of the two oil-independent laws (the seed laws are the rows 0, 1, ... of zhang2016.PARAMS);
+#: the same values as ``_kernels.EYRING_LAW_ID`` / ``COEFFICIENTS_LAW_ID`` (a test checks).
+EYRING_LAW_ID = -1
+COEFFICIENTS_LAW_ID = -2
+
+#: law names accepted by :func:`get` for each oil ("default" resolves per oil); "user" is accepted only
+#: with a lubricant file that gives the coefficients (hsbearing.case checks)
 KNOWN_LAWS: dict[str, tuple[str, ...]] = {
-    oil: tuple(["default"] + [law for (o, law) in zhang2016.LAWS if o == oil]) for oil in OILS
+    oil: tuple(["default"] + [law for (o, law) in zhang2016.LAWS if o == oil] + [EYRING_LAW]) for oil in OILS
 }
 
 
@@ -48,6 +60,8 @@ def _resolve(oil, law: str = "default") -> tuple[str, str]:
     oil = str(oil)
     if oil not in OILS:
         raise ValueError(f"unknown oil {oil!r} (known: {', '.join(OILS)})")
+    if law in (EYRING_LAW, USER_LAW):
+        return oil, law
     name = zhang2016.DEFAULT_LAW[oil] if law == "default" else law
     if (oil, name) not in zhang2016.LAWS:
         raise ValueError(f"unknown traction law {law!r} for oil {oil} (known: {', '.join(KNOWN_LAWS[oil])})")
@@ -55,8 +69,19 @@ def _resolve(oil, law: str = "default") -> tuple[str, str]:
 
 
 def law_id(oil, law: str = "default") -> int:
-    """Integer id of a law for the numba kernels ``_kernels.coefficients_nb(law_id, ...)``."""
-    return zhang2016.LAWS[_resolve(oil, law)]
+    """Integer id of a law for the numba kernels ``_kernels.traction_coefficients_nb`` (seed laws: the row of
+    zhang2016.PARAMS; :data:`EYRING_LAW_ID`, :data:`COEFFICIENTS_LAW_ID` for the two oil-independent laws)."""
+    oil, name = _resolve(oil, law)
+    if name == EYRING_LAW:
+        return EYRING_LAW_ID
+    if name == USER_LAW:
+        return COEFFICIENTS_LAW_ID
+    return zhang2016.LAWS[(oil, name)]
+
+
+def is_seed_law(law: str) -> bool:
+    """True for the registered curve-fit laws of Zhang et al. 2016 (False: "eyring", "user")."""
+    return law not in (EYRING_LAW, USER_LAW)
 
 
 def law_name(oil, law: str = "default") -> str:
@@ -88,6 +113,9 @@ def get(oil, law: str = "default"):
     ValueError listing the known ones.
     """
     oil, name = _resolve(oil, law)
+    if not is_seed_law(name):
+        raise ValueError(f"law {name!r} needs the contact's geometry and oil data: use contact_mu(..., Ry/k, a, "
+                         "eta, alpha, ...) or models.traction.eyring")
     lid = zhang2016.LAWS[(oil, name)]
 
     def mu(S, W, U, T, E, R):
@@ -100,7 +128,8 @@ def get(oil, law: str = "default"):
     return mu
 
 
-def contact_mu(oil, S, Q, U, T, Ep, Rx, Ry=None, law: str = "default"):
+def contact_mu(oil, S, Q, U, T, Ep, Rx, Ry=None, law: str = "default", *, k=None, a=None, eta=None,
+               alpha=None, eyring=None, coefficients=None):
     """Traction coefficient of a ball/race contact from its physical quantities.
 
     Maps the contact onto the convention of the laws (E = E', R = Rx; see
@@ -117,10 +146,28 @@ def contact_mu(oil, S, Q, U, T, Ep, Rx, Ry=None, law: str = "default"):
     Rx, Ry : effective radii in the rolling / transverse directions [m];
         Ry is accepted for a uniform contact interface and not used by the
         Zhang et al. 2016 laws (their R is Rx).
-    law : as in :func:`get`
+    law : as in :func:`get`, or "eyring" (the physical model) or "user" (constant coefficients)
+    k, a : ellipticity a/b [-] and semi-major axis [m] of the contact ("eyring" only)
+    eta, alpha : inlet viscosity [Pa s] and pressure-viscosity coefficient [1/Pa] ("eyring" only)
+    eyring : (tau0 [Pa], Lambda [-], G [Pa]) at T ("eyring" only; default: eyring.EyringParameters().at(T, alpha))
+    coefficients : (A, B, C, D) of the "user" law (S a fraction)
 
     Returns
     -------
     mu [-] (sign of S)
     """
+    oil, name = _resolve(oil, law)
+    if name == USER_LAW:
+        if coefficients is None:
+            raise ValueError("law 'user' needs its coefficients (A, B, C, D)")
+        A, B, C, D = (float(c) for c in coefficients)
+        return zhang2016.traction_coefficient(A, B, C, D, S)
+    if name == EYRING_LAW:
+        from hsbearing.models.traction import eyring as ey
+
+        if k is None or a is None or eta is None or alpha is None:
+            raise ValueError("law 'eyring' needs k, a, eta and alpha of the contact")
+        tau0, Lam, G = eyring if eyring is not None else ey.EyringParameters().at(T, alpha)
+        return ey.contact_mu(S, float(Q), float(U), float(Ep), float(Rx), float(k), float(a), float(eta),
+                             float(alpha), tau0, Lam, G)
     return get(oil, law)(S, Q, U, T, Ep, Rx)

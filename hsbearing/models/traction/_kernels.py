@@ -13,6 +13,7 @@ import math
 import numba
 
 from hsbearing.compile_cache import check_compile_cache
+from hsbearing.models.traction.eyring import LOG_ASINH, MINOR_NODES
 from hsbearing.models.traction.zhang2016 import (
     LOAD_FACTOR_SHARPNESS,
     NOTCH_SHARPNESS,
@@ -24,7 +25,14 @@ from hsbearing.models.traction.zhang2016 import (
     W_FLOOR,
 )
 
-__all__ = ["coefficients_nb", "mu_nb"]
+__all__ = ["coefficients_nb", "mu_nb", "traction_coefficients_nb", "traction_mu_nb", "eyring_coefficients_nb",
+           "eyring_strip_mu_nb", "EYRING_LAW_ID", "COEFFICIENTS_LAW_ID"]
+
+#: Law ids of the oil-independent laws (the registered seed laws are rows 0, 1, ... of zhang2016.PARAMS):
+#: the physical model (models.traction.eyring) and the seed form with user coefficients (kernel parameters
+#: traction.c_A .. c_D).  Same values as hsbearing.models.traction.EYRING_LAW_ID / COEFFICIENTS_LAW_ID.
+EYRING_LAW_ID = -1
+COEFFICIENTS_LAW_ID = -2
 
 _P = PARAMS  # captured as a compile-time constant array
 
@@ -113,6 +121,85 @@ def mu_nb(A, B, C, D, S):
     else:
         th = math.tanh(x)
     return sg * (A * em1 + B * s * (1.0 + em1)) + mu0 * th
+
+
+_MN = MINOR_NODES  # captured as a compile-time constant array
+_LN2 = math.log(2.0)
+
+
+@numba.njit(cache=True, nogil=True)
+def eyring_coefficients_nb(W, U, Ep, Rx, k, a, eta_in, alpha, tau0, Lam, G):
+    """Scalar numba twin of :func:`hsbearing.models.traction.eyring.contact_coefficients`:
+    (Lambda, tau_0/p_0, ln(eta_in U/(h tau_0)), alpha p_0, G_eff b/(h p_0)) [-]; floors W >= 1e-9 N, U >= 1e-6 m/s."""
+    W = max(W, W_FLOOR)
+    U = max(abs(U), U_FLOOR)
+    b = a / k
+    p0 = 1.5 * W / (math.pi * a * b)
+    Ub = eta_in * U / (Ep * Rx)
+    Wb = W / (Ep * Rx * Rx)
+    h = Rx * 2.69 * Ub**0.67 * (alpha * Ep) ** 0.53 * Wb**-0.067 * (1.0 - 0.61 * math.exp(-0.73 * k))  # Hamrock-Dowson
+    Ef = 4.0 * G * b / (math.pi * h * p0)  # elastic film slope
+    Cc = 2.0 * Rx / b  # Carter creep slope
+    Ge = G * Cc / (Ef + Cc)
+    return Lam, tau0 / p0, math.log(eta_in * U / (h * tau0)), alpha * p0, Ge * b / (h * p0)
+
+
+@numba.njit(cache=True, nogil=True)
+def eyring_strip_mu_nb(c, S, u):
+    """Scalar numba twin of :func:`hsbearing.models.traction.eyring.strip_mu` (odd in S) [-]."""
+    if S == 0.0:
+        return 0.0
+    Lam, r0, lv, cp, ce = c
+    s = abs(S)
+    su = math.sqrt(max(1.0 - u * u, 0.0))
+    lS = lv + math.log(s)
+    num = 0.0
+    den = 0.0
+    for j in range(_MN.shape[0]):
+        sn, cs, w = _MN[j, 0], _MN[j, 1], _MN[j, 2]
+        pi_ = su * cs
+        tL = Lam * pi_
+        lz = lS + cp * pi_
+        if lz > LOG_ASINH:
+            asn = lz + _LN2
+        else:
+            asn = math.asinh(math.exp(lz))
+        tv = r0 * asn
+        lo, hi = min(tv, tL), max(tv, tL)  # smooth minimum (tv^-4 + tL^-4)^(-1/4) (eyring.smooth_min)
+        r = lo / hi
+        r2 = r * r
+        tf = lo / math.sqrt(math.sqrt(1.0 + r2 * r2))
+        tel = ce * s * su * (1.0 + sn)
+        num += w * (-tf * math.expm1(-tel / tf))
+        den += w * pi_
+    mu = num / den
+    return mu if S > 0.0 else -mu
+
+
+@numba.njit(cache=True, nogil=True)
+def traction_coefficients_nb(p, W, U, Rx, k, a):
+    """Per-contact coefficients of the case's traction law (p: the kernel's parameter record, ``P[0]``).
+
+    Registered seed laws (law_id >= 0): (A, B, C, D, 0) of :func:`coefficients_nb` (unchanged); user
+    coefficients: (c_A, c_B, c_C, c_D, 0); the physical model: :func:`eyring_coefficients_nb`.
+    W normal load [N], U rolling speed [m/s], Rx [m], k = a/b [-], a semi-major axis [m].
+    """
+    lid = p.traction.law_id
+    if lid >= 0:
+        A, B, C, D = coefficients_nb(lid, W, U, p.traction.T_K, p.race.Ep, Rx)
+        return A, B, C, D, 0.0
+    if lid == COEFFICIENTS_LAW_ID:
+        return p.traction.c_A, p.traction.c_B, p.traction.c_C, p.traction.c_D, 0.0
+    return eyring_coefficients_nb(W, U, p.race.Ep, Rx, k, a, p.lubricant.eta_in, p.lubricant.alpha,
+                                  p.traction.tau0, p.traction.Lambda, p.traction.G)
+
+
+@numba.njit(cache=True, nogil=True)
+def traction_mu_nb(law_id, c, S, u):
+    """mu at slide-roll ratio S of the strip at u (y = a u) with the per-contact coefficients c [-] (odd in S)."""
+    if law_id == EYRING_LAW_ID:
+        return eyring_strip_mu_nb(c, S, u)
+    return mu_nb(c[0], c[1], c[2], c[3], S)
 
 
 # numba bakes callees and captured constants into its cache: key the cache on them (compile_cache.py)
