@@ -19,6 +19,8 @@ from pocket_reynolds_fd import solve_pocket_film
 
 from hsbearing.models import kernel_io as kio
 from hsbearing.models.pocket import (
+    PocketKinematics,
+    PocketParams,
     pocket_elastic_force,
     pocket_film_gap,
     pocket_film_wrench,
@@ -142,8 +144,9 @@ def test_station_count_converged():
 
 # ----------------------------------------------------------------------------- blend into Hertz
 def _normal_force(e, h_c=0.5e-6, K=1.35e9):
-    out = pocket_wrench(0.0, e, 0.0, 0, 0, 0, *W0, ETA, Rb, Rp, R_BORE, R_OUT, HDM, N_ST, h_c, K, 0.1, 0.01)
-    return -out[2]  # push back along -t
+    kin = PocketKinematics(ex=0.0, et=e, s0=0.0, vx=0.0, vr=0.0, vt=0.0, wx=W0[0], wr=W0[1], wt=W0[2])
+    prm = PocketParams(eta=ETA, Rb=Rb, Rp=Rp, R_bore=R_BORE, R_out=R_OUT, hdm=HDM, n_st=N_ST, h_c=h_c, K=K, mu=0.1, v0=0.01)
+    return -pocket_wrench(kin, prm).Ft  # push back along -t
 
 
 def test_blend_limits():

@@ -53,6 +53,7 @@ References
 from __future__ import annotations
 
 import math
+from collections import namedtuple
 
 import numpy as np
 from numba import njit
@@ -60,7 +61,44 @@ from numba import njit
 from hsbearing.compile_cache import check_compile_cache
 
 __all__ = ["station_film", "station_angle", "pocket_edges", "pocket_film_wrench", "pocket_film_gap",
-           "pocket_elastic_force", "pocket_boundary_friction", "pocket_film_power", "pocket_wrench"]
+           "pocket_elastic_force", "pocket_boundary_friction", "pocket_film_power", "pocket_wrench",
+           "PocketKinematics", "PocketParams", "PocketWrench"]
+
+# ---------------------------------------------------------------- named arguments and result of pocket_wrench
+# Plain named tuples (numba compiles them as tuples: a field read is a register, no cost); the fields are read
+# by name, so two same-typed quantities cannot be swapped silently (issue 30 item 4).
+#: the ball's offset and motion relative to its pocket, pocket frame (x: cage axis, r: pocket axis, t: circumferential)
+PocketKinematics = namedtuple("PocketKinematics", [
+    "ex",  # ball-centre offset from the pocket axis along x [m]
+    "et",  # ... along t [m]
+    "s0",  # ball-centre offset along the pocket axis from the pocket centre (pitch radius) [m]
+    "vx", "vr", "vt",  # ball-centre velocity relative to the pocket (cage frame) [m/s]
+    "wx", "wr", "wt",  # ball angular velocity relative to the cage [rad/s]
+])
+#: pocket geometry, film and contact constants
+PocketParams = namedtuple("PocketParams", [
+    "eta",  # film viscosity [Pa s] (0: no film)
+    "Rb",  # ball radius [m]
+    "Rp",  # pocket radius [m]
+    "R_bore",  # cage bore radius [m]
+    "R_out",  # cage outside radius [m]
+    "hdm",  # pocket-centre radius d_m/2 [m]
+    "n_st",  # stations around the pocket wall (int, even)
+    "h_c",  # film floor [m]
+    "K",  # Hertz constant ball/pocket [N/m^1.5]
+    "mu",  # boundary friction coefficient [-] (0: none)
+    "v0",  # Coulomb regularisation speed [m/s]
+])
+#: the pocket wrench on the ball (pocket frame) and its by-products
+PocketWrench = namedtuple("PocketWrench", [
+    "Fx", "Fr", "Ft",  # force on the ball [N]
+    "Mx", "Mr", "Mt",  # moment on the ball about its centre [N m]
+    "Q_film",  # film normal load [N]
+    "Q_solid",  # Hertz load [N]
+    "P_film",  # power dissipated by the film [W]
+    "P_boundary",  # power dissipated by boundary friction [W]
+    "P_S",  # boundary friction force magnitude [N]
+])
 
 
 # ---------------------------------------------------------------- 1-D line-contact integrals
@@ -565,14 +603,18 @@ def pocket_film_power(Fx, Fr, Ft, Mx, Mr, Mt, vx, vr, vt, wx, wr, wt):
 
 
 @njit(cache=True)
-def pocket_wrench(ex, et, s0, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, R_out, hdm, n_st, h_c, K, mu, v0):
+def pocket_wrench(kin, prm):
     """Total pocket wrench on the ball: film (rigid isoviscous, floored at h_c) + Hertz + boundary friction.
 
-    Returns (Fx, Fr, Ft, Mx, Mr, Mt, Q_film, Q_solid, P_film, P_boundary, P_S) in the pocket frame:
-    force [N] and moment about the ball centre [N m] on the ball, the film normal load, the Hertz
-    load, the powers dissipated by the film and by boundary friction [W] (sources ``pocket_film``
-    and ``pocket_boundary``) and the boundary friction force magnitude P_S [N].
+    ``kin`` : :data:`PocketKinematics` (offset and motion of the ball relative to its pocket); ``prm`` :
+    :data:`PocketParams`.  Returns a :data:`PocketWrench` in the pocket frame: force [N] and moment about the
+    ball centre [N m] on the ball, the film normal load, the Hertz load, the powers dissipated by the film
+    and by boundary friction [W] (sources ``pocket_film`` and ``pocket_boundary``) and the boundary friction
+    force magnitude P_S [N].
     """
+    ex, et, s0, vx, vr, vt, wx, wr, wt = kin.ex, kin.et, kin.s0, kin.vx, kin.vr, kin.vt, kin.wx, kin.wr, kin.wt
+    eta, Rb, Rp, R_bore, R_out, hdm = prm.eta, prm.Rb, prm.Rp, prm.R_bore, prm.R_out, prm.hdm
+    n_st, h_c, K, mu, v0 = prm.n_st, prm.h_c, prm.K, prm.mu, prm.v0
     c = Rp - Rb
     e = math.sqrt(ex * ex + et * et)
     Fx = Fr = Ft = Mx = Mr = Mt = 0.0
@@ -611,7 +653,7 @@ def pocket_wrench(ex, et, s0, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, R_out
                 Mr += pt * gx - px * gt
                 Mt += px * gr - pr * gx
                 Pb = fb * vs
-    return Fx, Fr, Ft, Mx, Mr, Mt, Qf, Qs, Pf, Pb, fb
+    return PocketWrench(Fx, Fr, Ft, Mx, Mr, Mt, Qf, Qs, Pf, Pb, fb)
 
 
 # numba bakes callees and captured constants into its cache: key the cache on them (compile_cache.py)
