@@ -93,6 +93,32 @@ def _cross(ax, ay, az, bx, by, bz):
     return ay * bz - az * by, az * bx - ax * bz, ax * by - ay * bx
 
 
+#: |x| up to which :func:`_cos_sin_small` sums the Taylor series instead of calling libm
+_SMALL_ANGLE = 0.5
+
+
+@njit(cache=True, inline="always")
+def _cos_sin_small(x):
+    """(cos x, sin x) by their Taylor series through x^18 / x^17 for |x| <= 0.5, libm beyond (no call for the
+    contact-ellipse node angles, |x| <= a/R_b ~ 0.3).
+
+    Both series alternate with decreasing terms for |x| <= 0.5, so the truncation error is below the first
+    omitted term: |x|^20/20! <= 4e-25 (cos), |x|^19/19! <= 1.6e-23 |x|/0.5 (sin), i.e. < 1e-22 relative (cos >= 0.87,
+    sin x >= 0.95 x there); what remains is the rounding of Horner's scheme in x^2 (<= 2 ulp).
+    Checked against libm by tests/test_kernel_cost.py::test_cos_sin_small_against_libm.
+    """
+    if abs(x) > _SMALL_ANGLE:
+        return math.cos(x), math.sin(x)
+    x2 = x * x
+    c = 1.0 - x2 * (1.0 / 2.0 - x2 * (1.0 / 24.0 - x2 * (1.0 / 720.0 - x2 * (1.0 / 40320.0 - x2 * (
+        1.0 / 3628800.0 - x2 * (1.0 / 479001600.0 - x2 * (1.0 / 87178291200.0 - x2 * (
+            1.0 / 20922789888000.0 - x2 * (1.0 / 6402373705728000.0)))))))))
+    sn = x * (1.0 - x2 * (1.0 / 6.0 - x2 * (1.0 / 120.0 - x2 * (1.0 / 5040.0 - x2 * (1.0 / 362880.0 - x2 * (
+        1.0 / 39916800.0 - x2 * (1.0 / 6227020800.0 - x2 * (1.0 / 1307674368000.0 - x2 * (
+            1.0 / 355687428096000.0)))))))))
+    return c, sn
+
+
 @njit(cache=True, inline="always")
 def _surface_velocities(px_, pr_, pt_, x, r, vx, vr, thd, wx, wy, wz, rvx, rvr, rvt, ox, orr, ot, Wx, Wr, Wt):
     """Ball-surface and race-surface velocities at the point rho = (px_, pr_, pt_) from the ball centre.
@@ -106,7 +132,7 @@ def _surface_velocities(px_, pr_, pt_, x, r, vx, vr, thd, wx, wy, wz, rvx, rvr, 
     return bx + vx, br + vr, bt + r * thd, gx + rvx, gr + rvr, gt + rvt
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")  # no ZeroDivisionError branch per division (cost only)
 def _race_contact(p, qu, qw, load, ball, race, shape):
     """Traction and EHL rolling force of one ball/race contact, in the ball frame (x, r, t).
 
@@ -170,7 +196,7 @@ def _race_contact(p, qu, qw, load, ball, race, shape):
         nk = (n + 1) // 2 if sym else n
         for kk in range(nk):
             phi0 = a * qu[kk] / D2
-            c0, s0 = math.cos(phi0), math.sin(phi0)
+            c0, s0 = _cos_sin_small(phi0)
             for side in range(2 if sym else 1):
                 k = kk if side == 0 else n - 1 - kk
                 if side == 1 and k == kk:
@@ -256,7 +282,7 @@ def ball_loop(y, P, qu, qw, ydot, contrib, aux, want_aux):
     ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, 0, contrib, 0, contrib)  # modes 0: caches unused
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")  # no ZeroDivisionError branch per division (cost only)
 def ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, pmode, pcache, rmode, rcache):
     """:func:`ball_loop` with the pocket wrench of each ball stored (``pmode`` 1) or reused (``pmode`` 2)
     in ``pcache`` (Z x 11): for Jacobian columns of states the pocket wrench does not depend on (the ring

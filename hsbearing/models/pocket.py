@@ -775,7 +775,7 @@ def _batch_finish(w, nl, eta):
         w[_R_WX * _LANES + i] = (s * L) * (IPxi * w[_R_MIR * _LANES + i]) if film else 0.0
 
 
-@njit(cache=True, fastmath=True)
+@njit(cache=True, fastmath=True, error_model="numpy")
 def pocket_film_wrench(ex, et, s0, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, R_out, hdm, n_st, tabulated=True):
     """Film force and moment on the ball from a rigid isoviscous film in its cylindrical pocket.
 
@@ -911,7 +911,7 @@ def pocket_film_power(Fx, Fr, Ft, Mx, Mr, Mt, vx, vr, vt, wx, wr, wt):
     return -(Fx * vx + Fr * vr + Ft * vt + Mx * wx + Mr * wr + Mt * wt)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def pocket_wrench(kin, prm):
     """Total pocket wrench on the ball: film (rigid isoviscous, floored at h_c) + Hertz + boundary friction.
 
