@@ -570,9 +570,9 @@ _ST_NONE, _ST_FULL, _ST_NEWTON, _ST_DONE, _ST_SHORT = 0.0, 1.0, 2.0, 3.0, 4.0
 
 #: atan(w) = w + w s P(s), s = w^2, |w| <= tan(pi/8): coefficients of P (ascending powers of s), Chebyshev
 #: interpolant of (atan(sqrt s)/sqrt s - 1)/s on [0, tan^2(pi/8)] (200 nodes, degree 11; tools/make_atan_poly.py)
-_ATAN_P = (-0.33333333333333554, 0.20000000000118356, -0.1428571430373458, 0.11111112374734976,
-           -0.090909582670187, 0.07693475735464714, -0.06684461187950477, 0.06059707674270256,
-           -0.06411684434993167, 0.0939754286655216, -0.14788410667659807, 0.13148385037845614)
+_ATAN_P = (-0.3333333333333333, 0.1999999999999646, -0.14285714285177972, 0.11111111070489664,
+           -0.09090907322824225, 0.07692259804866149, -0.06665821580002596, 0.0587240345196698,
+           -0.05184542582264705, 0.043494961312255, -0.02952046932450224, 0.010821815583843321)
 _TAN_PI8 = 0.41421356237309503  # tan(pi/8)
 _TAN_3PI8 = 2.414213562373095  # tan(3 pi/8)
 
@@ -584,7 +584,7 @@ def _atan_poly(t):
     Reduction by the exact identities atan(z) = pi/4 + atan((z - 1)/(z + 1)) for tan(pi/8) < z <= tan(3 pi/8)
     and atan(z) = pi/2 - atan(1/z) beyond, z = |t| (one division), to |w| <= tan(pi/8); there atan(w) =
     w + w s P(s) with the degree-11 polynomial :data:`_ATAN_P`, whose relative error over the reduced range is
-    1.2 ulp measured on 200001 points against long-double atan (the interpolant's own error is below 1e-18:
+    1.1 ulp measured on 200001 points against long-double atan (the interpolant's own error is below 1e-18:
     Chebyshev coefficients of an analytic function with its nearest singularity at s = -1 decay like 25^-n).
     The reduction adds <= 2.5 ulp (rounded w, pi/4 and pi/2, one addition).  Checked against long-double
     atan over 1e-300 <= |t| <= 1e300 by tests/test_pocket.py::test_atan_poly_error_bound.  atan(+-inf) = +-pi/2.
@@ -638,9 +638,8 @@ _FM = {"nsz", "arcp", "contract", "reassoc"}
 
 @njit(cache=True, error_model="numpy", fastmath=_FM)
 def _batch_setup(w, nl, k, cte, ste, e, c, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, R_out, hdm, s0):
-    """Pass 1 over ``nl`` lanes: station kinematics, the line-contact problem in :func:`_station_dimless`'s
-    form (mirrored for U_e < 0, as :func:`_station`), its case (no film / full film / rupture Newton / short
-    interval) and the Newton start and bracket.  Same branches as :func:`_station_dimless`, as selects."""
+    """Pass 1 over ``nl`` lanes: station kinematics (:func:`_station_kinematics`) and the line-contact problem
+    in :func:`_station_dimless`'s form (A = |6 eta U_e|, beta, edges; mirrored for U_e < 0, as :func:`_station`)."""
     for i in range(nl):
         tq = w[_R_TQ * _LANES + i]
         dph, nx, nt, qx, qt, a, dUu, dUs, Ue, F0, L, lo, hi = _station_kinematics(
@@ -652,6 +651,33 @@ def _batch_setup(w, nl, k, cte, ste, e, c, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, 
         Am = -A if mir else A
         lom = -hi if mir else lo
         him = -lo if mir else hi
+        w[_R_LO * _LANES + i] = lo
+        w[_R_HI * _LANES + i] = hi
+        w[_R_DAT * _LANES + i] = dat
+        w[_R_A * _LANES + i] = a
+        w[_R_L * _LANES + i] = L
+        w[_R_AM * _LANES + i] = Am
+        w[_R_BETA * _LANES + i] = beta
+        w[_R_LOM * _LANES + i] = lom
+        w[_R_HIM * _LANES + i] = him
+        w[_R_MIR * _LANES + i] = -1.0 if mir else 1.0
+        w[_R_NX * _LANES + i] = nx
+        w[_R_NT * _LANES + i] = nt
+        w[_R_DUU * _LANES + i] = dUu
+        w[_R_DUS * _LANES + i] = dUs
+        w[_R_DPH * _LANES + i] = dph
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM)
+def _batch_classify(w, nl):
+    """The case of every lane's line contact -- no film / full film / rupture Newton / short interval -- and the
+    Newton start (:func:`_rupture_guess`) and bracket: the branches of :func:`_station_dimless`, as selects."""
+    for i in range(nl):
+        dat = w[_R_DAT * _LANES + i]
+        Am = w[_R_AM * _LANES + i]
+        beta = w[_R_BETA * _LANES + i]
+        lom = w[_R_LOM * _LANES + i]
+        him = w[_R_HIM * _LANES + i]
         # A > 0: rupture problem
         xs = -beta / (2.0 * Am)
         S = xs - lom
@@ -676,16 +702,6 @@ def _batch_setup(w, nl, k, cte, ste, e, c, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, 
             st = _ST_FULL
         else:
             st = _ST_NEWTON
-        w[_R_LO * _LANES + i] = lo
-        w[_R_HI * _LANES + i] = hi
-        w[_R_DAT * _LANES + i] = dat
-        w[_R_A * _LANES + i] = a
-        w[_R_L * _LANES + i] = L
-        w[_R_AM * _LANES + i] = Am
-        w[_R_BETA * _LANES + i] = beta
-        w[_R_LOM * _LANES + i] = lom
-        w[_R_HIM * _LANES + i] = him
-        w[_R_MIR * _LANES + i] = -1.0 if mir else 1.0
         w[_R_ST * _LANES + i] = st
         w[_R_X * _LANES + i] = x0 if st == _ST_NEWTON else him
         w[_R_AA * _LANES + i] = xs
@@ -694,11 +710,6 @@ def _batch_setup(w, nl, k, cte, ste, e, c, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, 
         w[_R_K2L * _LANES + i] = k2l
         w[_R_K3L * _LANES + i] = k3l
         w[_R_M3L * _LANES + i] = m3l
-        w[_R_NX * _LANES + i] = nx
-        w[_R_NT * _LANES + i] = nt
-        w[_R_DUU * _LANES + i] = dUu
-        w[_R_DUS * _LANES + i] = dUs
-        w[_R_DPH * _LANES + i] = dph
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM)
@@ -744,7 +755,7 @@ def _batch_newton_sweep(w, nl):
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FM)
-def _batch_finish(w, nl, eta):
+def _batch_finish(w, nl):
     """Pressure integrals of every lane from its pressurised interval [lo, x_2] (:func:`_station_dimless`'s
     closed form, :func:`_station`'s scaling): rows _R_W = int p dx [N/m], _R_WX = int p x dx [N]."""
     for i in range(nl):
@@ -773,6 +784,30 @@ def _batch_finish(w, nl, eta):
         s = L * L * ia * ia
         w[_R_W * _LANES + i] = s * IP if film else 0.0
         w[_R_WX * _LANES + i] = (s * L) * (IPxi * w[_R_MIR * _LANES + i]) if film else 0.0
+
+
+@njit(cache=True, fastmath=True)
+def _batch_solve(w, nl):
+    """Rows _R_W, _R_WX (int p dx [N/m], int p x dx [N]) of ``nl`` lanes from their line-contact problems (rows
+    _R_A, _R_L, _R_AM, _R_BETA, _R_LOM, _R_HIM, _R_MIR, _R_DAT): :func:`_station` of each lane, batched."""
+    _batch_classify(w, nl)
+    for _it in range(60):
+        if _batch_newton_sweep(w, nl) == 0:
+            break
+    for i in range(nl):  # lanes left iterating after 60 sweeps: the atan of their last iterate
+        if w[_R_ST * _LANES + i] == _ST_NEWTON:
+            w[_R_AT * _LANES + i] = _atan_diff(w[_R_X * _LANES + i], w[_R_LOM * _LANES + i])
+    _batch_finish(w, nl)
+    for i in range(nl):
+        if w[_R_ST * _LANES + i] == _ST_SHORT:  # cancellation-free form for a short interval (rare)
+            A = w[_R_AM * _LANES + i]
+            beta = w[_R_BETA * _LANES + i]
+            x2, IP, IPxi = _station_short(A, beta, w[_R_LOM * _LANES + i], -beta / (2.0 * A))
+            L = w[_R_L * _LANES + i]
+            a = w[_R_A * _LANES + i]
+            s = L * L / (a * a)
+            w[_R_W * _LANES + i] = s * IP
+            w[_R_WX * _LANES + i] = (s * L) * (IPxi * w[_R_MIR * _LANES + i])
 
 
 @njit(cache=True, fastmath=True, error_model="numpy")
@@ -819,24 +854,8 @@ def pocket_film_wrench(ex, et, s0, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, 
         for i in range(nl):  # tan(tau/2) of the station nodes tau = -pi + (i + 1/2) dtau
             w[_R_TQ * _LANES + i] = _TQ_TABLE[i] if n_st == _TQ_N else math.tan(0.5 * (-math.pi + (c0 + i + 0.5) * dtau))
         _batch_setup(w, nl, k, cte, ste, e, c, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, R_out, hdm, s0)
-        for _it in range(60):
-            if _batch_newton_sweep(w, nl) == 0:
-                break
-        for i in range(nl):  # lanes left iterating after 60 sweeps: the atan of their last iterate
-            if w[_R_ST * _LANES + i] == _ST_NEWTON:
-                w[_R_AT * _LANES + i] = _atan_diff(w[_R_X * _LANES + i], w[_R_LOM * _LANES + i])
-        _batch_finish(w, nl, eta)
+        _batch_solve(w, nl)
         for i in range(nl):
-            if w[_R_ST * _LANES + i] == _ST_SHORT:  # cancellation-free form for a short interval (rare)
-                A = w[_R_AM * _LANES + i]
-                beta = w[_R_BETA * _LANES + i]
-                lom = w[_R_LOM * _LANES + i]
-                x2, IP, IPxi = _station_short(A, beta, lom, -beta / (2.0 * A))
-                L = w[_R_L * _LANES + i]
-                a = w[_R_A * _LANES + i]
-                s = L * L / (a * a)
-                w[_R_W * _LANES + i] = s * IP
-                w[_R_WX * _LANES + i] = (s * L) * (IPxi * w[_R_MIR * _LANES + i])
             lo = w[_R_LO * _LANES + i]
             hi = w[_R_HI * _LANES + i]
             a = w[_R_A * _LANES + i]
