@@ -329,18 +329,24 @@ def test_kernel_linearised_cage_whirl_on_the_land_films(model):
 def _pocket_at_start(model, n_st=None):
     """pocket_wrench of ball 0 at the start state as a function of (ex, et, s0): the pocket frame of ball 0 is the
     inertial frame at the start (cage untilted, phi_c = 0, ball 0 at psi = 0), relative spin (omega - phi_c' e_x)."""
-    from hsbearing.models.pocket import pocket_wrench
+    from hsbearing.models.pocket import PocketKinematics, PocketParams, pocket_wrench
 
     P, y, Z = model.P, model.y0, model.layout.Z
     names = model.state_names
     wc = y[model.layout.cage0 + 9]
     wx, wr, wt = (y[names.index(f"omega_{a}[0]")] for a in "xyz")
     D2 = 0.5 * kio.get(P, "D")
-    args = (0.0, 0.0, 0.0, wx - wc, wr, wt, kio.get(P, "eta_film"), D2, D2 + kio.get(P, "c_p"), kio.get(P, "R_bore_c"), kio.get(P, "R_out_c"),
-            0.5 * kio.get(P, "dm"), int(kio.get(P, "n_pocket")) if n_st is None else n_st, kio.get(P, "h_min"), kio.get(P, "K_c"), kio.get(P, "mu_c"),
-            kio.get(P, "v0_c"))
+    prm = PocketParams(eta=kio.get(P, "eta_film"), Rb=D2, Rp=D2 + kio.get(P, "c_p"), R_bore=kio.get(P, "R_bore_c"),
+                       R_out=kio.get(P, "R_out_c"), hdm=0.5 * kio.get(P, "dm"),
+                       n_st=int(kio.get(P, "n_pocket")) if n_st is None else n_st, h_c=kio.get(P, "h_min"),
+                       K=kio.get(P, "K_c"), mu=kio.get(P, "mu_c"), v0=kio.get(P, "v0_c"))
     s0 = y[names.index("u_b[0]")]
-    return lambda ex, et, ds0=0.0: np.array(pocket_wrench(ex, et, s0 + ds0, *args)[:3])  # (Fx, Fr, Ft) on the ball
+
+    def wrench(ex, et, ds0=0.0):  # (Fx, Fr, Ft) on the ball
+        kin = PocketKinematics(ex=ex, et=et, s0=s0 + ds0, vx=0.0, vr=0.0, vt=0.0, wx=wx - wc, wr=wr, wt=wt)
+        return np.array(pocket_wrench(kin, prm)[:3])
+
+    return wrench
 
 
 def _kinetic_shares(model, v):

@@ -20,6 +20,7 @@ writes the 22 ring/cage rows.
 from __future__ import annotations
 
 import math
+from collections import namedtuple
 
 import numpy as np
 from numba import njit
@@ -46,7 +47,7 @@ from hsbearing.models.kernel_io import (  # noqa: F401  (AUX_INDEX, GAUX_INDEX, 
     N_AUX,
     N_GAUX,
 )
-from hsbearing.models.pocket import pocket_wrench
+from hsbearing.models.pocket import PocketKinematics, PocketParams, PocketWrench, pocket_wrench
 from hsbearing.models.power import couple_power, elastic_energy_hertz, normal_damping_power, sliding_power
 from hsbearing.models.ring import inner_groove_centre, ring_equations_of_motion, tilt_generalised_moments, tilt_rotation
 from hsbearing.models.traction._kernels import traction_coefficients_nb, traction_mu_nb
@@ -59,10 +60,63 @@ from hsbearing.models.traction._kernels import traction_coefficients_nb, tractio
 C_RFX, C_RFY, C_RFZ, C_RMY, C_RMZ, C_RMX, C_CFX, C_CFY, C_CFZ, C_CMX, C_CMY, C_CMZ = range(12)
 N_CONTRIB = 12
 
+# ---------------- named arguments and result of one race contact (:func:`_race_contact`; issue 30 item 4)
+# Plain named tuples: numba compiles them as tuples (a field read is a register), the fields are read by name.
+#: the ball's state in its own frame (x, r, t): centre position, velocity and angular velocity
+BallMotion = namedtuple("BallMotion", [
+    "x", "r",  # axial position and radius of the ball centre [m]
+    "vx", "vr", "thd",  # axial and radial velocity [m/s], orbital angular velocity [rad/s]
+    "wx", "wy", "wz",  # ball angular velocity, ball frame [rad/s]
+])
+#: normal load and unit normal (ball centre -> groove centre, ball frame) of one contact
+ContactLoad = namedtuple("ContactLoad", ["Q", "nx", "nr", "nt"])
+#: motion of the race, ball frame: velocity of its centre [m/s], position of its centre [m], angular velocity [rad/s]
+RaceMotion = namedtuple("RaceMotion", ["vx", "vr", "vt", "ox", "orr", "ot", "Wx", "Wr", "Wt"])
+#: constants of one race contact: equivalent radius along rolling [m], ellipticity [-], semi-major axis
+#: coefficient a = acoef Q^(1/3) [m/N^(1/3)]
+ContactShape = namedtuple("ContactShape", ["Rx", "ke", "acoef"])
+#: what one race contact puts on the ball (ball frame) and its by-products
+RaceContact = namedtuple("RaceContact", [
+    "fx", "fr", "ft",  # traction force on the ball [N]
+    "mx", "mr", "mt",  # moment about the ball centre: traction (spin couple) + EHL rolling couple [N m]
+    "T_roll", "T_trans",  # traction components, rolling and transverse [N]
+    "S0",  # slide-roll ratio at the contact centre [-]
+    "U",  # rolling speed [m/s]
+    "F_R",  # EHL rolling force [N]
+    "spin_roll",  # spin-to-roll ratio [-]
+    "P_trac", "P_ehl",  # powers dissipated by the traction and by the EHL couple [W]
+])
+
 
 @njit(cache=True, inline="always")
 def _cross(ax, ay, az, bx, by, bz):
     return ay * bz - az * by, az * bx - ax * bz, ax * by - ay * bx
+
+
+#: |x| up to which :func:`_cos_sin_small` sums the Taylor series instead of calling libm
+_SMALL_ANGLE = 0.5
+
+
+@njit(cache=True, inline="always")
+def _cos_sin_small(x):
+    """(cos x, sin x) by their Taylor series through x^18 / x^17 for |x| <= 0.5, libm beyond (no call for the
+    contact-ellipse node angles, |x| <= a/R_b ~ 0.3).
+
+    Both series alternate with decreasing terms for |x| <= 0.5, so the truncation error is below the first
+    omitted term: |x|^20/20! <= 4e-25 (cos), |x|^19/19! <= 1.6e-23 |x|/0.5 (sin), i.e. < 1e-22 relative (cos >= 0.87,
+    sin x >= 0.95 x there); what remains is the rounding of Horner's scheme in x^2 (<= 2 ulp).
+    Checked against libm by tests/test_kernel_cost.py::test_cos_sin_small_against_libm.
+    """
+    if abs(x) > _SMALL_ANGLE:
+        return math.cos(x), math.sin(x)
+    x2 = x * x
+    c = 1.0 - x2 * (1.0 / 2.0 - x2 * (1.0 / 24.0 - x2 * (1.0 / 720.0 - x2 * (1.0 / 40320.0 - x2 * (
+        1.0 / 3628800.0 - x2 * (1.0 / 479001600.0 - x2 * (1.0 / 87178291200.0 - x2 * (
+            1.0 / 20922789888000.0 - x2 * (1.0 / 6402373705728000.0)))))))))
+    sn = x * (1.0 - x2 * (1.0 / 6.0 - x2 * (1.0 / 120.0 - x2 * (1.0 / 5040.0 - x2 * (1.0 / 362880.0 - x2 * (
+        1.0 / 39916800.0 - x2 * (1.0 / 6227020800.0 - x2 * (1.0 / 1307674368000.0 - x2 * (
+            1.0 / 355687428096000.0)))))))))
+    return c, sn
 
 
 @njit(cache=True, inline="always")
@@ -78,15 +132,14 @@ def _surface_velocities(px_, pr_, pt_, x, r, vx, vr, thd, wx, wy, wz, rvx, rvr, 
     return bx + vx, br + vr, bt + r * thd, gx + rvx, gr + rvr, gt + rvt
 
 
-@njit(cache=True)
-def _race_contact(p, qu, qw, Q, nx, nr, nt, x, r, vx, vr, thd, wx, wy, wz,
-                  rvx, rvr, rvt, ox, orr, ot, Wx, Wr, Wt, Rx, ke, acoef):
+@njit(cache=True, error_model="numpy")  # no ZeroDivisionError branch per division (cost only)
+def _race_contact(p, qu, qw, load, ball, race, shape):
     """Traction and EHL rolling force of one ball/race contact, in the ball frame (x, r, t).
 
-    n = (nx, nr, nt): unit normal from the ball centre towards the groove centre.
-    (rvx, rvr, rvt): race translational velocity; (ox, orr, ot): race centre
-    position; (Wx, Wr, Wt): race angular velocity -- all in the ball frame.
-    Returns the force on the ball (fx, fr, ft), the moment about the ball
+    ``load`` (:data:`ContactLoad`): normal load Q and unit normal n = (nx, nr, nt) from the ball centre towards
+    the groove centre; ``ball`` (:data:`BallMotion`); ``race`` (:data:`RaceMotion`): race translational velocity,
+    race centre position, race angular velocity -- all in the ball frame; ``shape`` (:data:`ContactShape`).
+    Returns a :data:`RaceContact`: the force on the ball (fx, fr, ft), the moment about the ball
     centre (mx, mr, mt) -- the traction distribution's spin couple and the
     EHL rolling-resistance couple included --, traction components (rolling,
     transverse), centre slide-roll ratio, rolling speed U, F_R, the
@@ -96,6 +149,11 @@ def _race_contact(p, qu, qw, Q, nx, nr, nt, x, r, vx, vr, thd, wx, wy, wz,
     :func:`models.power.couple_power`).  The race carries the exact opposite
     force system (:func:`reaction_moment`).
     """
+    Q, nx, nr, nt = load.Q, load.nx, load.nr, load.nt
+    x, r, vx, vr, thd, wx, wy, wz = ball.x, ball.r, ball.vx, ball.vr, ball.thd, ball.wx, ball.wy, ball.wz
+    rvx, rvr, rvt, ox, orr, ot = race.vx, race.vr, race.vt, race.ox, race.orr, race.ot
+    Wx, Wr, Wt = race.Wx, race.Wr, race.Wt
+    Rx, ke, acoef = shape.Rx, shape.ke, shape.acoef
     D2 = 0.5 * p.ball.D
     fx = fr = ft = 0.0
     mx = mr = mt = 0.0
@@ -106,7 +164,7 @@ def _race_contact(p, qu, qw, Q, nx, nr, nt, x, r, vx, vr, thd, wx, wy, wz,
     spin_roll = 0.0
     PT = PE = 0.0
     if Q <= 0.0:
-        return fx, fr, ft, mx, mr, mt, T1, T2, S0, U, FR, spin_roll, PT, PE
+        return RaceContact(fx, fr, ft, mx, mr, mt, T1, T2, S0, U, FR, spin_roll, PT, PE)
     # tangent basis: t2 = n x e_t / |.| (transverse, in the axial-radial plane), t1 = t2 x n (rolling, ~ e_t)
     hn = math.sqrt(nx * nx + nr * nr)
     t2x, t2r = nr / hn, -nx / hn
@@ -138,7 +196,7 @@ def _race_contact(p, qu, qw, Q, nx, nr, nt, x, r, vx, vr, thd, wx, wy, wz,
         nk = (n + 1) // 2 if sym else n
         for kk in range(nk):
             phi0 = a * qu[kk] / D2
-            c0, s0 = math.cos(phi0), math.sin(phi0)
+            c0, s0 = _cos_sin_small(phi0)
             for side in range(2 if sym else 1):
                 k = kk if side == 0 else n - 1 - kk
                 if side == 1 and k == kk:
@@ -188,7 +246,7 @@ def _race_contact(p, qu, qw, Q, nx, nr, nt, x, r, vx, vr, thd, wx, wy, wz,
         mt += ct
         # the race carries the opposite couple: dissipation = couple x relative angular velocity
         PE = couple_power(cx, cr, ct, wx - Wx, wy - Wr, wz - Wt)
-    return fx, fr, ft, mx, mr, mt, T1, T2, S0, U, FR, spin_roll, PT, PE
+    return RaceContact(fx, fr, ft, mx, mr, mt, T1, T2, S0, U, FR, spin_roll, PT, PE)
 
 
 @njit(cache=True, inline="always")
@@ -224,7 +282,7 @@ def ball_loop(y, P, qu, qw, ydot, contrib, aux, want_aux):
     ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, 0, contrib, 0, contrib)  # modes 0: caches unused
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")  # no ZeroDivisionError branch per division (cost only)
 def ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, pmode, pcache, rmode, rcache):
     """:func:`ball_loop` with the pocket wrench of each ball stored (``pmode`` 1) or reused (``pmode`` 2)
     in ``pcache`` (Z x 11): for Jacobian columns of states the pocket wrench does not depend on (the ring
@@ -252,12 +310,16 @@ def ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, pmode, pcache, 
     fric = 1.0 if p.switches.friction else 0.0  # multiplies the friction coefficients
     damp = 1.0 if p.switches.damping else 0.0  # multiplies the damping coefficients and film viscosity
     hdm = 0.5 * p.ball.dm
+    pocket_prm = PocketParams(eta=p.lubricant.eta_film * damp, Rb=D2, Rp=D2 + p.pocket.c_p, R_bore=p.pocket.R_bore_c,
+                              R_out=p.pocket.R_out_c, hdm=hdm, n_st=p.pocket.n_pocket, h_c=p.pocket.h_min,
+                              K=p.pocket.K_c, mu=p.pocket.mu_c * fric, v0=p.pocket.v0_c)
     for j in range(Z):
         # state: u_b (radial displacement from the pitch circle), psi_b (angle from the pocket line)
         x, r, th = y[j], hdm + y[Z + j], phc + 2.0 * math.pi * j / Z + y[2 * Z + j]
         vx, vr, thd = y[3 * Z + j], y[4 * Z + j], y[5 * Z + j]
         wx, wy, wz = y[6 * Z + j], y[7 * Z + j], y[8 * Z + j]
         c, s = math.cos(th), math.sin(th)
+        ball = BallMotion(x, r, vx, vr, thd, wx, wy, wz)
         # Each action on the ball is a named wrench (force, moment about the ball centre) in the ball frame
         # (x, r, t): gravity, inner, outer, pocket, drag; the balance below sums them (Eqs. 5-10).
         # ---------------- gravity along -Y (horizontal shaft): (0, -g, 0) in the ball frame is (0, -g cos th, g sin th)
@@ -284,9 +346,11 @@ def ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, pmode, pcache, 
             # ring angular velocity: spin about its own (tilted) axis R e_x plus the tilting rate
             Wsx, Wsy, Wsz = wi * Rm[0] + wtx, wi * Rm[3] + wty, wi * Rm[6] + wtz
             Wx, Wr, Wt = Wsx, Wsy * c + Wsz * s, -Wsy * s + Wsz * c
-            (tfx, tfr, tft, tmx, tmr, tmt, Ti1, Ti2, Si, Ui, FRi, sri, PTi, PEi) = _race_contact(
-                p, qu, qw, Qi, nxi, nri, nti, x, r, vx, vr, thd, wx, wy, wz,
-                rvx, rvr, rvt, ox, orr, ot, Wx, Wr, Wt, p.race.Rx_i, p.race.k_i, p.race.acoef_i)
+            ci = _race_contact(p, qu, qw, ContactLoad(Qi, nxi, nri, nti), ball,
+                               RaceMotion(rvx, rvr, rvt, ox, orr, ot, Wx, Wr, Wt),
+                               ContactShape(p.race.Rx_i, p.race.k_i, p.race.acoef_i))
+            tfx, tfr, tft, tmx, tmr, tmt = ci.fx, ci.fr, ci.ft, ci.mx, ci.mr, ci.mt
+            Ti1, Ti2, Si, Ui, FRi, sri, PTi, PEi = ci.T_roll, ci.T_trans, ci.S0, ci.U, ci.F_R, ci.spin_roll, ci.P_trac, ci.P_ehl
             fbx = Qi * nxi + tfx  # force of the inner race on the ball (ball frame)
             fbr = Qi * nri + tfr
             fbt = Qi * nti + tft
@@ -306,9 +370,11 @@ def ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, pmode, pcache, 
             dlt_o, nxo, nro, nto = groove_contact(p.race.g_o - x, p.race.rho_o - r, 0.0, p.race.off_o)
             dltd_o = -nxo * vx - nro * vr
             Qo = hertz_normal_load(dlt_o, dltd_o, p.race.K_o, p.race.cd_o * damp)
-            (tfx, tfr, tft, tmx, tmr, tmt, To1, To2, So, Uo, FRo, sro, PTo, PEo) = _race_contact(
-                p, qu, qw, Qo, nxo, nro, nto, x, r, vx, vr, thd, wx, wy, wz,
-                0.0, 0.0, 0.0, 0.0, 0.0, 0.0, wo, 0.0, 0.0, p.race.Rx_o, p.race.k_o, p.race.acoef_o)
+            co = _race_contact(p, qu, qw, ContactLoad(Qo, nxo, nro, nto), ball,
+                               RaceMotion(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, wo, 0.0, 0.0),  # fixed ring, speed wo about X
+                               ContactShape(p.race.Rx_o, p.race.k_o, p.race.acoef_o))
+            tfx, tfr, tft, tmx, tmr, tmt = co.fx, co.fr, co.ft, co.mx, co.mr, co.mt
+            To1, To2, So, Uo, FRo, sro, PTo, PEo = co.T_roll, co.T_trans, co.S0, co.U, co.F_R, co.spin_roll, co.P_trac, co.P_ehl
             outer = (Qo * nxo + tfx, Qo * nro + tfr, tft, tmx, tmr, tmt)  # (the outer normal has no t component)
             # moment about X through the origin of the outer-race actions on the ball: (b x F)_X = r F_t, plus M_x
             tau_o = r * tft + tmx
@@ -352,17 +418,16 @@ def ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, pmode, pcache, 
         wpt = wrx_ * et_x + wry_ * et_y + wrz_ * et_z
         # film (rigid isoviscous, floored at h_min) + Hertz + boundary friction P_S: models/pocket.py
         if pmode == 2:  # reuse: the pocket wrench depends on ball and cage states only
-            pFx, pFr, pFt = pcache[j, 0], pcache[j, 1], pcache[j, 2]
-            pMx, pMr, pMt = pcache[j, 3], pcache[j, 4], pcache[j, 5]
-            Qf, Qs, Ppf, Ppb, PS = pcache[j, 6], pcache[j, 7], pcache[j, 8], pcache[j, 9], pcache[j, 10]
+            pw = PocketWrench(pcache[j, 0], pcache[j, 1], pcache[j, 2], pcache[j, 3], pcache[j, 4], pcache[j, 5],
+                              pcache[j, 6], pcache[j, 7], pcache[j, 8], pcache[j, 9], pcache[j, 10])
         else:
-            (pFx, pFr, pFt, pMx, pMr, pMt, Qf, Qs, Ppf, Ppb, PS) = pocket_wrench(
-                dxp, dtp, drp, ddx, ddr, ddt, wpx, wpr, wpt, p.lubricant.eta_film * damp, D2, D2 + p.pocket.c_p, p.pocket.R_bore_c,
-                p.pocket.R_out_c, hdm, p.pocket.n_pocket, p.pocket.h_min, p.pocket.K_c, p.pocket.mu_c * fric, p.pocket.v0_c)
+            pw = pocket_wrench(PocketKinematics(ex=dxp, et=dtp, s0=drp, vx=ddx, vr=ddr, vt=ddt, wx=wpx, wr=wpr, wt=wpt),
+                               pocket_prm)
             if pmode == 1:
-                pcache[j, 0], pcache[j, 1], pcache[j, 2], pcache[j, 3] = pFx, pFr, pFt, pMx
-                pcache[j, 4], pcache[j, 5], pcache[j, 6], pcache[j, 7] = pMr, pMt, Qf, Qs
-                pcache[j, 8], pcache[j, 9], pcache[j, 10] = Ppf, Ppb, PS
+                for k in range(11):
+                    pcache[j, k] = pw[k]
+        pFx, pFr, pFt, pMx, pMr, pMt = pw.Fx, pw.Fr, pw.Ft, pw.Mx, pw.Mr, pw.Mt
+        Qf, Qs, Ppf, Ppb, PS = pw.Q_film, pw.Q_solid, pw.P_film, pw.P_boundary, pw.P_S
         # to inertial axes: force and moment (about the ball centre) on the ball
         gx_ = pFx * ex_x + pFr * er_x + pFt * et_x
         gy_ = pFx * ex_y + pFr * er_y + pFt * et_y

@@ -53,6 +53,7 @@ References
 from __future__ import annotations
 
 import math
+from collections import namedtuple
 
 import numpy as np
 from numba import njit
@@ -60,7 +61,44 @@ from numba import njit
 from hsbearing.compile_cache import check_compile_cache
 
 __all__ = ["station_film", "station_angle", "pocket_edges", "pocket_film_wrench", "pocket_film_gap",
-           "pocket_elastic_force", "pocket_boundary_friction", "pocket_film_power", "pocket_wrench"]
+           "pocket_elastic_force", "pocket_boundary_friction", "pocket_film_power", "pocket_wrench",
+           "PocketKinematics", "PocketParams", "PocketWrench"]
+
+# ---------------------------------------------------------------- named arguments and result of pocket_wrench
+# Plain named tuples (numba compiles them as tuples: a field read is a register, no cost); the fields are read
+# by name, so two same-typed quantities cannot be swapped silently (issue 30 item 4).
+#: the ball's offset and motion relative to its pocket, pocket frame (x: cage axis, r: pocket axis, t: circumferential)
+PocketKinematics = namedtuple("PocketKinematics", [
+    "ex",  # ball-centre offset from the pocket axis along x [m]
+    "et",  # ... along t [m]
+    "s0",  # ball-centre offset along the pocket axis from the pocket centre (pitch radius) [m]
+    "vx", "vr", "vt",  # ball-centre velocity relative to the pocket (cage frame) [m/s]
+    "wx", "wr", "wt",  # ball angular velocity relative to the cage [rad/s]
+])
+#: pocket geometry, film and contact constants
+PocketParams = namedtuple("PocketParams", [
+    "eta",  # film viscosity [Pa s] (0: no film)
+    "Rb",  # ball radius [m]
+    "Rp",  # pocket radius [m]
+    "R_bore",  # cage bore radius [m]
+    "R_out",  # cage outside radius [m]
+    "hdm",  # pocket-centre radius d_m/2 [m]
+    "n_st",  # stations around the pocket wall (int, even)
+    "h_c",  # film floor [m]
+    "K",  # Hertz constant ball/pocket [N/m^1.5]
+    "mu",  # boundary friction coefficient [-] (0: none)
+    "v0",  # Coulomb regularisation speed [m/s]
+])
+#: the pocket wrench on the ball (pocket frame) and its by-products
+PocketWrench = namedtuple("PocketWrench", [
+    "Fx", "Fr", "Ft",  # force on the ball [N]
+    "Mx", "Mr", "Mt",  # moment on the ball about its centre [N m]
+    "Q_film",  # film normal load [N]
+    "Q_solid",  # Hertz load [N]
+    "P_film",  # power dissipated by the film [W]
+    "P_boundary",  # power dissipated by boundary friction [W]
+    "P_S",  # boundary friction force magnitude [N]
+])
 
 
 # ---------------------------------------------------------------- 1-D line-contact integrals
@@ -420,26 +458,64 @@ def pocket_edges(sin_theta, Rp, R_bore, R_out, hdm):
     return math.sqrt(R_bore * R_bore - t2) - hdm, math.sqrt(R_out * R_out - t2) - hdm
 
 
+@njit(cache=True, inline="always")
+def _station_kinematics(tq, k, cte, ste, e, c, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, R_out, hdm, s0):
+    """One station of :func:`pocket_film_wrench` at tan(tau/2) = ``tq``: wall geometry and film inputs.
+
+    :func:`station_angle` in rational form (T = k tan(tau/2), cos = (1 - T^2)/(1 + T^2), sin = 2 T/(1 + T^2)),
+    the gap a = c - e . n, the ball's surface velocity relative to the wall along the pocket axis and around
+    it, the entraining speed U_e, the source F0 (circumferential wedge + squeeze) and the edges in units of
+    the local contact width L = sqrt(2 R_b a) (module docstring; [3] Ch. 7).  Returns
+    (d theta/d tau, n_x, n_t, q_x, q_t, a, dU_u, dU_s, U_e, F0, L, lo, hi).
+    """
+    T = k * tq
+    den = 1.0 / (1.0 + T * T)
+    cp, sp = (1.0 - T * T) * den, 2.0 * T * den
+    dph = k * (1.0 + tq * tq) * den
+    # station angle in the pocket plane: measured from the offset direction
+    cth = cte * cp - ste * sp
+    sth = ste * cp + cte * sp
+    a = c - e * cp  # a = c - e . n
+    nx, nt = cth, sth  # wall normal n
+    qx, qt = -sth, cth  # tangent theta_hat
+    # relative surface velocity of the ball at the equator point R_b n (wall at rest)
+    wq = wx * qx + wt * qt  # omega . theta_hat
+    dUu = vr + Rb * wq  # along e_r (pocket axis): v_r + R_b omega . theta_hat   (n x e_r = theta_hat)
+    dUs = vx * qx + vt * qt - Rb * wr  # along theta_hat                          (n x theta_hat = -e_r)
+    vn = vx * nx + vt * nt
+    Ue = dUu - 2.0 * vr  # entraining speed relative to the moving gap shape (Galilean form)
+    hs = e * sp / Rp  # dh/ds = -(e . theta_hat)/R_p
+    F0 = 6.0 * eta * dUs * hs - 12.0 * eta * vn
+    xlo, xhi = pocket_edges(sth, Rp, R_bore, R_out, hdm)
+    L = math.sqrt(2.0 * Rb * a)
+    iL = 1.0 / L
+    return dph, nx, nt, qx, qt, a, dUu, dUs, Ue, F0, L, (xlo - s0) * iL, (xhi - s0) * iL
+
+
+@njit(cache=True, inline="always")
+def _station_wrench(W, Wx, I1, I1x, eta, dUu, dUs, Rb, ds, nx, nt, qx, qt):
+    """Force and moment on the ball of one station of wall arc length ``ds`` (:func:`pocket_film_wrench`).
+
+    Pressure (W = int p dx, Wx = int p x dx) along the ball normal (R_b n + x e_r)/R_b, pushing the ball off
+    the wall; shear at the ball surface: Couette -eta dU/h over the wetted wall (I1 = int dx/h, I1x = int x dx/h)
+    + Poiseuille -(h/2) dp/dx ([3] Ch. 7).  Moment about the ball centre (R_b n + x e_r) x (T_u e_r + T_s
+    theta_hat) = R_b T_u theta_hat - R_b T_s e_r + (int x T_s) n.  Returns the increments
+    (Fx, Fr, Ft, Mx, Mr, Mt, W_n) in the pocket frame.
+    """
+    Tu = -eta * dUu * I1 + 0.5 * Wx / Rb  # shear on the ball along e_r: Couette + Poiseuille
+    Ts = -eta * dUs * I1  # along theta_hat
+    Tsx = -eta * dUs * I1x
+    fn = -W
+    fr = -Wx / Rb + Tu
+    return (ds * (fn * nx + Ts * qx), ds * fr, ds * (fn * nt + Ts * qt),
+            ds * (Rb * Tu * qx + Tsx * nx), ds * (-Rb * Ts), ds * (Rb * Tu * qt + Tsx * nt), ds * W)
+
+
 @njit(cache=True, fastmath=True)
-def pocket_film_wrench(ex, et, s0, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, R_out, hdm, n_st, tabulated=True):
-    """Film force and moment on the ball from a rigid isoviscous film in its cylindrical pocket.
+def _pocket_film_wrench_reference(ex, et, s0, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, R_out, hdm, n_st):
+    """:func:`pocket_film_wrench` station by station with the reference rupture start (``tabulated=False``).
 
-    Parameters
-    ----------
-    ex, et : ball-centre offset from the pocket axis in the pocket plane (x: cage axis,
-        t: circumferential) [m]; must satisfy |e| < c = R_p - R_b;
-    s0 : ball-centre offset along the pocket axis from the pocket centre (pitch radius) [m];
-    vx, vr, vt : ball-centre velocity relative to the pocket (cage frame) [m/s];
-    wx, wr, wt : ball angular velocity relative to the cage [rad/s];
-    eta : oil viscosity [Pa s]; Rb, Rp : ball and pocket radii [m]; R_bore, R_out : cage bore and
-    outside radii [m]; hdm : pocket-centre radius d_m/2 [m]; n_st : number of stations (even);
-    tabulated : start each rupture solve from the table (default; False = the reference start, same root).
-
-    Returns
-    -------
-    (Fx, Fr, Ft) : force on the ball [N]; (Mx, Mr, Mt) : moment on the ball about its centre [N m];
-    Wn : sum of the station pressure forces |int p dA| [N] (the film's normal load).
-    All in the pocket frame (x, r, t).  Sources: module docstring, [1]-[5].
+    The scalar form of before issue 28 item 3, kept as the reference of the batched form (tests/test_pocket.py).
     """
     c = Rp - Rb
     e = math.sqrt(ex * ex + et * et)
@@ -457,57 +533,347 @@ def pocket_film_wrench(ex, et, s0, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, 
     cd, sd = math.cos(0.5 * dtau), math.sin(0.5 * dtau)
     tab = n_st == _TQ_N
     for _i in range(n_st):
-        # station_angle in rational form: T = k tan(tau/2), cos = (1 - T^2)/(1 + T^2), sin = 2 T/(1 + T^2)
         if tab:
             tq = _TQ_TABLE[_i]
         else:
             tq = sh / ch
             ch, sh = ch * cd - sh * sd, sh * cd + ch * sd
-        T = k * tq
-        den = 1.0 / (1.0 + T * T)
-        cp, sp = (1.0 - T * T) * den, 2.0 * T * den
-        dph = k * (1.0 + tq * tq) * den
-        # station angle in the pocket plane: measured from the offset direction
-        cth = cte * cp - ste * sp
-        sth = ste * cp + cte * sp
-        a = c - e * cp  # a = c - e . n
-        nx, nt = cth, sth  # wall normal n
-        qx, qt = -sth, cth  # tangent theta_hat
-        # relative surface velocity of the ball at the equator point R_b n (wall at rest)
-        wq = wx * qx + wt * qt  # omega . theta_hat
-        dUu = vr + Rb * wq  # along e_r (pocket axis): v_r + R_b omega . theta_hat   (n x e_r = theta_hat)
-        dUs = vx * qx + vt * qt - Rb * wr  # along theta_hat                          (n x theta_hat = -e_r)
-        vn = vx * nx + vt * nt
-        Ue = dUu - 2.0 * vr  # entraining speed relative to the moving gap shape (Galilean form)
-        hs = e * sp / Rp  # dh/ds = -(e . theta_hat)/R_p
-        F0 = 6.0 * eta * dUs * hs - 12.0 * eta * vn
-        xlo, xhi = pocket_edges(sth, Rp, R_bore, R_out, hdm)
-        L = math.sqrt(2.0 * Rb * a)
-        iL = 1.0 / L
-        lo, hi = (xlo - s0) * iL, (xhi - s0) * iL
+        dph, nx, nt, qx, qt, a, dUu, dUs, Ue, F0, L, lo, hi = _station_kinematics(
+            tq, k, cte, ste, e, c, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, R_out, hdm, s0)
         dat = _atan_diff(hi, lo)  # atan(hi) - atan(lo): one libm atan per station
-        W, Wx, x1, x2 = _station(a, Ue, F0, lo, hi, dat, L, eta, tabulated)
-        # Couette integrals over the wetted wall: int dx/h, int x dx/h
+        W, Wx, x1, x2 = _station(a, Ue, F0, lo, hi, dat, L, eta, False)
         I1 = L * dat / a
         I1x = Rb * math.log((1.0 + hi * hi) / (1.0 + lo * lo))
-        Tu = -eta * dUu * I1 + 0.5 * Wx / Rb  # shear on the ball along e_r: Couette + Poiseuille
-        Ts = -eta * dUs * I1  # along theta_hat
-        Tsx = -eta * dUs * I1x
-        ds = Rp * dph * dtau  # wall arc length of the station
-        # force: pressure along the ball normal (R_b n + x e_r)/R_b, pushing the ball off the wall
-        fn = -W
-        fr = -Wx / Rb + Tu
-        Fx += ds * (fn * nx + Ts * qx)
-        Ft += ds * (fn * nt + Ts * qt)
-        Fr += ds * fr
-        # moment about the ball centre: (R_b n + x e_r) x (Tu e_r + Ts theta_hat)
-        #   = R_b Tu theta_hat - R_b Ts e_r + (int x Ts) n
-        Mx += ds * (Rb * Tu * qx + Tsx * nx)
-        Mt += ds * (Rb * Tu * qt + Tsx * nt)
-        Mr += ds * (-Rb * Ts)
-        Wn += ds * W
+        f = _station_wrench(W, Wx, I1, I1x, eta, dUu, dUs, Rb, Rp * dph * dtau, nx, nt, qx, qt)
+        Fx += f[0]
+        Fr += f[1]
+        Ft += f[2]
+        Mx += f[3]
+        Mr += f[4]
+        Mt += f[5]
+        Wn += f[6]
     return Fx, Fr, Ft, Mx, Mr, Mt, Wn
 
+
+# ---------------------------------------------------------------- batched stations (issue 28 item 3)
+# The stations of a pocket are independent: they are solved _LANES at a time, each pass over the lanes a loop
+# without data-dependent control flow (selects only), which LLVM compiles to SIMD instructions (measured: the
+# 16 stations' rupture Newton sweep in ~30 ns instead of ~16 x 8 ns).  No libm call may sit in those loops
+# (numba has no vector maths library here: llvmlite is not SVML-patched), hence :func:`_atan_poly`.
+_LANES = 16  # lanes per batch (stations), the row stride of the work array
+# rows of the work array (row r of lane i at r * _LANES + i)
+(_R_LO, _R_HI, _R_DAT, _R_A, _R_L, _R_AM, _R_BETA, _R_LOM, _R_HIM, _R_MIR, _R_ST, _R_X, _R_AA, _R_BB, _R_AT,
+ _R_K2L, _R_K3L, _R_M3L, _R_NX, _R_NT, _R_DUU, _R_DUS, _R_DPH, _R_W, _R_WX, _R_TQ) = range(26)
+_NROWS = 26
+# lane status (row _R_ST)
+_ST_NONE, _ST_FULL, _ST_NEWTON, _ST_DONE, _ST_SHORT = 0.0, 1.0, 2.0, 3.0, 4.0
+
+#: atan(w) = w + w s P(s), s = w^2, |w| <= tan(pi/8): coefficients of P (ascending powers of s), Chebyshev
+#: interpolant of (atan(sqrt s)/sqrt s - 1)/s on [0, tan^2(pi/8)] (200 nodes, degree 11; tools/make_atan_poly.py)
+_ATAN_P = (-0.3333333333333333, 0.1999999999999646, -0.14285714285177972, 0.11111111070489664,
+           -0.09090907322824225, 0.07692259804866149, -0.06665821580002596, 0.0587240345196698,
+           -0.05184542582264705, 0.043494961312255, -0.02952046932450224, 0.010821815583843321)
+_TAN_PI8 = 0.41421356237309503  # tan(pi/8)
+_TAN_3PI8 = 2.414213562373095  # tan(3 pi/8)
+
+
+@njit(cache=True, inline="always")
+def _atan_poly(t):
+    """atan(t) [rad] for any real t without a libm call (vectorisable); relative error <= 4 ulp (2^-53).
+
+    Reduction by the exact identities atan(z) = pi/4 + atan((z - 1)/(z + 1)) for tan(pi/8) < z <= tan(3 pi/8)
+    and atan(z) = pi/2 - atan(1/z) beyond, z = |t| (one division), to |w| <= tan(pi/8); there atan(w) =
+    w + w s P(s) with the degree-11 polynomial :data:`_ATAN_P`, whose relative error over the reduced range is
+    1.1 ulp measured on 200001 points against long-double atan (the interpolant's own error is below 1e-18:
+    Chebyshev coefficients of an analytic function with its nearest singularity at s = -1 decay like 25^-n).
+    The reduction adds <= 2.5 ulp (rounded w, pi/4 and pi/2, one addition).  Checked against long-double
+    atan over 1e-300 <= |t| <= 1e300 by tests/test_pocket.py::test_atan_poly_error_bound.  atan(+-inf) = +-pi/2.
+    """
+    z = abs(t)
+    big = z > _TAN_3PI8
+    mid = z > _TAN_PI8
+    num = -1.0 if big else (z - 1.0 if mid else z)
+    den = z if big else (z + 1.0 if mid else 1.0)
+    w = num / den
+    base = 0.5 * math.pi if big else (0.25 * math.pi if mid else 0.0)
+    s = w * w
+    p = _ATAN_P[11]
+    p = p * s + _ATAN_P[10]
+    p = p * s + _ATAN_P[9]
+    p = p * s + _ATAN_P[8]
+    p = p * s + _ATAN_P[7]
+    p = p * s + _ATAN_P[6]
+    p = p * s + _ATAN_P[5]
+    p = p * s + _ATAN_P[4]
+    p = p * s + _ATAN_P[3]
+    p = p * s + _ATAN_P[2]
+    p = p * s + _ATAN_P[1]
+    p = p * s + _ATAN_P[0]
+    r = base + (w + w * (s * p))
+    return r if t >= 0.0 else -r
+
+
+@njit(cache=True, inline="always")
+def _atan_diff_poly(x, lo):
+    """atan(x) - atan(lo) as :func:`_atan_diff` (same identity, same branches as selects) with :func:`_atan_poly`."""
+    num = x - lo
+    den = 1.0 + x * lo
+    r = _atan_poly(num / den)  # den = 0: num/den = +-inf, atan = +-pi/2 (num != 0 there: x lo = -1, x != lo)
+    sh = math.pi if num > 0.0 else -math.pi
+    return r + sh if den < 0.0 else r
+
+
+@njit(cache=True, inline="always")
+def _kk_b(xi, at):
+    """:func:`_kk` without its fastmath flags (inlined into the batched passes, which set their own)."""
+    iH = 1.0 / (1.0 + xi * xi)
+    xh = xi * iH
+    return 0.5 * (xh + at), xh * (0.25 * iH + 0.375) + 0.375 * at, -0.25 * (iH * iH), iH
+
+
+# fast-math flags of the batched passes: no nnan/ninf (lanes that are masked out may carry inf/nan); reassoc
+# and contract move round-off only (the rhs stays within 1e-12 of the scalar form: tests/test_kernel_cost.py)
+_FM = {"nsz", "arcp", "contract", "reassoc"}
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM)
+def _batch_setup(w, nl, k, cte, ste, e, c, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, R_out, hdm, s0):
+    """Pass 1 over ``nl`` lanes: station kinematics (:func:`_station_kinematics`) and the line-contact problem
+    in :func:`_station_dimless`'s form (A = |6 eta U_e|, beta, edges; mirrored for U_e < 0, as :func:`_station`)."""
+    for i in range(nl):
+        tq = w[_R_TQ * _LANES + i]
+        dph, nx, nt, qx, qt, a, dUu, dUs, Ue, F0, L, lo, hi = _station_kinematics(
+            tq, k, cte, ste, e, c, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, R_out, hdm, s0)
+        dat = _atan_diff_poly(hi, lo)
+        A = 6.0 * eta * Ue
+        beta = F0 * L / a
+        mir = A < 0.0
+        Am = -A if mir else A
+        lom = -hi if mir else lo
+        him = -lo if mir else hi
+        w[_R_LO * _LANES + i] = lo
+        w[_R_HI * _LANES + i] = hi
+        w[_R_DAT * _LANES + i] = dat
+        w[_R_A * _LANES + i] = a
+        w[_R_L * _LANES + i] = L
+        w[_R_AM * _LANES + i] = Am
+        w[_R_BETA * _LANES + i] = beta
+        w[_R_LOM * _LANES + i] = lom
+        w[_R_HIM * _LANES + i] = him
+        w[_R_MIR * _LANES + i] = -1.0 if mir else 1.0
+        w[_R_NX * _LANES + i] = nx
+        w[_R_NT * _LANES + i] = nt
+        w[_R_DUU * _LANES + i] = dUu
+        w[_R_DUS * _LANES + i] = dUs
+        w[_R_DPH * _LANES + i] = dph
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM)
+def _batch_classify(w, nl):
+    """The case of every lane's line contact -- no film / full film / rupture Newton / short interval -- and the
+    Newton start (:func:`_rupture_guess`) and bracket: the branches of :func:`_station_dimless`, as selects."""
+    for i in range(nl):
+        dat = w[_R_DAT * _LANES + i]
+        Am = w[_R_AM * _LANES + i]
+        beta = w[_R_BETA * _LANES + i]
+        lom = w[_R_LOM * _LANES + i]
+        him = w[_R_HIM * _LANES + i]
+        # A > 0: rupture problem
+        xs = -beta / (2.0 * Am)
+        S = xs - lom
+        short = (S * S <= (_SHORT * _SHORT) * (1.0 + lom * lom)) and (him - lom >= 2.0 * S)
+        k2l, k3l, m3l, _ = _kk_b(lom, 0.0)
+        k2h, k3h, m3h, _ = _kk_b(him, dat)
+        Ghi = Am * (k2h - k2l) + beta * (m3h - m3l) - (Am * (1.0 + him * him) + beta * him) * (k3h - k3l)
+        xsf = xs if abs(xs) < 1e300 else 0.0  # (a vanishing A: Martin's start below; keep the table read finite)
+        x0 = _rupture_guess(xsf, lom)
+        martin = xs + 0.475 * math.sqrt(1.0 + xs * xs)
+        x0 = x0 if (abs(xs) < 1e300 and x0 > xs) else martin
+        x0 = him if x0 >= him else x0
+        if not him > lom:
+            st = _ST_NONE
+        elif not Am > 0.0:
+            st = _ST_NONE if beta >= 0.0 else _ST_FULL
+        elif xs <= lom:
+            st = _ST_NONE
+        elif short:
+            st = _ST_SHORT
+        elif Ghi >= 0.0:
+            st = _ST_FULL
+        else:
+            st = _ST_NEWTON
+        w[_R_ST * _LANES + i] = st
+        w[_R_X * _LANES + i] = x0 if st == _ST_NEWTON else him
+        w[_R_AA * _LANES + i] = xs
+        w[_R_BB * _LANES + i] = him
+        w[_R_AT * _LANES + i] = dat
+        w[_R_K2L * _LANES + i] = k2l
+        w[_R_K3L * _LANES + i] = k3l
+        w[_R_M3L * _LANES + i] = m3l
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM)
+def _batch_newton_sweep(w, nl):
+    """One Newton step of the rupture solve of :func:`_station_dimless` on every lane still iterating.
+
+    The step, its bracket and its stopping rule are those of :func:`_station_dimless` (with the atan of the
+    iterate from :func:`_atan_diff_poly`); a lane that meets the stopping rule is frozen.  Returns the
+    number of lanes still iterating."""
+    nact = 0
+    for i in range(nl):
+        A = w[_R_AM * _LANES + i]
+        beta = w[_R_BETA * _LANES + i]
+        lo = w[_R_LOM * _LANES + i]
+        x = w[_R_X * _LANES + i]
+        a_ = w[_R_AA * _LANES + i]
+        b_ = w[_R_BB * _LANES + i]
+        at_old = w[_R_AT * _LANES + i]
+        st = w[_R_ST * _LANES + i]
+        at2 = _atan_diff_poly(x, lo)
+        k2x, k3x, m3x, iHx = _kk_b(x, at2)
+        dk3 = k3x - w[_R_K3L * _LANES + i]
+        G = A * (k2x - w[_R_K2L * _LANES + i]) + beta * (m3x - w[_R_M3L * _LANES + i]) - (A * (1.0 + x * x) + beta * x) * dk3
+        gp = G > 0.0
+        a_ = x if gp else a_
+        b_ = b_ if gp else x
+        dG = -(2.0 * A * x + beta) * dk3
+        q = G / dG
+        xn = x - q if dG < 0.0 else b_
+        inside = (a_ <= xn) and (xn <= b_)
+        d = xn - x
+        conv = inside and (abs(d) <= 1e-6 * (1.0 + abs(x)))
+        xn = xn if inside else (b_ if gp else 0.5 * (a_ + b_))
+        act = st == _ST_NEWTON
+        w[_R_X * _LANES + i] = xn if act else x
+        w[_R_AA * _LANES + i] = a_ if act else w[_R_AA * _LANES + i]
+        w[_R_BB * _LANES + i] = b_ if act else w[_R_BB * _LANES + i]
+        # converged: atan(xn) to first order from atan(x) (error ~ step^2), as the scalar form
+        w[_R_AT * _LANES + i] = (at2 + d * iHx if conv else at2) if act else at_old
+        w[_R_ST * _LANES + i] = _ST_DONE if (act and conv) else st
+        nact += 1 if (act and not conv) else 0
+    return nact
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FM)
+def _batch_finish(w, nl):
+    """Pressure integrals of every lane from its pressurised interval [lo, x_2] (:func:`_station_dimless`'s
+    closed form, :func:`_station`'s scaling): rows _R_W = int p dx [N/m], _R_WX = int p x dx [N]."""
+    for i in range(nl):
+        st = w[_R_ST * _LANES + i]
+        A = w[_R_AM * _LANES + i]
+        beta = w[_R_BETA * _LANES + i]
+        lo = w[_R_LOM * _LANES + i]
+        hi = w[_R_HIM * _LANES + i]
+        x2 = w[_R_X * _LANES + i]
+        at2 = w[_R_AT * _LANES + i]
+        k2l, k3l, m3l, iHl = _kk_b(lo, 0.0)
+        k2x, k3x, m3x, iH2 = _kk_b(x2, at2)
+        H2 = 1.0 + x2 * x2
+        dk2 = k2x - k2l
+        dk3 = k3x - k3l
+        dm3 = m3x - m3l
+        gamma = -(A * H2 + beta * x2) if x2 < hi else -(A * dk2 + beta * dm3) / dk3
+        d1 = 0.5 * (iHl - iH2)
+        d2 = dm3
+        IP = -(A * d1 + beta * (dk2 - dk3) + gamma * d2)
+        IPxi = -0.5 * (A * (at2 - dk2) + beta * (d1 - d2) + gamma * (dk2 - dk3))
+        film = st != _ST_NONE
+        a = w[_R_A * _LANES + i]
+        L = w[_R_L * _LANES + i]
+        ia = 1.0 / a
+        s = L * L * ia * ia
+        w[_R_W * _LANES + i] = s * IP if film else 0.0
+        w[_R_WX * _LANES + i] = (s * L) * (IPxi * w[_R_MIR * _LANES + i]) if film else 0.0
+
+
+@njit(cache=True, fastmath=True)
+def _batch_solve(w, nl):
+    """Rows _R_W, _R_WX (int p dx [N/m], int p x dx [N]) of ``nl`` lanes from their line-contact problems (rows
+    _R_A, _R_L, _R_AM, _R_BETA, _R_LOM, _R_HIM, _R_MIR, _R_DAT): :func:`_station` of each lane, batched."""
+    _batch_classify(w, nl)
+    for _it in range(60):
+        if _batch_newton_sweep(w, nl) == 0:
+            break
+    for i in range(nl):  # lanes left iterating after 60 sweeps: the atan of their last iterate
+        if w[_R_ST * _LANES + i] == _ST_NEWTON:
+            w[_R_AT * _LANES + i] = _atan_diff(w[_R_X * _LANES + i], w[_R_LOM * _LANES + i])
+    _batch_finish(w, nl)
+    for i in range(nl):
+        if w[_R_ST * _LANES + i] == _ST_SHORT:  # cancellation-free form for a short interval (rare)
+            A = w[_R_AM * _LANES + i]
+            beta = w[_R_BETA * _LANES + i]
+            x2, IP, IPxi = _station_short(A, beta, w[_R_LOM * _LANES + i], -beta / (2.0 * A))
+            L = w[_R_L * _LANES + i]
+            a = w[_R_A * _LANES + i]
+            s = L * L / (a * a)
+            w[_R_W * _LANES + i] = s * IP
+            w[_R_WX * _LANES + i] = (s * L) * (IPxi * w[_R_MIR * _LANES + i])
+
+
+@njit(cache=True, fastmath=True, error_model="numpy")
+def pocket_film_wrench(ex, et, s0, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, R_out, hdm, n_st, tabulated=True):
+    """Film force and moment on the ball from a rigid isoviscous film in its cylindrical pocket.
+
+    Parameters
+    ----------
+    ex, et : ball-centre offset from the pocket axis in the pocket plane (x: cage axis,
+        t: circumferential) [m]; must satisfy |e| < c = R_p - R_b;
+    s0 : ball-centre offset along the pocket axis from the pocket centre (pitch radius) [m];
+    vx, vr, vt : ball-centre velocity relative to the pocket (cage frame) [m/s];
+    wx, wr, wt : ball angular velocity relative to the cage [rad/s];
+    eta : oil viscosity [Pa s]; Rb, Rp : ball and pocket radii [m]; R_bore, R_out : cage bore and
+    outside radii [m]; hdm : pocket-centre radius d_m/2 [m]; n_st : number of stations (even);
+    tabulated : the batched form with the tabulated rupture start (default); False = the scalar reference
+        (:func:`_pocket_film_wrench_reference`, Martin's start), the same roots to round-off.
+
+    Returns
+    -------
+    (Fx, Fr, Ft) : force on the ball [N]; (Mx, Mr, Mt) : moment on the ball about its centre [N m];
+    Wn : sum of the station pressure forces |int p dA| [N] (the film's normal load).
+    All in the pocket frame (x, r, t).  Sources: module docstring, [1]-[5].
+
+    Stations are solved :data:`_LANES` at a time (``_batch_*``: SIMD passes, docs/pocket.md "Cost"); a station
+    whose pressurised interval is short (:func:`_station_short`) is solved alone.
+    """
+    if not tabulated:
+        return _pocket_film_wrench_reference(ex, et, s0, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, R_out, hdm, n_st)
+    c = Rp - Rb
+    e = math.sqrt(ex * ex + et * et)
+    if e > 0.0:
+        cte, ste = ex / e, et / e
+    else:
+        cte, ste = 1.0, 0.0
+    k = math.sqrt(math.sqrt((c - e) / (c + e)))  # station_angle with half the exponent (docstring there)
+    Fx = Fr = Ft = 0.0
+    Mx = Mr = Mt = 0.0
+    Wn = 0.0
+    dtau = 2.0 * math.pi / n_st
+    w = np.empty(_NROWS * _LANES)
+    for c0 in range(0, n_st, _LANES):
+        nl = min(_LANES, n_st - c0)
+        for i in range(nl):  # tan(tau/2) of the station nodes tau = -pi + (i + 1/2) dtau
+            w[_R_TQ * _LANES + i] = _TQ_TABLE[i] if n_st == _TQ_N else math.tan(0.5 * (-math.pi + (c0 + i + 0.5) * dtau))
+        _batch_setup(w, nl, k, cte, ste, e, c, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, R_out, hdm, s0)
+        _batch_solve(w, nl)
+        for i in range(nl):
+            lo = w[_R_LO * _LANES + i]
+            hi = w[_R_HI * _LANES + i]
+            a = w[_R_A * _LANES + i]
+            # Couette integrals over the wetted wall: int dx/h, int x dx/h
+            I1 = w[_R_L * _LANES + i] * w[_R_DAT * _LANES + i] / a
+            I1x = Rb * math.log((1.0 + hi * hi) / (1.0 + lo * lo))
+            nx = w[_R_NX * _LANES + i]
+            nt = w[_R_NT * _LANES + i]
+            f = _station_wrench(w[_R_W * _LANES + i], w[_R_WX * _LANES + i], I1, I1x, eta, w[_R_DUU * _LANES + i],
+                                w[_R_DUS * _LANES + i], Rb, Rp * w[_R_DPH * _LANES + i] * dtau, nx, nt, -nt, nx)
+            Fx += f[0]
+            Fr += f[1]
+            Ft += f[2]
+            Mx += f[3]
+            Mr += f[4]
+            Mt += f[5]
+            Wn += f[6]
+    return Fx, Fr, Ft, Mx, Mr, Mt, Wn
 
 @njit(cache=True, inline="always")
 def pocket_film_gap(e, c, h_c):
@@ -564,15 +930,19 @@ def pocket_film_power(Fx, Fr, Ft, Mx, Mr, Mt, vx, vr, vt, wx, wr, wt):
     return -(Fx * vx + Fr * vr + Ft * vt + Mx * wx + Mr * wr + Mt * wt)
 
 
-@njit(cache=True)
-def pocket_wrench(ex, et, s0, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, R_out, hdm, n_st, h_c, K, mu, v0):
+@njit(cache=True, error_model="numpy")
+def pocket_wrench(kin, prm):
     """Total pocket wrench on the ball: film (rigid isoviscous, floored at h_c) + Hertz + boundary friction.
 
-    Returns (Fx, Fr, Ft, Mx, Mr, Mt, Q_film, Q_solid, P_film, P_boundary, P_S) in the pocket frame:
-    force [N] and moment about the ball centre [N m] on the ball, the film normal load, the Hertz
-    load, the powers dissipated by the film and by boundary friction [W] (sources ``pocket_film``
-    and ``pocket_boundary``) and the boundary friction force magnitude P_S [N].
+    ``kin`` : :data:`PocketKinematics` (offset and motion of the ball relative to its pocket); ``prm`` :
+    :data:`PocketParams`.  Returns a :data:`PocketWrench` in the pocket frame: force [N] and moment about the
+    ball centre [N m] on the ball, the film normal load, the Hertz load, the powers dissipated by the film
+    and by boundary friction [W] (sources ``pocket_film`` and ``pocket_boundary``) and the boundary friction
+    force magnitude P_S [N].
     """
+    ex, et, s0, vx, vr, vt, wx, wr, wt = kin.ex, kin.et, kin.s0, kin.vx, kin.vr, kin.vt, kin.wx, kin.wr, kin.wt
+    eta, Rb, Rp, R_bore, R_out, hdm = prm.eta, prm.Rb, prm.Rp, prm.R_bore, prm.R_out, prm.hdm
+    n_st, h_c, K, mu, v0 = prm.n_st, prm.h_c, prm.K, prm.mu, prm.v0
     c = Rp - Rb
     e = math.sqrt(ex * ex + et * et)
     Fx = Fr = Ft = Mx = Mr = Mt = 0.0
@@ -611,7 +981,7 @@ def pocket_wrench(ex, et, s0, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, R_out
                 Mr += pt * gx - px * gt
                 Mt += px * gr - pr * gx
                 Pb = fb * vs
-    return Fx, Fr, Ft, Mx, Mr, Mt, Qf, Qs, Pf, Pb, fb
+    return PocketWrench(Fx, Fr, Ft, Mx, Mr, Mt, Qf, Qs, Pf, Pb, fb)
 
 
 # numba bakes callees and captured constants into its cache: key the cache on them (compile_cache.py)
