@@ -27,7 +27,8 @@ from hsbearing.models.drag import cavity_oil_fraction, mixture_density
 from hsbearing.models.geometry import curvature_radii, derive
 from hsbearing.models.state import StateLayout
 
-__all__ = ["DynamicModel", "build_model", "simulate", "MODEL_DEFAULTS", "SOLVER_SETTINGS", "mechanical_energy"]
+__all__ = ["DynamicModel", "build_model", "simulate", "MODEL_DEFAULTS", "SOLVER_SETTINGS", "LINEAR_SOLVERS",
+           "arrowhead_structure", "mechanical_energy"]
 
 from hsbearing.balances import mechanical_energy  # noqa: E402  (defined there; no import circle)
 
@@ -56,6 +57,28 @@ MODEL_DEFAULTS = {
 #: per step with either, and CVODE still refreshes both at once on a convergence failure or a large change
 #: of gamma.  Applied when CVODE's solver memory can be reached (``counters_available``), else CVODE's defaults.
 SOLVER_SETTINGS = {"LSetupFrequency": 50, "JacEvalFrequency": 200}
+
+#: Linear solvers of CVODE's Newton iteration that :func:`simulate` accepts (``linear_solver=``): SUNDIALS'
+#: dense LU (default) or the arrowhead block LU of :mod:`hsbearing.solvers.arrowhead` (opt-in; measured in
+#: docs/dynamics.md, "Linear algebra").
+LINEAR_SOLVERS = ("dense", "arrowhead")
+
+
+def arrowhead_structure(layout):
+    """Arrowhead structure of the model's Jacobian: one block per ball (its 9 states, strided by Z in the state
+    vector), the cage and inner-ring states (22) as the border.
+
+    Balls touch the rings and the cage, never each other, so a ball's derivatives depend on its own states and
+    on the cage and ring states only; ``tests/test_arrowhead.py`` checks this against a column-by-column
+    finite-difference Jacobian of the kernel (no entry outside the structure) and derives the same blocks from
+    that pattern (:func:`hsbearing.solvers.arrowhead.structure_from_pattern`).
+    """
+    from hsbearing.solvers.arrowhead import ArrowheadStructure
+
+    Z = layout.Z
+    nq = layout.n_ball // Z
+    blocks = [np.arange(nq) * Z + j for j in range(Z)]
+    return ArrowheadStructure.from_blocks(layout.size, blocks, np.arange(layout.n_ball, layout.size))
 
 for _n, _d, _u, _l in [
     ("cage_center_x", ("time",), "m", "cage mass-centre axial displacement along X"),
@@ -357,7 +380,7 @@ def _time_grid(duration, dt):
 def simulate(case, duration=None, progress: bool = False, *, model: DynamicModel | None = None,
              rtol=None, atol=None, jacobian: str = "arrowhead", wall_limit=None, annotate: bool = True,
              y0=None, t0: float = 0.0, cvode_settings: dict | None = None, stop: str | None = None,
-             stop_rule: dict | None = None, **model_kwargs):
+             stop_rule: dict | None = None, linear_solver: str = "dense", **model_kwargs):
     """Integrate the dynamic model of ``case`` and return the run Dataset over ``time`` and ``ball``.
 
     Parameters
@@ -377,6 +400,8 @@ def simulate(case, duration=None, progress: bool = False, *, model: DynamicModel
         converged, :mod:`hsbearing.stoprule`; ``duration`` is the upper bound); None = ``[simulation] stop``.
         A converged run records ``stop_rule``, ``stopped_at`` (NaN when it ran to the bound) and ``stop_reason``.
     stop_rule : overrides of :data:`hsbearing.stoprule.STOP_DEFAULTS`
+    linear_solver : "dense" (SUNDIALS' dense LU, default) or "arrowhead" (block LU + Schur complement on the
+        Jacobian's ball blocks and cage/ring border, :func:`arrowhead_structure`; opt-in, docs/dynamics.md)
 
     Raises
     ------
@@ -388,6 +413,8 @@ def simulate(case, duration=None, progress: bool = False, *, model: DynamicModel
 
     if cvode_settings is None:
         cvode_settings = dict(SOLVER_SETTINGS) if counters_available() else {}
+    if linear_solver not in LINEAR_SOLVERS:
+        raise ValueError(f"linear_solver must be one of {', '.join(LINEAR_SOLVERS)}, got {linear_solver!r}")
     if isinstance(duration, str):
         from hsbearing.case import parse_quantity
 
@@ -416,7 +443,8 @@ def simulate(case, duration=None, progress: bool = False, *, model: DynamicModel
         res = integrate(m.rhs, m.y0 if y0 is None else np.asarray(y0, dtype=float), t_eval, rtol=rtol, atol=atol_v,
                         jacfn=m.jac if jacobian == "arrowhead" else None, progress=progress,
                         progress_desc=f"{case.name}", wall_limit=wall_limit, cvode_settings=cvode_settings,
-                        callback=monitor)
+                        callback=monitor, linsolver=linear_solver,
+                        structure=arrowhead_structure(m.layout) if linear_solver == "arrowhead" else None)
     except KeyboardInterrupt:  # an integrator that lets Ctrl-C through: nothing to keep
         raise Interrupted("interrupted before the first output") from None
     stats = dict(res.stats)
