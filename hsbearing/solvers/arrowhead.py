@@ -151,9 +151,10 @@ def outside_entries(pattern, structure: ArrowheadStructure) -> np.ndarray:
 
 # -------------------------------------------------------------------------------------------- compiled kernels
 def work_size(structure: "ArrowheadStructure") -> int:
-    """Length of the float64 workspace of :func:`factor`: the blocks D_k, X_k (over B_k), C_k and S, compact."""
+    """Length of the float64 workspace of :func:`factor`: the blocks D_k, X_k, C_k, then S, then X and C of all
+    blocks again, transposed (the layouts the solve streams through: axpys of length m and of length sum n_k)."""
     m = structure.border.size
-    return int(sum(s * s + 2 * s * m for s in structure.block_sizes) + m * m)
+    return int(sum(s * s + 2 * s * m for s in structure.block_sizes) + m * m + 2 * m * structure.idx.size)
 
 
 @nb.njit(cache=True, nogil=True)
@@ -293,6 +294,19 @@ def factor(a, n, idx, offsets, border, piv, work):
     info = _lu_rows(sm, m, piv, idx.size)
     if info != 0:
         return idx.size + info
+    nidx = idx.size
+    xt = work[ws + m * m:ws + m * m + m * nidx].reshape((m, nidx))
+    ct = work[ws + m * m + m * nidx:ws + m * m + 2 * m * nidx].reshape((nidx, m))
+    w0 = 0
+    for k in range(nbk):
+        o = offsets[k]
+        s = offsets[k + 1] - o
+        d, x, c, w1 = _views(work, offsets, m, k, w0)
+        w0 = w1
+        for i in range(s):
+            for q in range(m):
+                xt[q, o + i] = x[i, q]
+                ct[o + i, q] = c[q, i]
     return 0
 
 
@@ -305,37 +319,36 @@ def solve(n, idx, offsets, border, piv, work, x, y):
     nbk = offsets.size - 1
     m = border.size
     nidx = idx.size
+    ws = work.size - m * m - 2 * m * nidx
+    sm = work[ws:ws + m * m].reshape((m, m))
+    xt = work[ws + m * m:ws + m * m + m * nidx].reshape((m, nidx))
+    ct = work[ws + m * m + m * nidx:ws + m * m + 2 * m * nidx].reshape((nidx, m))
+    yi = y[:nidx]
     zb = y[nidx:nidx + m]
+    for i in range(nidx):
+        yi[i] = x[idx[i]]
     for r in range(m):
         zb[r] = x[border[r]]
     w0 = 0
-    for k in range(nbk):  # y_k = D_k^{-1} r_k ; r_b -= C_k y_k
+    for k in range(nbk):  # y_k = D_k^{-1} r_k
         o = offsets[k]
         s = offsets[k + 1] - o
-        d, xk, c, w1 = _views(work, offsets, m, k, w0)
-        w0 = w1
-        yk = y[o:o + s]
-        for i in range(s):
-            yk[i] = x[idx[o + i]]
-        _lu_solve_rows(d, s, piv, o, yk)
-        for r in range(m):
-            acc = 0.0
-            for j in range(s):
-                acc += c[r, j] * yk[j]
-            zb[r] -= acc
-    sm = work[w0:w0 + m * m].reshape((m, m))
-    _lu_solve_rows(sm, m, piv, nidx, zb)
-    w0 = 0
-    for k in range(nbk):  # z_k = y_k - X_k z_b
-        o = offsets[k]
-        s = offsets[k + 1] - o
-        d, xk, c, w1 = _views(work, offsets, m, k, w0)
-        w0 = w1
-        for i in range(s):
-            acc = y[o + i]
-            for q in range(m):
-                acc -= xk[i, q] * zb[q]
-            x[idx[o + i]] = acc
+        d = work[w0:w0 + s * s].reshape((s, s))
+        w0 += s * s + 2 * s * m
+        _lu_solve_rows(d, s, piv, o, yi[o:o + s])
+    for i in range(nidx):  # r_b -= C y
+        v = yi[i]
+        if v != 0.0:
+            for r in range(m):
+                zb[r] -= ct[i, r] * v
+    _lu_solve_rows(sm, m, piv, nidx, zb)  # S z_b = r_b - C y
+    for q in range(m):  # z = y - X z_b
+        v = zb[q]
+        if v != 0.0:
+            for i in range(nidx):
+                yi[i] -= xt[q, i] * v
+    for i in range(nidx):
+        x[idx[i]] = yi[i]
     for r in range(m):
         x[border[r]] = zb[r]
     return 0
