@@ -59,8 +59,8 @@ MODEL_DEFAULTS = {
 SOLVER_SETTINGS = {"LSetupFrequency": 50, "JacEvalFrequency": 200}
 
 #: Linear solvers of CVODE's Newton iteration that :func:`simulate` accepts (``linear_solver=``): SUNDIALS'
-#: dense LU (default) or the arrowhead block LU of :mod:`hsbearing.solvers.arrowhead` (opt-in; measured in
-#: docs/dynamics.md, "Linear algebra").
+#: dense LU or the arrowhead block LU of :mod:`hsbearing.solvers.arrowhead` (the default where it can be installed,
+#: :func:`hsbearing.solvers.cvode.arrowhead_available`; measured in docs/dynamics.md, "Linear algebra").
 LINEAR_SOLVERS = ("dense", "arrowhead")
 
 
@@ -380,7 +380,7 @@ def _time_grid(duration, dt):
 def simulate(case, duration=None, progress: bool = False, *, model: DynamicModel | None = None,
              rtol=None, atol=None, jacobian: str = "arrowhead", wall_limit=None, annotate: bool = True,
              y0=None, t0: float = 0.0, cvode_settings: dict | None = None, stop: str | None = None,
-             stop_rule: dict | None = None, linear_solver: str = "dense", **model_kwargs):
+             stop_rule: dict | None = None, linear_solver: str | None = None, **model_kwargs):
     """Integrate the dynamic model of ``case`` and return the run Dataset over ``time`` and ``ball``.
 
     Parameters
@@ -400,8 +400,10 @@ def simulate(case, duration=None, progress: bool = False, *, model: DynamicModel
         converged, :mod:`hsbearing.stoprule`; ``duration`` is the upper bound); None = ``[simulation] stop``.
         A converged run records ``stop_rule``, ``stopped_at`` (NaN when it ran to the bound) and ``stop_reason``.
     stop_rule : overrides of :data:`hsbearing.stoprule.STOP_DEFAULTS`
-    linear_solver : "dense" (SUNDIALS' dense LU, default) or "arrowhead" (block LU + Schur complement on the
-        Jacobian's ball blocks and cage/ring border, :func:`arrowhead_structure`; opt-in, docs/dynamics.md)
+    linear_solver : "arrowhead" (block LU + Schur complement on the Jacobian's ball blocks and cage/ring border,
+        :func:`arrowhead_structure`; docs/dynamics.md, "Linear algebra") or "dense" (SUNDIALS' dense LU); None =
+        "arrowhead" where it can be installed (:func:`hsbearing.solvers.cvode.arrowhead_available`), else "dense".
+        With jacobian="cvode" always "dense".
 
     Raises
     ------
@@ -409,10 +411,12 @@ def simulate(case, duration=None, progress: bool = False, *, model: DynamicModel
     hsbearing.errors.Interrupted (a KeyboardInterrupt) on Ctrl-C, with ``partial`` = the Dataset up to
     the last output (status "interrupted at t = ...").
     """
-    from hsbearing.solvers.cvode import counters_available, integrate
+    from hsbearing.solvers.cvode import arrowhead_available, counters_available, integrate
 
     if cvode_settings is None:
         cvode_settings = dict(SOLVER_SETTINGS) if counters_available() else {}
+    if linear_solver is None:
+        linear_solver = "arrowhead" if jacobian == "arrowhead" and arrowhead_available() else "dense"
     if linear_solver not in LINEAR_SOLVERS:
         raise ValueError(f"linear_solver must be one of {', '.join(LINEAR_SOLVERS)}, got {linear_solver!r}")
     if isinstance(duration, str):

@@ -158,6 +158,14 @@ def test_model_jacobian_is_an_arrowhead_checked_by_finite_differences():
         assert p[np.ix_(balls, st.border)].any() and p[np.ix_(st.border, balls)].any()  # a real border
 
 
+def test_arrowhead_is_available_in_this_build():
+    """The locked scikit-sundae build is the one whose layout the hook checks: the default must not silently
+    fall back to the dense solver here (a new build that fails the checks shows up as this failure)."""
+    from hsbearing.solvers.cvode import arrowhead_available
+
+    assert arrowhead_available()
+
+
 def test_simulate_with_the_arrowhead_solver_runs_and_records_it():
     from hsbearing import dynamics
     from hsbearing.case import load_case
@@ -167,8 +175,11 @@ def test_simulate_with_the_arrowhead_solver_runs_and_records_it():
         pytest.skip("CVODE's solver memory is not reachable with this scikit-sundae build")
     case = load_case("zhang2016")
     m = dynamics.build_model(case)
-    d = dynamics.simulate(case, 0.002, model=m, annotate=False)
+    d = dynamics.simulate(case, 0.002, model=m, annotate=False, linear_solver="dense")
     a = dynamics.simulate(case, 0.002, model=m, annotate=False, linear_solver="arrowhead")
+    default = dynamics.simulate(case, 0.002, model=m, annotate=False)  # the default where it can be installed
+    assert default.attrs["solver_linear_solver"] == a.attrs["solver_linear_solver"]
+    np.testing.assert_array_equal(default["cage_speed"].values, a["cage_speed"].values)
     assert a.attrs["solver_linear_solver"].startswith("arrowhead block LU") and d.attrs["solver_linear_solver"] == "dense"
     # chaotic cage: the trajectories differ from the last bits on, the mean cage speed over 2 ms does not
     assert float(a["cage_speed"].mean()) == pytest.approx(float(d["cage_speed"].mean()), rel=1e-3)

@@ -462,21 +462,27 @@ def _hook_solve(ls, mat, x, b):
     return 0
 
 
-check_compile_cache(globals())  # after the last cached function (numba caches keyed on sources and constants)
+check_compile_cache(globals())  # before the C callbacks below are compiled (or loaded from numba's cache)
 
-_CALLBACKS = None
+
+@nb.cfunc(types.intc(types.voidptr, types.voidptr), nogil=True, cache=True)
+def _setup_cb(ls, mat):
+    """C callback ``int setup(SUNLinearSolver, SUNMatrix)``."""
+    return _hook_setup(ls, mat)
+
+
+@nb.cfunc(types.intc(types.voidptr, types.voidptr, types.voidptr, types.voidptr, types.double), nogil=True, cache=True)
+def _solve_cb(ls, mat, x, b, tol):
+    """C callback ``int solve(SUNLinearSolver, SUNMatrix, N_Vector x, N_Vector b, sunrealtype tol)``."""
+    return _hook_solve(ls, mat, x, b)
+
+
+check_compile_cache(globals())  # after the last cached function (numba caches keyed on sources and constants)
 
 
 def _callbacks():
-    """The two C callbacks (compiled on first use; the kernels they call come from numba's cache)."""
-    global _CALLBACKS
-    if _CALLBACKS is None:
-        setup = nb.cfunc(types.intc(types.voidptr, types.voidptr), nogil=True)(
-            lambda ls, mat: _hook_setup(ls, mat))
-        solve_cb = nb.cfunc(types.intc(types.voidptr, types.voidptr, types.voidptr, types.voidptr, types.double),
-                            nogil=True)(lambda ls, mat, x, b, tol: _hook_solve(ls, mat, x, b))
-        _CALLBACKS = (setup, solve_cb)
-    return _CALLBACKS
+    """The two C callbacks (compiled once, then loaded from numba's on-disk cache)."""
+    return _setup_cb, _solve_cb
 
 
 def _sundials_lib(stem: str):

@@ -51,7 +51,7 @@ from typing import Callable
 import numpy as np
 import sksundae as sun
 
-__all__ = ["IntegrationResult", "integrate", "counters_available"]
+__all__ = ["IntegrationResult", "integrate", "counters_available", "arrowhead_available"]
 
 
 @dataclass
@@ -198,6 +198,20 @@ def counters_available() -> bool:
     solver = sun.cvode.CVODE(lambda t, y, yp: None)
     solver.init_step(0.0, np.zeros(1))
     return _CvodeCounters.locate(solver) is not None
+
+
+@functools.lru_cache(maxsize=1)
+def arrowhead_available() -> bool:
+    """True if ``linsolver="arrowhead"`` can be installed in this scikit-sundae build (checked once per process on a
+    3-state problem: block 0-1, border 2)."""
+    from hsbearing.solvers.arrowhead import ArrowheadStructure
+
+    try:
+        r = integrate(lambda t, y, yd: yd.__setitem__(slice(None), -y), np.ones(3), [0.0, 1e-3], linsolver="arrowhead",
+                      structure=ArrowheadStructure.from_blocks(3, [[0, 1]], [2]), stepping="normal")
+    except RuntimeError:
+        return False
+    return r.success and abs(float(r.y[-1, 0]) - math.exp(-1e-3)) < 1e-6
 
 
 # --------------------------------------------------------------------------------------------------------------
