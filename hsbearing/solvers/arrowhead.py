@@ -55,7 +55,8 @@ __all__ = ["ArrowheadStructure", "structure_from_pattern", "outside_entries", "f
            "ArrowheadLU", "work_size", "install", "uninstall", "LUFACT_FAIL"]
 
 #: SUNDIALS' recoverable "LU factorisation failed" code (SUNLS_LUFACT_FAIL of sundials_linearsolver.h), the
-#: value SUNDIALS' dense solver returns for a zero pivot; CVODE then retries the step with a new Jacobian/step.
+#: value SUNDIALS' dense solver returns for a zero pivot (checked: SUNLinSolSetup_Dense of the SUNDIALS 7.9 bundled
+#: with scikit-sundae 1.2 returns 808 on a zero matrix); CVODE then retries the step with a new Jacobian/step.
 LUFACT_FAIL = 808
 
 

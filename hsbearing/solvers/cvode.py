@@ -202,16 +202,30 @@ def counters_available() -> bool:
 
 @functools.lru_cache(maxsize=1)
 def arrowhead_available() -> bool:
-    """True if ``linsolver="arrowhead"`` can be installed in this scikit-sundae build (checked once per process on a
-    3-state problem: block 0-1, border 2)."""
-    from hsbearing.solvers.arrowhead import ArrowheadStructure
+    """True if ``linsolver="arrowhead"`` can be installed in this scikit-sundae build.
 
-    try:
-        r = integrate(lambda t, y, yd: yd.__setitem__(slice(None), -y), np.ones(3), [0.0, 1e-3], linsolver="arrowhead",
-                      structure=ArrowheadStructure.from_blocks(3, [[0, 1]], [2]), stepping="normal")
-    except RuntimeError:
+    Checked once per process on its own 3-state problem y' = -y (block {0, 1}, border {2}), integrated to 1 ms
+    with the hook installed and compared with exp(-t); the hook is removed again before the solver is freed.
+    """
+    from hsbearing.solvers.arrowhead import ArrowheadStructure, HookError
+
+    solver = sun.cvode.CVODE(lambda t, y, yd: yd.__setitem__(slice(None), -y), method="BDF", rtol=1e-8, atol=1e-12,
+                             linsolver="dense", jacfn=lambda t, y, yd, JJ: JJ.__setitem__(slice(None), -np.eye(3)))
+    if not solver.init_step(0.0, np.ones(3)).success:
         return False
-    return r.success and abs(float(r.y[-1, 0]) - math.exp(-1e-3)) < 1e-6
+    counters = _CvodeCounters.locate(solver)
+    try:
+        hook = _install_arrowhead(solver, counters, ArrowheadStructure.from_blocks(3, [[0, 1]], [2]))
+    except (RuntimeError, HookError):
+        return False
+    try:
+        r = solver.step(1e-3, method="normal", tstop=1e-3)
+        ok = r.status >= 0 and float(np.max(np.abs(np.asarray(r.y) - math.exp(-1e-3)))) < 1e-7
+    finally:
+        from hsbearing.solvers.arrowhead import uninstall
+
+        uninstall(hook)
+    return bool(ok)
 
 
 # --------------------------------------------------------------------------------------------------------------
