@@ -66,7 +66,9 @@ def main(argv=None) -> int:
     ap.add_argument("--repeat", type=int, default=1, help="best of N for every timed integration")
     ap.add_argument("--no-scipy", action="store_true", help="skip scipy solve_ivp")
     ap.add_argument("--no-onestep", action="store_true", help="skip CVODE one-step mode (the previous path)")
-    ap.add_argument("--linsolver", default="dense", help="scikit-sundae linear solver for CVODE (dense, lapackdense)")
+    ap.add_argument("--linsolver", default="dense",
+                    help="CVODE linear solver: dense, lapackdense, arrowhead (block LU + Schur complement; "
+                         "benchmarks/bench_linsolver.py compares it with dense in one sitting)")
     args = ap.parse_args(argv)
     spans = [float(s) for s in args.spans.split(",")]
 
@@ -89,6 +91,7 @@ def main(argv=None) -> int:
     atol = m.layout.atol(case.simulation.atol)
     dt = case.simulation.output_interval
     L = m.layout
+    structure = dy.arrowhead_structure(L) if args.linsolver == "arrowhead" else None
 
     def f(t, yy):  # scipy's calling convention; scipy may pass non-contiguous columns
         out = np.empty(yy.size)
@@ -103,7 +106,8 @@ def main(argv=None) -> int:
     from scipy.integrate import solve_ivp
 
     # warm-up: every array specialisation the timed runs will use
-    integrate(m.rhs, m.y0, np.linspace(0, 1e-4, 3), rtol=rtol, atol=atol, jacfn=m.jac, linsolver=args.linsolver)
+    integrate(m.rhs, m.y0, np.linspace(0, 1e-4, 3), rtol=rtol, atol=atol, jacfn=m.jac, linsolver=args.linsolver,
+              structure=structure)
     if not args.no_scipy:
         for jj in (None, jac):
             solve_ivp(f, (0.0, 2e-6), m.y0, method="BDF", rtol=rtol, atol=atol, **({"jac": jj} if jj else {}))
@@ -125,7 +129,7 @@ def main(argv=None) -> int:
         def go():
             c0, w0 = time.process_time(), time.perf_counter()
             r = integrate(m.rhs, m.y0, t_eval, rtol=rtol, atol=atol, jacfn=m.jac, stepping=stepping,
-                          linsolver=args.linsolver, cvode_settings=settings)
+                          linsolver=args.linsolver, cvode_settings=settings, structure=structure)
             return r, time.perf_counter() - w0, time.process_time() - c0
 
         return _best(go, args.repeat)

@@ -27,7 +27,8 @@ from hsbearing.models.drag import ball_drag_coefficient, cavity_oil_fraction, mi
 from hsbearing.models.geometry import curvature_radii, derive
 from hsbearing.models.state import StateLayout
 
-__all__ = ["DynamicModel", "build_model", "simulate", "MODEL_DEFAULTS", "SOLVER_SETTINGS", "mechanical_energy"]
+__all__ = ["DynamicModel", "build_model", "simulate", "MODEL_DEFAULTS", "SOLVER_SETTINGS", "LINEAR_SOLVERS",
+           "arrowhead_structure", "mechanical_energy"]
 
 from hsbearing.balances import mechanical_energy  # noqa: E402  (defined there; no import circle)
 
@@ -56,6 +57,28 @@ MODEL_DEFAULTS = {
 #: per step with either, and CVODE still refreshes both at once on a convergence failure or a large change
 #: of gamma.  Applied when CVODE's solver memory can be reached (``counters_available``), else CVODE's defaults.
 SOLVER_SETTINGS = {"LSetupFrequency": 50, "JacEvalFrequency": 200}
+
+#: Linear solvers of CVODE's Newton iteration that :func:`simulate` accepts (``linear_solver=``): SUNDIALS'
+#: dense LU or the arrowhead block LU of :mod:`hsbearing.solvers.arrowhead` (the default where it can be installed,
+#: :func:`hsbearing.solvers.cvode.arrowhead_available`; measured in docs/dynamics.md, "Linear algebra").
+LINEAR_SOLVERS = ("dense", "arrowhead")
+
+
+def arrowhead_structure(layout):
+    """Arrowhead structure of the model's Jacobian: one block per ball (its 9 states, strided by Z in the state
+    vector), the cage and inner-ring states (22) as the border.
+
+    Balls touch the rings and the cage, never each other, so a ball's derivatives depend on its own states and
+    on the cage and ring states only; ``tests/test_arrowhead.py`` checks this against a column-by-column
+    finite-difference Jacobian of the kernel (no entry outside the structure) and derives the same blocks from
+    that pattern (:func:`hsbearing.solvers.arrowhead.structure_from_pattern`).
+    """
+    from hsbearing.solvers.arrowhead import ArrowheadStructure
+
+    Z = layout.Z
+    nq = layout.n_ball // Z
+    blocks = [np.arange(nq) * Z + j for j in range(Z)]
+    return ArrowheadStructure.from_blocks(layout.size, blocks, np.arange(layout.n_ball, layout.size))
 
 for _n, _d, _u, _l in [
     ("cage_center_x", ("time",), "m", "cage mass-centre axial displacement along X"),
@@ -379,7 +402,7 @@ def _time_grid(duration, dt):
 def simulate(case, duration=None, progress: bool = False, *, model: DynamicModel | None = None,
              rtol=None, atol=None, jacobian: str = "arrowhead", wall_limit=None, annotate: bool = True,
              y0=None, t0: float = 0.0, cvode_settings: dict | None = None, stop: str | None = None,
-             stop_rule: dict | None = None, **model_kwargs):
+             stop_rule: dict | None = None, linear_solver: str | None = None, **model_kwargs):
     """Integrate the dynamic model of ``case`` and return the run Dataset over ``time`` and ``ball``.
 
     Parameters
@@ -399,6 +422,10 @@ def simulate(case, duration=None, progress: bool = False, *, model: DynamicModel
         converged, :mod:`hsbearing.stoprule`; ``duration`` is the upper bound); None = ``[simulation] stop``.
         A converged run records ``stop_rule``, ``stopped_at`` (NaN when it ran to the bound) and ``stop_reason``.
     stop_rule : overrides of :data:`hsbearing.stoprule.STOP_DEFAULTS`
+    linear_solver : "arrowhead" (block LU + Schur complement on the Jacobian's ball blocks and cage/ring border,
+        :func:`arrowhead_structure`; docs/dynamics.md, "Linear algebra") or "dense" (SUNDIALS' dense LU); None =
+        "arrowhead" where it can be installed (:func:`hsbearing.solvers.cvode.arrowhead_available`), else "dense".
+        With jacobian="cvode" always "dense".
 
     Raises
     ------
@@ -406,10 +433,14 @@ def simulate(case, duration=None, progress: bool = False, *, model: DynamicModel
     hsbearing.errors.Interrupted (a KeyboardInterrupt) on Ctrl-C, with ``partial`` = the Dataset up to
     the last output (status "interrupted at t = ...").
     """
-    from hsbearing.solvers.cvode import counters_available, integrate
+    from hsbearing.solvers.cvode import arrowhead_available, counters_available, integrate
 
     if cvode_settings is None:
         cvode_settings = dict(SOLVER_SETTINGS) if counters_available() else {}
+    if linear_solver is None:
+        linear_solver = "arrowhead" if jacobian == "arrowhead" and arrowhead_available() else "dense"
+    if linear_solver not in LINEAR_SOLVERS:
+        raise ValueError(f"linear_solver must be one of {', '.join(LINEAR_SOLVERS)}, got {linear_solver!r}")
     if isinstance(duration, str):
         from hsbearing.case import parse_quantity
 
@@ -438,7 +469,8 @@ def simulate(case, duration=None, progress: bool = False, *, model: DynamicModel
         res = integrate(m.rhs, m.y0 if y0 is None else np.asarray(y0, dtype=float), t_eval, rtol=rtol, atol=atol_v,
                         jacfn=m.jac if jacobian == "arrowhead" else None, progress=progress,
                         progress_desc=f"{case.name}", wall_limit=wall_limit, cvode_settings=cvode_settings,
-                        callback=monitor)
+                        callback=monitor, linsolver=linear_solver,
+                        structure=arrowhead_structure(m.layout) if linear_solver == "arrowhead" else None)
     except KeyboardInterrupt:  # an integrator that lets Ctrl-C through: nothing to keep
         raise Interrupted("interrupted before the first output") from None
     stats = dict(res.stats)

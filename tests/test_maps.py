@@ -142,3 +142,29 @@ def test_plot_map_marks_not_ok_points(tmp_path):
 
     with Image.open(p) as im:
         assert "3 of 4 points ok" in im.info.get("Description", "")
+
+
+def test_map_stop_stats_tool_reads_a_finished_map(local_map):
+    """tools/map_stop_stats.py on the 2 x 2 map of 5 ms runs: the stop rule's first check is at 0.4 s, so no
+    point can have stopped early and every point ran to the 5 ms bound."""
+    out, r0 = local_map
+    assert r0.returncode == 0
+    tool = Path(__file__).resolve().parents[1] / "tools" / "map_stop_stats.py"
+    r = subprocess.run([sys.executable, str(tool), str(out)], capture_output=True, text=True, timeout=300)
+    assert r.returncode == 0, r.stderr[-2000:]
+    assert "4 points with archives; 0 stopped early by the stop rule, 4 ran to the 0.005 s bound" in r.stdout
+    assert len([ln for ln in r.stdout.splitlines() if "stop bound" in ln]) == 4
+    r = subprocess.run([sys.executable, str(tool), str(out / "nothing")], capture_output=True, text=True, timeout=300)
+    assert r.returncode == 2 and "no map.nc" in r.stderr
+
+
+def test_run_map_dask_tool_refuses_bad_input_before_starting_a_cluster(tmp_path):
+    tool = Path(__file__).resolve().parents[1] / "tools" / "run_map_dask.py"
+    common = ["zhang2016", "--x", X, "--y", Y, "-o", str(tmp_path / "m")]
+    r = subprocess.run([sys.executable, str(tool), "--workers", "0", "--", *common], capture_output=True, text=True,
+                       timeout=300)
+    assert r.returncode == 2 and "--workers must be >= 1" in r.stderr
+    r = subprocess.run([sys.executable, str(tool), "--", *common, "--scheduler", "tcp://127.0.0.1:1"],
+                       capture_output=True, text=True, timeout=300)
+    assert r.returncode == 2 and "--scheduler is set by this script" in r.stderr
+    assert not (tmp_path / "m").exists()

@@ -51,7 +51,7 @@ from typing import Callable
 import numpy as np
 import sksundae as sun
 
-__all__ = ["IntegrationResult", "integrate", "counters_available"]
+__all__ = ["IntegrationResult", "integrate", "counters_available", "arrowhead_available"]
 
 
 @dataclass
@@ -200,6 +200,34 @@ def counters_available() -> bool:
     return _CvodeCounters.locate(solver) is not None
 
 
+@functools.lru_cache(maxsize=1)
+def arrowhead_available() -> bool:
+    """True if ``linsolver="arrowhead"`` can be installed in this scikit-sundae build.
+
+    Checked once per process on its own 3-state problem y' = -y (block {0, 1}, border {2}), integrated to 1 ms
+    with the hook installed and compared with exp(-t); the hook is removed again before the solver is freed.
+    """
+    from hsbearing.solvers.arrowhead import ArrowheadStructure, HookError
+
+    solver = sun.cvode.CVODE(lambda t, y, yd: yd.__setitem__(slice(None), -y), method="BDF", rtol=1e-8, atol=1e-12,
+                             linsolver="dense", jacfn=lambda t, y, yd, JJ: JJ.__setitem__(slice(None), -np.eye(3)))
+    if not solver.init_step(0.0, np.ones(3)).success:
+        return False
+    counters = _CvodeCounters.locate(solver)
+    try:
+        hook = _install_arrowhead(solver, counters, ArrowheadStructure.from_blocks(3, [[0, 1]], [2]))
+    except (RuntimeError, HookError):
+        return False
+    try:
+        r = solver.step(1e-3, method="normal", tstop=1e-3)
+        ok = r.status >= 0 and float(np.max(np.abs(np.asarray(r.y) - math.exp(-1e-3)))) < 1e-7
+    finally:
+        from hsbearing.solvers.arrowhead import uninstall
+
+        uninstall(hook)
+    return bool(ok)
+
+
 # --------------------------------------------------------------------------------------------------------------
 @dataclass
 class _Progress:
@@ -232,6 +260,7 @@ def integrate(
     callback: Callable | None = None,
     stepping: str = "auto",
     cvode_settings: dict | None = None,
+    structure=None,
 ) -> IntegrationResult:
     """Integrate ``rhs(t, y, ydot)`` (in place) from ``t_eval[0]`` through ``t_eval``.
 
@@ -245,7 +274,11 @@ def integrate(
     max_step, first_step, max_order : CVODE options (0 = CVODE default).
     max_num_steps : internal steps per CVODE call (normal mode: a call that takes this many steps without reaching
         the output time is resumed while time advances, with the wall limit checked in between).
-    linsolver : scikit-sundae linear solver ("dense": SUNDIALS' own dense LU, "lapackdense": LAPACK).
+    linsolver : linear solver of the Newton iteration: "dense" (SUNDIALS' own dense LU), "lapackdense" (LAPACK),
+        or "arrowhead": the dense matrix CVODE forms, factorised by the block LU + Schur complement of
+        :mod:`hsbearing.solvers.arrowhead` (``structure`` required; zeros outside the structure are never read,
+        so the Jacobian must have none there).  Needs CVODE's solver memory (as the counters do).
+    structure : :class:`hsbearing.solvers.arrowhead.ArrowheadStructure` of the Jacobian, for "arrowhead".
     progress : show a tqdm bar of simulated time with ETA (stderr), updated at each output.
     wall_limit : stop (status "failed ... wall-time limit") after this many seconds; checked at each output in
         normal mode, at each internal step in one-step mode.
@@ -264,7 +297,12 @@ def integrate(
     y0 = np.ascontiguousarray(y0, dtype=float)
     ys = np.empty((t_eval.size, y0.size))
     ys[0] = y0
-    options = dict(method=method, rtol=rtol, atol=atol, max_num_steps=max_num_steps, linsolver=linsolver)
+    if linsolver == "arrowhead":
+        if structure is None or structure.n != y0.size:
+            raise ValueError("linsolver='arrowhead' needs the arrowhead structure of the Jacobian (structure=), "
+                             f"of size {y0.size}")
+    options = dict(method=method, rtol=rtol, atol=atol, max_num_steps=max_num_steps,
+                   linsolver="dense" if linsolver == "arrowhead" else linsolver)
     if jacfn is not None:
         options["jacfn"] = jacfn
     if max_step:
@@ -287,11 +325,14 @@ def integrate(
     counters = None
     normal = False
     stopped = None
+    hook = None
     try:
         init = solver.init_step(t0, y0)
         if not init.success:
             raise _Failure(t0, init.message)
         counters = _CvodeCounters.locate(solver)
+        if linsolver == "arrowhead":
+            hook = _install_arrowhead(solver, counters, structure)
         if counters is None and stepping == "normal":
             raise RuntimeError("normal-mode stepping needs CVODE's counters, which cannot be read with "
                                f"scikit-sundae {sun.__version__}; use stepping='onestep'")
@@ -306,6 +347,10 @@ def integrate(
     except KeyboardInterrupt:
         status = f"failed at t = {float(t_eval[pr.k_done - 1]):.6g} s: interrupted"
     finally:
+        if hook is not None:
+            from hsbearing.solvers.arrowhead import uninstall
+
+            uninstall(hook)  # before scikit-sundae frees its dense solver
         if bar is not None:
             bar.close()
     wall = _time.perf_counter() - wall0
@@ -318,7 +363,8 @@ def integrate(
         "rtol": rtol,
         "atol": float(np.min(atol)) if np.ndim(atol) else float(atol),
         "jacobian": "user" if jacfn is not None else "CVODE finite differences",
-        "linear_solver": linsolver,
+        "linear_solver": linsolver if hook is None else f"arrowhead block LU + Schur complement "
+                                                          f"({structure.describe()}) in CVODE's dense interface",
     }
     if stopped is not None:
         stats["stopped_by_callback"] = float(stopped)
@@ -339,6 +385,29 @@ def integrate(
                              "not available")
     k = pr.k_done
     return IntegrationResult(t=t_eval[:k].copy(), y=ys[:k].copy(), status=status, stats=stats)
+
+
+def _install_arrowhead(solver, counters, structure):
+    """Swap the arrowhead factorisation into the dense linear solver scikit-sundae attached (see arrowhead.install).
+
+    The solver, its matrix and a state vector are read from scikit-sundae 1.2's ``CVODE`` extension object
+    (fields ``mem, ctx, atol, constraints, yy, A, LS`` after the vtable, ``_cy_cvode.pyx``) only when the
+    counters' checks of that layout passed; :func:`hsbearing.solvers.arrowhead.install` checks the rest against
+    the SUNDIALS libraries before writing anything.
+    """
+    from hsbearing.solvers.arrowhead import HookError, install
+
+    if counters is None:
+        raise RuntimeError("linsolver='arrowhead' needs CVODE's solver memory, which cannot be reached with "
+                           f"scikit-sundae {sun.__version__}")
+    cy = getattr(solver, "_CVODE__CVODE")
+    words = (ctypes.c_void_p * 8).from_address(id(cy) + _CvodeCounters._HEADER)
+    if words[1] != counters.mem.value or not (words[5] and words[6] and words[7]):
+        raise RuntimeError("linsolver='arrowhead': scikit-sundae's solver layout is not the one checked")
+    try:
+        return install(words[7], words[6], words[5], structure)
+    except HookError as exc:
+        raise RuntimeError(f"linsolver='arrowhead' cannot be installed: {exc}") from None
 
 
 def _normal_loop(solver, counters, t_eval, ys, pr, wall0, wall_limit, callback, bar):
