@@ -122,6 +122,13 @@ def main(argv=None) -> int:
           f"{t_ker[0] * 1e6:.2f} / {t_ker[1] * 1e6:.2f} us (bare kernel); "
           f"Jacobian: {t_jac[0] * 1e6:.0f} / {t_jac[1] * 1e6:.0f} us per call ({t_jac[1] / t_ker[1]:.0f} kernel-equivalents)")
     rhs_us, jac_us = t_rhs[1] * 1e6, t_jac[1] * 1e6  # CPU per call, the least load-sensitive figure
+    # the physical traction model (issue 26) on the same case and state: its cost in the rhs
+    m_ey = dy.build_model(h.load_case(args.case, **{"lubricant.traction_law": "eyring"}))
+    yd_ey = np.empty_like(y)
+    m_ey.rhs(0.0, m_ey.y0, yd_ey)
+    t_ey = _timeit(lambda: m_ey.rhs(0.0, m_ey.y0, yd_ey), 5000)
+    print(f"rhs with the physical traction model (traction_law = eyring): {t_ey[1] * 1e6:.2f} us CPU per call "
+          f"({t_ey[1] / t_rhs[1]:.2f}x the case's own law)")
 
     def cvode_run(span, stepping, settings):
         t_eval = dy._time_grid(span, min(dt, span))

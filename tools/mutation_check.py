@@ -36,7 +36,8 @@ EXPECTED_TERM = {"slide_roll_half": "aux T_roll_i", "pocket_entrainment": "aux Q
                  "land_speed_sign": "land force (F_cy, F_cz)"}
 MUTATIONS = {
     "slide_roll_half": (
-        "hsbearing/models/kernel.py", "mu_nb(A, B, C, Dd, sreg * iU)", "mu_nb(A, B, C, Dd, 0.5 * sreg * iU)",
+        "hsbearing/models/kernel.py", "traction_mu_nb(p.traction.law_id, tc, sreg * iU, qu[k])",
+        "traction_mu_nb(p.traction.law_id, tc, 0.5 * sreg * iU, qu[k])",
         "halve the slide-roll ratio the kernel passes to the traction law"),
     "pocket_entrainment": (
         "hsbearing/models/pocket.py", "Ue = dUu - 2.0 * vr", "Ue = dUu - vr",
