@@ -264,16 +264,24 @@ def test_second_ctrl_c_during_the_save_keeps_the_partial_run(tmp_path, monkeypat
         sum(range(1000))  # give the interpreter bytecodes at which a handler runs
         return real_to_netcdf(self, *a, **k)
 
-    monkeypatch.setattr(hsbearing, "simulate", interrupted)
-    monkeypatch.setattr(xr.Dataset, "to_netcdf", to_netcdf_with_ctrl_c)
-    out = tmp_path / "part.nc"
-    rc = cli.main(["run", "-q", "--no-plot", "-o", str(out)])
+    # a process started in the background without job control inherits SIGINT ignored (then Python installs no
+    # KeyboardInterrupt handler and the signals below would do nothing): run under Python's own handler
+    # wherever the suite is started, and put the inherited disposition back afterwards
+    inherited = signal.signal(signal.SIGINT, signal.default_int_handler)
+    try:
+        monkeypatch.setattr(hsbearing, "simulate", interrupted)
+        monkeypatch.setattr(xr.Dataset, "to_netcdf", to_netcdf_with_ctrl_c)
+        out = tmp_path / "part.nc"
+        rc = cli.main(["run", "-q", "--no-plot", "-o", str(out)])
+        handler_after = signal.getsignal(signal.SIGINT)
+    finally:
+        signal.signal(signal.SIGINT, inherited)
     monkeypatch.setattr(xr.Dataset, "to_netcdf", real_to_netcdf)
     line = _one_error_line(capsys, rc, "interrupted at t = 0.001 s", re.escape(str(out)), code=130)
     assert "partial run in" in line
     ds = open_run(out)
     assert ds.sizes["time"] == 11 and ds.attrs["status"].startswith("interrupted at t = 0.001")
-    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler  # the handler is restored
+    assert handler_after is signal.default_int_handler  # the handler in place before the run is restored
     assert _files(tmp_path) == {"part.nc"}
 
 
