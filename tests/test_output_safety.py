@@ -10,6 +10,8 @@ saying where the result went, leaves no temporary file and keeps the result in a
 
 from __future__ import annotations
 
+import contextlib
+
 import os
 import re
 import resource
@@ -63,6 +65,19 @@ def _make_special(d: Path, kind: str) -> Path:
         s.bind(str(p))
         s.close()
     return p
+
+
+@contextlib.contextmanager
+def _tmpfs(path, size):
+    """Mount a tmpfs of ``size`` (e.g. "64k") on ``path`` for the block (the test is skipped where mounting is not
+    allowed), unmounted afterwards whatever happens."""
+    m = subprocess.run(["mount", "-t", "tmpfs", "-o", f"size={size}", "tmpfs", str(path)], capture_output=True, text=True)
+    if m.returncode != 0:
+        pytest.skip(f"cannot mount a tmpfs of {size} here ({m.stderr.strip()})")
+    try:
+        yield path
+    finally:
+        subprocess.run(["umount", str(path)], check=False)
 
 
 @pytest.mark.parametrize("kind", ["fifo", "chardev", "socket"])
@@ -193,10 +208,7 @@ def test_file_size_limit_fallback_keeps_result(tmp_path):
     out, fb = tmp_path / "small", tmp_path / "fallback"
     out.mkdir()
     fb.mkdir()
-    m = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=64k", "tmpfs", str(out)], capture_output=True, text=True)
-    if m.returncode != 0:
-        pytest.skip(f"cannot mount a small tmpfs here ({m.stderr.strip()})")
-    try:
+    with _tmpfs(out, "64k"):
         r = _cli_subprocess(["quasistatic", "zhang2016", "-o", str(out / "q.nc")], cwd=tmp_path, tmpdir=fb)
         line = _one_error_line(r.stderr, r.returncode, re.escape(f"cannot write {out / 'q.nc'}"), "disk full",
                                "the result was saved to", code=1)
@@ -206,8 +218,6 @@ def test_file_size_limit_fallback_keeps_result(tmp_path):
         ds = open_run(saved)
         ref = hsbearing.quasi_static(hsbearing.load_case("zhang2016"))
         np.testing.assert_allclose(ds.inner_contact_load.values, ref.inner_contact_load.values, rtol=1e-9)
-    finally:
-        subprocess.run(["umount", str(out)], check=False)
 
 
 def test_read_only_directory_after_compute_keeps_result(tmp_path, monkeypatch):
@@ -218,10 +228,7 @@ def test_read_only_directory_after_compute_keeps_result(tmp_path, monkeypatch):
     d, fb = tmp_path / "ro", tmp_path / "fb"
     d.mkdir()
     fb.mkdir()
-    m = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=1m", "tmpfs", str(d)], capture_output=True, text=True)
-    if m.returncode != 0:
-        pytest.skip(f"cannot mount a tmpfs here ({m.stderr.strip()})")
-    try:
+    with _tmpfs(d, "1m"):
         subprocess.run(["mount", "-o", "remount,ro", str(d)], check=True)
         monkeypatch.setenv("TMPDIR", str(fb))
         import tempfile
@@ -235,8 +242,6 @@ def test_read_only_directory_after_compute_keeps_result(tmp_path, monkeypatch):
         assert saved.parent == fb
         np.testing.assert_array_equal(open_run(saved)["a"].values, np.arange(5.0))
         assert _files(d) == set()
-    finally:
-        subprocess.run(["umount", str(d)], check=False)
 
 
 # ----------------------------------------------------------------------------- a second Ctrl-C during the save
@@ -302,27 +307,24 @@ def test_disk_full_mid_sweep_keeps_the_point(tmp_path, monkeypatch):
     out, fb = tmp_path / "out", tmp_path / "fb"
     out.mkdir()
     fb.mkdir()
-    m = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=1m", "tmpfs", str(out)], capture_output=True, text=True)
-    if m.returncode != 0:
-        pytest.skip(f"cannot mount a tmpfs here ({m.stderr.strip()})")
-    monkeypatch.setenv("TMPDIR", str(fb))
-    monkeypatch.setattr(tempfile, "tempdir", None)
-    calls = []
-    real = hsbearing.quasi_static
+    with _tmpfs(out, "1m"):
+        monkeypatch.setenv("TMPDIR", str(fb))
+        monkeypatch.setattr(tempfile, "tempdir", None)
+        calls = []
+        real = hsbearing.quasi_static
 
-    def point(case, duration):
-        if calls:  # another writer fills the disk
-            with open(out / "filler", "wb") as fh:
-                try:
-                    while True:
-                        fh.write(b"\0" * 65536)
-                        fh.flush()
-                except OSError:
-                    pass
-        calls.append(case.operating.axial_load)
-        return real(case)
+        def point(case, duration):
+            if calls:  # another writer fills the disk
+                with open(out / "filler", "wb") as fh:
+                    try:
+                        while True:
+                            fh.write(b"\0" * 65536)
+                            fh.flush()
+                    except OSError:
+                        pass
+            calls.append(case.operating.axial_load)
+            return real(case)
 
-    try:
         with pytest.raises(OutputWriteError) as ei:
             hsbearing.sweep("zhang2016", {"axial_load": "100,200N"}, out_dir=out, kind="quasistatic", jobs=1,
                             progress=False, point_fn=point)
@@ -333,8 +335,6 @@ def test_disk_full_mid_sweep_keeps_the_point(tmp_path, monkeypatch):
         archives = [p for p in out.iterdir() if p.suffix == ".nc"]
         assert len(archives) == 1 and open_run(archives[0]).attrs["status"] == "ok"
         assert not [p for p in out.iterdir() if p.name.endswith(".tmp")]
-    finally:
-        subprocess.run(["umount", str(out)], check=False)
 
 
 def test_run_disk_full_after_integrating_keeps_the_run(tmp_path):
@@ -343,10 +343,7 @@ def test_run_disk_full_after_integrating_keeps_the_run(tmp_path):
     out, fb = tmp_path / "small", tmp_path / "fallback"
     out.mkdir()
     fb.mkdir()
-    m = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=64k", "tmpfs", str(out)], capture_output=True, text=True)
-    if m.returncode != 0:
-        pytest.skip(f"cannot mount a small tmpfs here ({m.stderr.strip()})")
-    try:
+    with _tmpfs(out, "64k"):
         r = _cli_subprocess(["run", "--duration", "0.002s", "-q", "--no-plot", "-o", str(out / "r.nc")],
                             cwd=tmp_path, tmpdir=fb)
         line = _one_error_line(r.stderr, r.returncode, re.escape(f"cannot write {out / 'r.nc'}"),
@@ -356,5 +353,3 @@ def test_run_disk_full_after_integrating_keeps_the_run(tmp_path):
         ds = open_run(saved)
         assert float(ds.time[-1]) == pytest.approx(0.002) and "final_state" in ds
         assert _files(out) == set()
-    finally:
-        subprocess.run(["umount", str(out)], check=False)
