@@ -66,7 +66,7 @@ __all__ = ["station_film", "station_angle", "pocket_edges", "pocket_film_wrench"
 
 # ---------------------------------------------------------------- named arguments and result of pocket_wrench
 # Plain named tuples (numba compiles them as tuples: a field read is a register, no cost); the fields are read
-# by name, so two same-typed quantities cannot be swapped silently (issue 30 item 4).
+# by name, so two same-typed quantities cannot be swapped silently.
 #: the ball's offset and motion relative to its pocket, pocket frame (x: cage axis, r: pocket axis, t: circumferential)
 PocketKinematics = namedtuple("PocketKinematics", [
     "ex",  # ball-centre offset from the pocket axis along x [m]
@@ -511,19 +511,28 @@ def _station_wrench(W, Wx, I1, I1x, eta, dUu, dUs, Rb, ds, nx, nt, qx, qt):
             ds * (Rb * Tu * qx + Tsx * nx), ds * (-Rb * Ts), ds * (Rb * Tu * qt + Tsx * nt), ds * W)
 
 
-@njit(cache=True, fastmath=True)
-def _pocket_film_wrench_reference(ex, et, s0, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, R_out, hdm, n_st):
-    """:func:`pocket_film_wrench` station by station with the reference rupture start (``tabulated=False``).
-
-    The scalar form of before issue 28 item 3, kept as the reference of the batched form (tests/test_pocket.py).
-    """
+@njit(cache=True, inline="always")
+def _offset_frame(ex, et, Rb, Rp):
+    """Radial clearance c = Rp - Rb [m], offset e = |(ex, et)| [m], its direction (cos, sin) in the pocket's
+    (x, t) plane (x for a centred ball), and k = ((c - e)/(c + e))^(1/4), the conformal-map factor of
+    :func:`station_angle` with half the exponent that would make the map exact (docstring there)."""
     c = Rp - Rb
     e = math.sqrt(ex * ex + et * et)
     if e > 0.0:
         cte, ste = ex / e, et / e
     else:
         cte, ste = 1.0, 0.0
-    k = math.sqrt(math.sqrt((c - e) / (c + e)))  # station_angle with half the exponent (docstring there)
+    k = math.sqrt(math.sqrt((c - e) / (c + e)))
+    return c, e, cte, ste, k
+
+
+@njit(cache=True, fastmath=True)
+def _pocket_film_wrench_reference(ex, et, s0, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, R_out, hdm, n_st):
+    """:func:`pocket_film_wrench` station by station with the reference rupture start (``tabulated=False``).
+
+    The scalar form, one station at a time, kept as the reference of the batched form (tests/test_pocket.py).
+    """
+    c, e, cte, ste, k = _offset_frame(ex, et, Rb, Rp)
     Fx = Fr = Ft = 0.0
     Mx = Mr = Mt = 0.0
     Wn = 0.0
@@ -555,7 +564,7 @@ def _pocket_film_wrench_reference(ex, et, s0, vx, vr, vt, wx, wr, wt, eta, Rb, R
     return Fx, Fr, Ft, Mx, Mr, Mt, Wn
 
 
-# ---------------------------------------------------------------- batched stations (issue 28 item 3)
+# ---------------------------------------------------------------- batched stations
 # The stations of a pocket are independent: they are solved _LANES at a time, each pass over the lanes a loop
 # without data-dependent control flow (selects only), which LLVM compiles to SIMD instructions (measured: the
 # 16 stations' rupture Newton sweep in ~30 ns instead of ~16 x 8 ns).  No libm call may sit in those loops
@@ -837,13 +846,7 @@ def pocket_film_wrench(ex, et, s0, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, 
     """
     if not tabulated:
         return _pocket_film_wrench_reference(ex, et, s0, vx, vr, vt, wx, wr, wt, eta, Rb, Rp, R_bore, R_out, hdm, n_st)
-    c = Rp - Rb
-    e = math.sqrt(ex * ex + et * et)
-    if e > 0.0:
-        cte, ste = ex / e, et / e
-    else:
-        cte, ste = 1.0, 0.0
-    k = math.sqrt(math.sqrt((c - e) / (c + e)))  # station_angle with half the exponent (docstring there)
+    c, e, cte, ste, k = _offset_frame(ex, et, Rb, Rp)
     Fx = Fr = Ft = 0.0
     Mx = Mr = Mt = 0.0
     Wn = 0.0

@@ -423,17 +423,24 @@ def _data_ptr(obj, word, n):
 
 
 @nb.njit(cache=True, nogil=True)
+def _structure(w):
+    """The arrowhead structure stored in the hook's content words ``w``: (n, idx, offs, border, piv) -- the order,
+    the block-ordered state indices with their block offsets, the border indices and the pivot rows (views)."""
+    n = w[_W_N]
+    nbk, m = w[_W_NB], w[_W_M]
+    offs = w[w[_W_OFFS]:w[_W_OFFS] + nbk + 1]
+    idx = w[w[_W_IDX]:w[_W_IDX] + offs[nbk]]
+    border = w[w[_W_BORDER]:w[_W_BORDER] + m]
+    piv = w[w[_W_NPIVOFF]:w[_W_NPIVOFF] + n]
+    return n, idx, offs, border, piv
+
+
+@nb.njit(cache=True, nogil=True)
 def _hook_setup(ls, mat):
     w = _content(ls)
     if w[_W_MAGIC] != _MAGIC:
         return -1
-    n = w[_W_N]
-    nbk, m = w[_W_NB], w[_W_M]
-    offs = w[w[_W_OFFS]:w[_W_OFFS] + nbk + 1]
-    nidx = offs[nbk]
-    idx = w[w[_W_IDX]:w[_W_IDX] + nidx]
-    border = w[w[_W_BORDER]:w[_W_BORDER] + m]
-    piv = w[w[_W_NPIVOFF]:w[_W_NPIVOFF] + n]
+    n, idx, offs, border, piv = _structure(w)
     work = nb.carray(_as_ptr(w[_W_WORK]), w[_W_NWORK], dtype=np.float64)
     info = factor(_data_ptr(mat, w[_W_MDATA], n * n), n, idx, offs, border, piv, work)
     w[_W_LAST] = info
@@ -445,13 +452,7 @@ def _hook_solve(ls, mat, x, b):
     w = _content(ls)
     if w[_W_MAGIC] != _MAGIC:
         return -1
-    n = w[_W_N]
-    nbk, m = w[_W_NB], w[_W_M]
-    offs = w[w[_W_OFFS]:w[_W_OFFS] + nbk + 1]
-    nidx = offs[nbk]
-    idx = w[w[_W_IDX]:w[_W_IDX] + nidx]
-    border = w[w[_W_BORDER]:w[_W_BORDER] + m]
-    piv = w[w[_W_NPIVOFF]:w[_W_NPIVOFF] + n]
+    n, idx, offs, border, piv = _structure(w)
     xs = _data_ptr(x, w[_W_VDATA], n)
     bs = _data_ptr(b, w[_W_VDATA], n)
     for i in range(n):
