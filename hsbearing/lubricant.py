@@ -1,4 +1,4 @@
-"""Lubricant definitions as data: one TOML file per oil (issue 26).
+"""Lubricant definitions as data: one TOML file per oil.
 
 A lubricant file (format: docs/traction.md, "Lubricant files"; bundled files in
 ``hsbearing/lubricants/``) gives an oil's name and class, its kinematic (or dynamic) viscosity at two

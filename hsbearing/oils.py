@@ -1,4 +1,4 @@
-"""``hsbearing oils``: the bundled lubricant library and one oil's derived values at a case (issue 26).
+"""``hsbearing oils``: the bundled lubricant library and one oil's derived values at a case.
 
 :func:`library_rows` lists the bundled lubricants (``hsbearing/lubricants/*.toml``) with their key
 properties; :func:`at_case` evaluates one lubricant (bundled name or file) at a case's temperature and

@@ -1,4 +1,4 @@
-"""Stop a dynamic run when its answer has converged (issue 28, item 1; docs/sweeps.md "Stop rule").
+"""Stop a dynamic run when its answer has converged (docs/sweeps.md "Stop rule").
 
 The answer of a run is its cage-motion label with its kind (:func:`hsbearing.analysis.annotate`) and three
 summaries: the mean cage slip ratio, the whirl amplitude and the whirl frequency ratio.  With

@@ -1,4 +1,4 @@
-"""Warm starts for maps and sweeps (issue 28, item 2; experimental, off by default: docs/sweeps.md "Warm starts").
+"""Warm starts for maps and sweeps (experimental, off by default: docs/sweeps.md "Warm starts").
 
 A point starts from the settled final state (``final_state`` of its archive) of its nearest finished neighbour
 instead of the quasi-static state, with a shorter transient rule for the stop rule (:data:`WARM_RULE`).  The

@@ -14,7 +14,7 @@ References
     angular-contact ball bearings*, NASA TP-2275 (1984): an empirical oil content of the air-oil
     mixture in the cavity of a jet-lubricated bearing, in the form used here
     X = 1e5 W^0.37 / (n d_m^1.7), W oil flow [cm^3/min], n shaft speed [r/min], d_m pitch
-    diameter [mm].  **UNVERIFIED** (issue 29, session 7): neither TP-2275 nor a reproduction of
+    diameter [mm].  **UNVERIFIED**: neither TP-2275 nor a reproduction of
     the formula (Harris & Kotzalas Vol. 2; Pouly et al. 2010) could be read through this project's
     search tools; no public code implementing it was found either.  The form, the constant and
     the units are those of secondary recollection; in particular whether X is a fraction or a

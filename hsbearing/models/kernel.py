@@ -60,7 +60,7 @@ from hsbearing.models.traction._kernels import traction_coefficients_nb, tractio
 C_RFX, C_RFY, C_RFZ, C_RMY, C_RMZ, C_RMX, C_CFX, C_CFY, C_CFZ, C_CMX, C_CMY, C_CMZ = range(12)
 N_CONTRIB = 12
 
-# ---------------- named arguments and result of one race contact (:func:`_race_contact`; issue 30 item 4)
+# ---------------- named arguments and result of one race contact (:func:`_race_contact`)
 # Plain named tuples: numba compiles them as tuples (a field read is a register), the fields are read by name.
 #: the ball's state in its own frame (x, r, t): centre position, velocity and angular velocity
 BallMotion = namedtuple("BallMotion", [

@@ -400,7 +400,7 @@ def _install_arrowhead(solver, counters, structure):
     if counters is None:
         raise RuntimeError("linsolver='arrowhead' needs CVODE's solver memory, which cannot be reached with "
                            f"scikit-sundae {sun.__version__}")
-    cy = getattr(solver, "_CVODE__CVODE")
+    cy = solver._CVODE__CVODE  # the private Cython object (scikit-sundae mangles CVODE.__CVODE to this name)
     words = (ctypes.c_void_p * 8).from_address(id(cy) + _CvodeCounters._HEADER)
     if words[1] != counters.mem.value or not (words[5] and words[6] and words[7]):
         raise RuntimeError("linsolver='arrowhead': scikit-sundae's solver layout is not the one checked")

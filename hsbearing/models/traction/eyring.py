@@ -1,4 +1,4 @@
-"""Physical EHL traction model for any oil: Maxwell elastic build-up, Eyring flow, limiting shear (issue 26).
+"""Physical EHL traction model for any oil: Maxwell elastic build-up, Eyring flow, limiting shear.
 
 The traction of a ball/race contact computed from the oil's own properties (its inlet viscosity eta_in,
 its pressure-viscosity coefficient alpha) and three rheological constants (Eyring stress tau_0,
