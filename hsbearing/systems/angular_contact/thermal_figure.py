@@ -14,13 +14,27 @@ __all__ = ["plot_thermal"]
 
 #: node -> (x, y) in the sketch (axial, radial): shaft at the bottom, housing at the top, the oil on the side
 _POS = {"shaft": (0.0, 0.0), "inner_ring": (0.0, 1.0), "balls": (0.0, 2.0), "outer_ring": (0.0, 3.0),
-        "housing": (0.0, 4.0), "cage": (1.2, 2.0), "oil": (2.4, 2.0), "oil_inlet": (2.4, 0.6),
+        "housing": (0.0, 4.0), "cage": (1.25, 2.75), "oil": (2.5, 2.0), "oil_inlet": (2.5, 0.5),
         "ambient": (-1.6, 2.0)}
+
+
+#: curvature of the link arrows (matplotlib ``arc3`` rad)
+_RAD = 0.12
+
+
+def _arc_midpoint(p0, p1):
+    """Midpoint of the ``arc3`` curve from p0 to p1: the quadratic Bezier whose control point is the chord's
+    midpoint moved by rad x chord length perpendicular to it; its middle is half way to the control point."""
+    (x0, y0), (x1, y1) = p0, p1
+    dx, dy = x1 - x0, y1 - y0
+    cx, cy = 0.5 * (x0 + x1) + _RAD * dy, 0.5 * (y0 + y1) - _RAD * dx
+    return 0.5 * (0.5 * (x0 + x1) + cx), 0.5 * (0.5 * (y0 + y1) + cy)
 
 
 def plot_thermal(ds, path):
     from matplotlib import cm, colors
     from matplotlib.figure import Figure
+    from matplotlib.ticker import MaxNLocator
 
     from hsbearing.plotting.common import save_figure, title_lines
 
@@ -44,13 +58,16 @@ def plot_thermal(ds, path):
             (x0, y0), (x1, y1), q = (x1, y1), (x0, y0), -q
         ax.annotate("", xy=(x1, y1), xytext=(x0, y0),
                     arrowprops=dict(arrowstyle="-|>", color="0.4", lw=0.8 + 2.5 * q / max(float(ds.heat_generated), 1e-9),
-                                    shrinkA=22, shrinkB=22, connectionstyle="arc3,rad=0.12"))
-        ax.text(0.5 * (x0 + x1) + 0.12, 0.5 * (y0 + y1), f"{q:.3g} W", fontsize=7.5, color="0.25", ha="left", va="center")
+                                    shrinkA=22, shrinkB=22, connectionstyle=f"arc3,rad={_RAD}"))
+        xm, ym = _arc_midpoint((x0, y0), (x1, y1))
+        label = f"{q:.3g} W" if "oil_inlet" not in (a, b) else f"carried out\nby the oil flow\n{q:.3g} W"
+        ax.text(xm, ym, label, fontsize=7.5, color="0.2", ha="center", va="center", zorder=5,
+                bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.85))
     for n, (x, y) in _POS.items():
         ax.scatter([x], [y], s=1500, color=cmap(norm(T[n])), edgecolors="k", zorder=3)
         extra = f"\n+{Q[n]:.3g} W" if Q.get(n, 0.0) > 1e-9 else ""
         ax.text(x, y, f"{n.replace('_', ' ')}\n{T[n]:.1f} °C{extra}", ha="center", va="center", fontsize=7.5, zorder=4)
-    ax.set_xlim(-2.4, 3.3)
+    ax.set_xlim(-2.4, 3.4)
     ax.set_ylim(-0.7, 4.7)
     ax.set_axis_off()
     ax.set_title(f"(a) thermal network: heat generated {float(ds.heat_generated):.3g} W, removed by the oil "
@@ -75,6 +92,7 @@ def plot_thermal(ds, path):
     it = np.asarray(ds.iteration.values)
     ax.plot(it, np.asarray(ds.iteration_lubricant_temperature.values) - 273.15, "C3o-", label="lubricant temperature [°C]")
     ax.set_xlabel("fixed-point iteration")
+    ax.xaxis.set_major_locator(MaxNLocator(integer=True))
     ax.set_ylabel("lubricant temperature [°C]", color="C3")
     ax2 = ax.twinx()
     ax2.plot(it, ds.iteration_power_loss.values, "C0s--", label="power loss [W]")
