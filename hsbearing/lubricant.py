@@ -472,24 +472,17 @@ def _eyring_parameters(tr, src):
     from hsbearing.models.traction import eyring
 
     kw = {}
-    if "limiting_shear_coefficient" in tr:
-        lam = _number(tr["limiting_shear_coefficient"], src, "traction.limiting_shear_coefficient")
-        if not 0.01 <= lam <= 0.15:
-            raise CaseError(src, "traction.limiting_shear_coefficient",
-                            f"{lam:g} is outside 0.01-0.15 (measured tau_L/p of oils: 0.035-0.088)")
-        kw["Lambda"] = lam
-    if "eyring_stress" in tr:
-        tau0 = _q(tr["eyring_stress"], "pressure", src, "traction.eyring_stress")
-        if not 0.1e6 <= tau0 <= 100e6:
-            raise CaseError(src, "traction.eyring_stress", f"{tau0 / 1e6:g} MPa is outside 0.1-100 MPa "
-                                                           "(Eyring stresses of EHL oils: about 2-20 MPa)")
-        kw["tau0"] = tau0
-    if "shear_modulus" in tr:
-        G = _q(tr["shear_modulus"], "pressure", src, "traction.shear_modulus")
-        if not 1e6 <= G <= 1e11:
-            raise CaseError(src, "traction.shear_modulus", f"{G:.3g} Pa is outside 1 MPa-100 GPa "
-                                                           "(EHL films: about 0.1-1 GPa)")
-        kw["G"] = G
+    # key, field, kind, plausible range (SI), how the range reads, what oils have
+    for key, field_, kind, lo, hi, scale, unit, typical in (
+            ("limiting_shear_coefficient", "Lambda", None, 0.01, 0.15, 1.0, "", "measured tau_L/p of oils: 0.035-0.088"),
+            ("eyring_stress", "tau0", "pressure", 0.1e6, 100e6, 1e-6, " MPa", "Eyring stresses of EHL oils: about 2-20 MPa"),
+            ("shear_modulus", "G", "pressure", 1e6, 1e11, 1e-6, " MPa", "EHL films: about 0.1-1 GPa")):
+        if key in tr:
+            name = f"traction.{key}"
+            v = _number(tr[key], src, name) if kind is None else _q(tr[key], kind, src, name)
+            if not lo <= v <= hi:
+                raise CaseError(src, name, f"{v * scale:g}{unit} is outside {lo * scale:g}-{hi * scale:g}{unit} ({typical})")
+            kw[field_] = v
     if "reference_temperature" in tr:
         kw["T_ref"] = _q(tr["reference_temperature"], "temperature", src, "traction.reference_temperature")
     for key, field_ in (("limiting_shear_temperature_coefficient", "k_Lambda"),

@@ -15,6 +15,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 from hsbearing.errors import CaseError, SolverError
+from hsbearing.models.friction import gyro as _physics
 from hsbearing.models.friction.gyro import (  # noqa: F401 - the physics, also public here
     _P_BETA,
     _P_CHI,
@@ -74,41 +75,20 @@ from hsbearing.models.friction.gyro import (  # noqa: F401 - the physics, also p
 )
 from hsbearing.results import make_dataset, register, solver_attrs, standard_attrs
 
-__all__ = [
-    "viscous_moment",
-    "hysteresis_moment",
-    "pure_rolling_lines",
-    "differential_sliding_moment",
-    "differential_sliding_factor",
-    "pivoting_moment",
-    "deformed_surface_radius",
-    "thrust_contact_angle",
-    "spin_to_roll_ratios",
-    "cage_contact_moment",
-    "total_friction_moment",
-    "StaticFriction",
-    "static_friction",
-    "ribbon_cage_mass_properties",
-    "ball_cage_stiffness",
-    "pocket_geometry",
-    "pocket_penetration",
-    "outer_race_speed",
-    "transform_Ic",
-    "euler_rate_matrix",
-    "circumferential_play_angle",
-    "GRAVITY",
-    "GyroModel",
-    "build_model",
-    "simulate",
-    "starting_moments",
-    "cage_moment_windows",
-    "start_offsets",
-    "start_ensemble",
-    "ensemble_lines",
-    "summary",
-    "override",
-    "plot_run",
-]
+#: the physics' public names (re-exported above) and this module's own
+__all__ = [*_physics.__all__,
+           "GyroModel",
+           "build_model",
+           "simulate",
+           "starting_moments",
+           "cage_moment_windows",
+           "start_offsets",
+           "start_ensemble",
+           "ensemble_lines",
+           "summary",
+           "override",
+           "plot_run",
+           ]
 
 # ----------------------------------------------------------------------------------------------
 # output variables (declared once, here)

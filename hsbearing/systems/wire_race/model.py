@@ -16,6 +16,7 @@ from scipy.optimize import brentq
 
 from hsbearing.case import parse_quantity
 from hsbearing.errors import CaseError
+from hsbearing.models.friction import wire_race as _physics
 from hsbearing.models.friction.wire_race import (  # noqa: F401 - the physics, also public here
     bearing_rolling_torque,
     contact_deformation,
@@ -33,30 +34,19 @@ from hsbearing.models.friction.wire_race import (  # noqa: F401 - the physics, a
 from hsbearing.models.hertz import point_contact
 from hsbearing.results import make_dataset, register, standard_attrs, write_netcdf
 
-__all__ = [
-    "rolling_resistance_moment",
-    "bearing_rolling_torque",
-    "starting_torque",
-    "wire_contact_radii",
-    "contact_stiffness",
-    "framework_equilibrium_F2",
-    "framework_equilibrium_residual_printed",
-    "contact_forces_from_torque",
-    "contact_deformation",
-    "preload_from_forces",
-    "preload_from_torque",
-    "contact_forces_from_preload",
-    "fit_rolling_resistance",
-    "RollingResistanceFit",
-    "WireRaceContacts",
-    "contacts",
-    "preload_sweep",
-    "preload_window",
-    "plot_torque_vs_preload",
-    "preload_command",
-    "parse_range",
-    "DEFAULT_PRELOADS",
-]
+#: the physics' public names (re-exported above) and this module's own
+__all__ = [*_physics.__all__,
+           "fit_rolling_resistance",
+           "RollingResistanceFit",
+           "WireRaceContacts",
+           "contacts",
+           "preload_sweep",
+           "preload_window",
+           "plot_torque_vs_preload",
+           "preload_command",
+           "parse_range",
+           "DEFAULT_PRELOADS",
+           ]
 
 #: Default preload grid of :func:`preload_sweep`: 10-160 um in 5 um steps (Table 2 of [1] spans 10-160 um).
 DEFAULT_PRELOADS = np.linspace(10e-6, 160e-6, 31)
