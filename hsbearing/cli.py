@@ -610,7 +610,9 @@ def build_parser() -> argparse.ArgumentParser:
     sp.add_argument("--scheduler", default=None, metavar="ADDR",
                     help="address tcp://host:port of a running dask.distributed scheduler; the points run on its "
                          "workers instead of local processes (-j is then ignored)")
-    sp.add_argument("--kind", default="run", choices=("run", "quasistatic"), help="what each point computes")
+    sp.add_argument("--kind", default="run", choices=("run", "quasistatic", "thermal"),
+                    help="what each point computes: run (dynamics), quasistatic (equilibrium), thermal (steady "
+                         "thermal network at its power loss, as 'hsbearing thermal')")
     sp.add_argument("--duration", help="simulated time of each run, e.g. 0.05s")
     sp.add_argument("--stop", choices=("duration", "converged"), default=None,
                     help="stop rule: duration (run the whole duration) or converged (stop when the cage-motion label, its kind and the summaries have held over a confirming check; the duration is the upper bound; docs/sweeps.md); default: [simulation] stop of the case, duration")

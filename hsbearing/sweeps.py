@@ -3,7 +3,8 @@
 ``run_sweep(case, {"axial_load": "100,500,1000N", "oil": ["4109", "4106"]}, out_dir="DIR")``
 builds the Cartesian product (or, with ``zip=True``, the zipped lists) of
 case overrides.  Every point is an independent run (``kind="run"``:
-:func:`hsbearing.simulate`; ``kind="quasistatic"``: :func:`hsbearing.quasi_static`)
+:func:`hsbearing.simulate`; ``kind="quasistatic"``: :func:`hsbearing.quasi_static`; ``kind="thermal"``:
+the steady thermal network at its power loss, :func:`hsbearing.thermal.thermal_equilibrium`)
 archived as its own netCDF file ``DIR/<case>-<hash>.nc``, where the hash is
 taken over the point's full case TOML, the kind, the duration and the
 point function.  ``DIR/sweep.nc`` is one Dataset with a dimension per varied
@@ -103,6 +104,9 @@ __all__ = [
 
 #: Status of a point that completed normally.
 STATUS_OK = "ok"
+
+#: What a sweep point can compute (``--kind``).
+KINDS = ("run", "quasistatic", "thermal")
 
 #: Name of the lock file that keeps two sweeps out of one directory.
 LOCK_NAME = ".hsbearing-sweep.lock"
@@ -273,8 +277,8 @@ def plan_sweep(
     source: str = "--vary",
 ) -> SweepPlan:
     """Validate the varied keys and values and build every point's case (no computation)."""
-    if kind not in ("run", "quasistatic"):
-        raise CaseError("--kind", None, f"unknown kind {kind!r} (allowed: run, quasistatic)")
+    if kind not in KINDS:
+        raise CaseError("--kind", None, f"unknown kind {kind!r} (allowed: {', '.join(KINDS)})")
     base = _base_case(case)
     if not vary:
         raise CaseError(source, None, "nothing to vary (give at least one --vary KEY=V1,V2,...)")
@@ -282,7 +286,7 @@ def plan_sweep(
         duration = parse_quantity(duration, "time", source="--duration", key="duration")
     if duration is not None and not (duration > 0):
         raise CaseError("--duration", "duration", f"must be positive, got {duration!r}")
-    if kind == "quasistatic":
+    if kind in ("quasistatic", "thermal"):
         duration = None  # meaningless for an equilibrium: kept out of the archive hash
     axes: list[Axis] = []
     seen: dict[str, str] = {}
@@ -322,6 +326,10 @@ def plan_sweep(
             pc = loads_case(base_text, base.source, **lit)
             if kind == "run" and duration is not None and point_fn is None:
                 check_output_samples(pc, duration, source="--duration", key="duration")
+            if kind == "thermal" and point_fn is None:
+                from hsbearing.thermal import check_inputs
+
+                check_inputs(pc)  # system, geometry and oil flow of every point, before anything is computed
         except CaseError as exc:
             points.append(Point(idx, overrides, None, error=str(exc)))
             continue
@@ -349,6 +357,30 @@ def quasistatic_summary(ds: xr.Dataset) -> dict[str, Any]:
         if name in ds and ds[name].ndim == 0:
             out[name] = float(ds[name].values)
     return out
+
+
+#: scalars of a thermal equilibrium (kind="thermal") kept in the sweep summary (names of hsbearing.thermal)
+THERMAL_SUMMARY = ("inner_ring_temperature", "outer_ring_temperature", "ball_temperature", "cage_temperature",
+                   "housing_temperature", "shaft_temperature", "oil_outlet_temperature", "lubricant_temperature",
+                   "heat_generated", "heat_removed_by_oil", "heat_removed_by_conduction", "heat_balance_error",
+                   "fixed_point_iterations")
+
+
+def thermal_summary(ds: xr.Dataset) -> dict[str, Any]:
+    """Scalars of a thermal equilibrium: component, oil outlet and lubricant temperatures [K], heat generated
+    and removed by the oil and by conduction [W], the balance error and the fixed-point iterations, and the
+    power loss by source at equilibrium (``thermal_power_loss_<source>`` [W])."""
+    names = list(THERMAL_SUMMARY) + sorted(str(n) for n in ds.data_vars if str(n).startswith("thermal_power_loss_"))
+    return {n: float(ds[n].values) for n in names if n in ds and ds[n].ndim == 0}
+
+
+def point_summary(kind: str, ds: xr.Dataset) -> dict[str, Any]:
+    """The summary scalars of one point's Dataset, by the sweep's kind."""
+    if kind == "quasistatic":
+        return quasistatic_summary(ds)
+    if kind == "thermal":
+        return thermal_summary(ds)
+    return dynamic_summary(ds)
 
 
 def dynamic_summary(ds: xr.Dataset) -> dict[str, Any]:
@@ -395,6 +427,10 @@ def _compute_point(case: Case, kind: str, duration, point_fn) -> tuple[dict, xr.
             from hsbearing.quasistatic import solve_case
 
             ds = solve_case(case)
+        elif kind == "thermal":
+            from hsbearing.thermal import thermal_equilibrium
+
+            ds = thermal_equilibrium(case)
         else:
             from hsbearing.systems import simulate
 
@@ -418,7 +454,7 @@ def _compute_point(case: Case, kind: str, duration, point_fn) -> tuple[dict, xr.
         ds = None
     if ds is not None and rec["status"] != "invalid" and len(ds.data_vars):
         try:
-            summ = quasistatic_summary(ds) if kind == "quasistatic" else dynamic_summary(ds)
+            summ = point_summary(kind, ds)
             rec["summary"] = {k: _scalar(v) for k, v in summ.items()}
         except Exception as exc:  # summary of a partial/odd dataset: keep the archive, say why
             rec["summary_error"] = f"summary failed: {type(exc).__name__}: {exc}"
@@ -487,7 +523,7 @@ def _read_record(path: Path, expected_hash: str | None = None) -> dict | None:
             if rec.get("summary_error"):  # summarise again (the analysis may have been fixed since)
                 kind = ds.attrs.get("sweep_kind", "run")
                 try:
-                    summ = quasistatic_summary(ds) if kind == "quasistatic" else dynamic_summary(ds)
+                    summ = point_summary(kind, ds)
                     rec["summary"] = {k: _scalar(v) for k, v in summ.items()}
                     rec["error"] = "; ".join(e for e in rec.get("error", "").split("; ")
                                              if e and not e.startswith("summary failed") and e != rec["summary_error"])
@@ -1104,8 +1140,8 @@ def run_sweep(
     jobs : local worker processes (default ``os.cpu_count()``; 1 = in-process).
     scheduler : ``"tcp://host:port"`` of a dask.distributed scheduler (overrides ``jobs``).
     out_dir : directory of the point archives and ``sweep.nc``.
-    kind : ``"run"`` (dynamics, summary by :func:`hsbearing.analysis.summary`)
-        or ``"quasistatic"``.
+    kind : ``"run"`` (dynamics, summary by :func:`hsbearing.analysis.summary`),
+        ``"quasistatic"`` or ``"thermal"`` (thermal equilibrium, summary :func:`thermal_summary`).
     duration : simulated time [s] or unit string (kind "run"); None = the case's.
     progress : tqdm progress bar on stderr.
     point_fn : ``f(case, duration) -> xr.Dataset`` replacing the computation

@@ -420,14 +420,27 @@ def thermal_lines(ds) -> list[str]:
     return lines
 
 
+def check_inputs(case) -> None:
+    """Raise a CaseError naming the file and key if the case cannot give a thermal network: not an
+    angular-contact case, no bore/outside diameter/width, no oil flow.  Called before anything is computed
+    (``hsbearing thermal``, ``hsbearing sweep --kind thermal``)."""
+    from hsbearing.errors import CaseError
+
+    if case.system != "angular_contact":
+        raise CaseError(case.source, "case.system", f"the thermal network is for angular_contact cases, not {case.system!r}")
+    _geometry(case)
+    if not case.lubricant.oil_flow_rate:
+        raise CaseError(case.source, "lubricant.oil_flow_rate", "the thermal network needs the oil flow (e.g. \"1 L/min\"): "
+                        "the oil carries the heat away")
+
+
 def thermal_cli(args) -> int:
     """``hsbearing thermal CASE [--set k=v] [-o OUT.nc]``."""
     from hsbearing.case import CaseError, load_case, parse_sets
     from hsbearing.results import write_netcdf
 
     case = load_case(args.case, **parse_sets(getattr(args, "set", None)))
-    if case.system != "angular_contact":
-        raise CaseError(case.source, "case.system", f"the thermal network is for angular_contact cases, not {case.system!r}")
+    check_inputs(case)
     out = getattr(args, "output", None)
     if out and not str(out).endswith((".nc", ".nc4")):
         raise CaseError("-o", None, f"{out!r}: the archive must be a .nc file")

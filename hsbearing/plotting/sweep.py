@@ -39,7 +39,7 @@ MAX_SERIES = 10
 #: Same, when the lines are the values of one numeric key (ordered colours and a colour bar instead of a legend).
 MAX_ORDERED_SERIES = 30
 
-# (panel title, y label with its unit, factor SI -> unit, ((variable, legend label, line style), ...)), in
+# (panel title, y label with its unit, factor SI -> unit or (factor, offset), ((variable, legend label, line style), ...)), in
 # drawing order (friction moments first for a gyro sweep); a panel is drawn only if one of its variables is
 # present with a finite value at an ok point.
 _SWEEP_PANELS = (
@@ -57,6 +57,15 @@ _SWEEP_PANELS = (
                                                        ("max_outer_contact_load", "max over balls", "--"))),
     ("cage speed", "cage speed [r/min]", _RPM, (("cage_speed", None, "-"),)),
     ("inner ring axial displacement", "displacement [\u00b5m]", 1e6, (("inner_ring_axial_displacement", None, "-"),)),
+    # thermal sweeps (kind = "thermal"): temperatures in degC (factor, offset), heats in W
+    ("component temperatures", "temperature [\N{DEGREE SIGN}C]", (1.0, -273.15),
+     (("inner_ring_temperature", "inner ring", "-"), ("outer_ring_temperature", "outer ring", "--"),
+      ("ball_temperature", "balls", ":"), ("oil_outlet_temperature", "oil outlet", "-."))),
+    ("lubricant temperature at equilibrium", "temperature [\N{DEGREE SIGN}C]", (1.0, -273.15),
+     (("lubricant_temperature", None, "-"),)),
+    ("heat generated and where it goes", "heat [W]", 1.0,
+     (("heat_generated", "generated", "-"), ("heat_removed_by_oil", "removed by the oil", "--"),
+      ("heat_removed_by_conduction", "conducted to the air", ":"))),
     ("friction moments (seed 000)", "moment [\u00b5N m]", 1e6,
      (("sfmc", "SFMC", "-"), ("sfmc_ensemble_mean", "SFMC, start ensemble mean", "-."), ("sfmo", "SFMO", "--"),
       ("rfmc", "RFMC", ":"))),
@@ -260,6 +269,7 @@ def _prepare_sweep(ds) -> dict:
         if name in ds and err in ds and ds[err].dtype.kind in "fiu":
             yerr[name] = _grid_of(ds, err, order, shape)
     for title, unit, factor, items in spec:
+        factor, offset = factor if isinstance(factor, tuple) else (factor, 0.0)  # display = SI x factor + offset
         got = []
         for name, lab, ls in items:
             if name in yerr:
@@ -267,7 +277,7 @@ def _prepare_sweep(ds) -> dict:
             if name in ds and ds[name].dtype.kind in "fiu":
                 y = _grid_of(ds, name, order, shape)
                 if y is not None and np.isfinite(y[good]).any():
-                    got.append((name, lab, ls, y * factor))
+                    got.append((name, lab, ls, y * factor + offset))
         if (len(got) == 2 and got[0][0].startswith("mean_") and got[1][0].startswith("max_")
                 and np.allclose(got[0][3][good], got[1][3][good], rtol=1e-9, equal_nan=True)):
             # mean = max over the balls (e.g. pure axial load): one line, and the legend says so
@@ -325,7 +335,8 @@ def _sweep_title(ds, prep) -> str:
     lay = prep["layout"]
     n, bad = lay["points"], lay["not_ok"]
     head = f"study {ds.attrs['study']}, {ds.attrs.get('study_table', '')}" if "study" in ds.attrs else "sweep"
-    what = {"run": "dynamic runs", "quasistatic": "quasi-static equilibria"}.get(kind, kind or "points")
+    what = {"run": "dynamic runs", "quasistatic": "quasi-static equilibria",
+            "thermal": "thermal equilibria"}.get(kind, kind or "points")
     line1 = f"{head} of case {name}: {what}{dur_txt}; {n - bad} of {n} points ok"
     if lay["no_summary"]:
         line1 += f" ({lay['no_summary']} without summary)"
