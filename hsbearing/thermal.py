@@ -113,9 +113,9 @@ def harris_oil_h(omega: float, nu: float, k: float, Pr: float, factor: float = 1
     [1]'s nomenclature), omega [rad/s], nu [m^2/s].  For a ring, omega is its speed relative to the other ring
     and factor = 1 + D cos(alpha)/d_m for the inner ring, 1 - D cos(alpha)/d_m for the outer: n factor is then twice
     the ring's speed relative to the cage, with which the oil is taken to turn.  Other bodies: omega factor = twice
-    their speed relative to that oil (:func:`bearing_network`).  Read with n in r/min the correlation is 0.72-0.77
-    of the laminar rotating disk's h = C(Pr) k sqrt(omega_rel / nu) (von Karman similarity solution, Pr 20-600);
-    read with omega in rad/s it would be 0.23-0.25 of it (docs/thermal.md, "Review"; tests/test_thermal_reference.py)."""
+    their speed relative to that oil (:func:`bearing_network`).  Read with n in r/min the correlation is 0.72-0.79
+    of the laminar rotating disk's h = C(Pr) k sqrt(omega_rel / nu) (von Karman similarity solution [7], Pr 18-572);
+    read with omega in rad/s it would be 0.23-0.26 of it (docs/thermal.md, "Review"; tests/test_thermal_reference.py)."""
     n = abs(omega) * 30.0 / math.pi
     return HARRIS_OIL_CONSTANT * k * Pr ** (1.0 / 3.0) * math.sqrt(n * factor / nu)
 

@@ -269,6 +269,69 @@ def blok(sweep_json="/tmp/thermrev/new_sweep.json"):
         print("  ".join(line), flush=True)
 
 
+# ----------------------------------------------------------------------------- effect of each change
+def stages():
+    """The effect of each change of the review, applied one after the other from the former network (the former
+    laws restored by patching hsbearing.thermal): zhang2016 and the TP-2275 reconstruction (ambient 394 K)."""
+    import hsbearing.thermal as th
+
+    import issue29_nasa_tp2275 as tp
+
+    new_h, new_c, new_v, new_step = th.harris_oil_h, th.constriction_resistance, th._viscosity, th.MAX_FIXED_POINT_STEP
+
+    def old_viscosity(case, T):
+        lub = case.lubricant
+        if lub.kinematic_viscosity is not None:
+            return lub.kinematic_viscosity * lub.density
+        return new_v(case, T)
+
+    def patched(case, rpm, signs, balls, ellipse, visc, step):
+        g = th._geometry(case)
+        gm = g["gamma"]
+        fb = 2.0 * th.body_oil_speeds(1.0, gm, g["dm"], g["D"])["balls"]
+        remap = {}
+        if not signs:
+            remap.update({1.0 + gm: 1.0 - gm, 1.0 - gm: 1.0 + gm})
+        if not balls:
+            remap[fb] = 1.0
+
+        def h(omega, nu, k, Pr, factor=1.0):
+            f = remap.get(factor, factor)
+            return new_h(omega if rpm else omega * math.pi / 30.0, nu, k, Pr, f)
+
+        th.harris_oil_h = h
+        th.constriction_resistance = new_c if ellipse else (lambda a, k, b=None: 1.0 / (4.0 * k * math.sqrt(a * (b or a))))
+        th._viscosity = new_v if visc else old_viscosity
+        th.MAX_FIXED_POINT_STEP = new_step if step else 1e9
+
+    flags = ["rpm", "signs", "balls", "ellipse", "visc", "step"]
+    names = ["former network", "+ n in r/min", "+ (1 +- gamma) to the relative speeds", "+ balls at their rolling speed",
+             "+ elliptic constriction", "+ lubricant-file viscosity at T_oil", "+ bounded fixed-point step (= this review)"]
+    tp_cases = [(n, tp.case_for("").with_overrides(**{"operating.inner_speed": f"{n} rpm",
+                                                        "thermal.ambient_temperature": "394 K"})) for n in sorted(tp.MEASURED)]
+    from hsbearing.case import load_case
+
+    z = load_case("zhang2016")
+    try:
+        for i, name in enumerate(names):
+            on = dict.fromkeys(flags, False)
+            on.update({f: True for f in flags[:i]})
+            patched(z, **on)
+            ds = th.thermal_equilibrium(z)
+            T = {n: float(v) - 273.15 for n, v in zip(th.NODES, ds.node_temperature.values)}
+            out = []
+            for n, c in tp_cases:
+                patched(c, **on)
+                d2 = th.thermal_equilibrium(c)
+                out.append(f"{float(d2.outer_ring_temperature):.1f}")
+            print(f"{name:44s} zhang2016: it {int(ds.fixed_point_iterations)} P {float(ds.heat_generated):.2f} W "
+                  f"T_lub {float(ds.lubricant_temperature) - 273.15:.2f} C; "
+                  + " ".join(f"{n[:5]} {v:.2f}" for n, v in T.items())
+                  + f" | TP-2275 outer ring [K] 28/48/64/72 krpm: {' '.join(out)}", flush=True)
+    finally:
+        th.harris_oil_h, th.constriction_resistance, th._viscosity, th.MAX_FIXED_POINT_STEP = new_h, new_c, new_v, new_step
+
+
 if __name__ == "__main__":
     what = sys.argv[1] if len(sys.argv) > 1 else "disk"
     if what == "sweep":
