@@ -273,9 +273,9 @@ def blok(sweep_json="/tmp/thermrev/new_sweep.json"):
 def stages():
     """The effect of each change of the review, applied one after the other from the former network (the former
     laws restored by patching hsbearing.thermal): zhang2016 and the TP-2275 reconstruction (ambient 394 K)."""
-    import hsbearing.thermal as th
-
     import issue29_nasa_tp2275 as tp
+
+    import hsbearing.thermal as th
 
     new_h, new_c, new_v, new_step = th.harris_oil_h, th.constriction_resistance, th._viscosity, th.MAX_FIXED_POINT_STEP
 
@@ -320,7 +320,7 @@ def stages():
             ds = th.thermal_equilibrium(z)
             T = {n: float(v) - 273.15 for n, v in zip(th.NODES, ds.node_temperature.values)}
             out = []
-            for n, c in tp_cases:
+            for _n, c in tp_cases:
                 patched(c, **on)
                 d2 = th.thermal_equilibrium(c)
                 out.append(f"{float(d2.outer_ring_temperature):.1f}")
