@@ -180,3 +180,16 @@ def test_no_equilibrium_is_one_line_naming_the_oil_flow(capsys):
     err = capsys.readouterr().err.strip().splitlines()
     assert rc == 2
     assert "lubricant.oil_flow_rate" in err[-1] and "no thermal equilibrium" in err[-1]
+
+
+def test_summary_notes_a_shaft_beyond_the_correlation_range(zhang_archive):
+    """The rotating-cylinder correlation holds for Re < 4.3e5 (Incropera & DeWitt); zhang2016's shaft is at 7.3e4
+    (no note), TP-2275's at 72 000 r/min at 5.1e5 (docs/thermal.md "Review", 3): the summary says so."""
+    from hsbearing import open_run
+    from hsbearing.thermal import thermal_lines
+
+    ds = open_run(zhang_archive[1])
+    assert float(ds.attrs["network_Re_shaft"]) == pytest.approx(1466.08 * 0.03**2 / 1.8e-5, rel=1e-3)
+    assert not any("correlation's range" in line for line in thermal_lines(ds))
+    ds.attrs["network_Re_shaft"] = 5.1e5
+    assert any("beyond the rotating-cylinder correlation's range" in line for line in thermal_lines(ds))
