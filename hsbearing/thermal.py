@@ -17,8 +17,9 @@ References
 [1] Harris T. A., Kotzalas M. N., *Rolling Bearing Analysis*, 5th ed., Vol. 2, the chapter on friction heat
     generation and heat transfer in rolling bearings: thermal network of rings, balls, oil, housing and
     shaft, heat from the friction of each contact, cylindrical conduction resistances, ring-to-oil convection
-    h = 0.0986 [ (n / nu) (1 -+ D cos(alpha) / d_m) ]^(1/2) k Pr^(1/3) (form as reproduced in later papers;
-    not read from the book here; n taken in rad/s).
+    h = 0.0986 [ (n / nu) (1 +- D cos(alpha) / d_m) ]^(1/2) k Pr^(1/3) (form as reproduced in later papers;
+    not read from the book here; n in r/min, the unit of n in the chapter's list of symbols, and the reading
+    that agrees with the rotating-disk similarity solution: docs/thermal.md, "Review").
 [2] Takabi J., Khonsari M. M., "Experimental testing and thermal analysis of ball bearings", Tribology
     International 60 (2013) 93-103: thermal network of a ball bearing with the same elements (not read here).
 [3] Pouly F., Changenet C., Ville F., Velex P., Damiens B., "Power loss predictions in high-speed rolling
@@ -28,7 +29,12 @@ References
     m = sqrt(h P / (k A)); rotating cylinder in still air Nu = 0.133 Re^(2/3) Pr^(1/3), Re = omega d^2 / nu
     (Becker / Kreith correlation, Re < 4.3e5, 0.7 < Pr < 670).
 [5] Yovanovich M. M., thermal constriction resistance of a circular contact of radius a on a half-space,
-    R = 1 / (4 k a) per body (isoflux ~ 0.27 / (k a) at 8/(3 pi^2)... the isothermal value is used).
+    R = 1 / (4 k a) per body (isothermal contact; the isoflux contact's mean temperature gives 8/(3 pi^2 k a)).
+[6] Isothermal elliptic contact on a half-space: R = K(m) / (2 pi k a), a the semi-major axis, m = 1 - (b/a)^2
+    (the capacitance of an elliptic disk, Jeans / Smythe; the same result Yovanovich's constriction papers use).
+[7] von Karman T. (1921), Cochran W. G. (1934), Sparrow E. M., Gregg J. L. (1959): the rotating disk in a fluid
+    at rest, h = -theta'(0) k sqrt(omega / nu), -theta'(0) -> 0.6205 Pr^(1/3) as Pr -> infinity: the reference
+    of the ring-to-oil correlation's unit (tests/test_thermal_reference.py solves it).
 """
 
 from __future__ import annotations
@@ -41,7 +47,7 @@ import numpy as np
 from hsbearing.results import make_dataset, register, register_attr_units, standard_attrs
 
 __all__ = ["NODES", "Network", "solve_network", "cylinder_resistance", "constriction_resistance", "fin_conductance",
-           "rotating_cylinder_h", "harris_oil_h", "bearing_network", "heat_by_body", "thermal_equilibrium",
+           "rotating_cylinder_h", "harris_oil_h", "body_oil_speeds", "bearing_network", "heat_by_body", "thermal_equilibrium",
            "thermal_lines", "thermal_cli"]
 
 #: unknown-temperature nodes of the bearing network
@@ -59,10 +65,27 @@ def cylinder_resistance(r_in: float, r_out: float, length: float, k: float) -> f
     return math.log(r_out / r_in) / (2.0 * math.pi * k * length)
 
 
-def constriction_resistance(a: float, k: float) -> float:
-    """Constriction resistance of a circular contact of radius a on a half-space of conductivity k [K/W] ([5]):
-    1 / (4 k a) (isothermal contact)."""
-    return 1.0 / (4.0 * k * a)
+def constriction_resistance(a: float, k: float, b: float | None = None) -> float:
+    """Constriction resistance of an isothermal contact on a half-space of conductivity k [K/W] ([5], [6]).
+
+    Circle of radius a (``b`` None or b = a): 1 / (4 k a).  Ellipse of semi-axes a, b: K(m) / (2 pi k a_1),
+    a_1 = max(a, b), m = 1 - (min/max)^2, K the complete elliptic integral of the first kind (the capacitance of
+    an elliptic disk; reduces to 1/(4 k a) at m = 0).  The circle of the same area, 1/(4 k sqrt(a b)), is 20 %
+    too high at a/b = 6 and 32 % at a/b = 9 (the race contacts of zhang2016): checked against a boundary-element
+    solution in tests/test_thermal_reference.py."""
+    if b is None or b == a:
+        return 1.0 / (4.0 * k * a)
+    a1, b1 = max(a, b), min(a, b)
+    return _ellipk(1.0 - (b1 / a1) ** 2) / (2.0 * math.pi * k * a1)
+
+
+def _ellipk(m: float) -> float:
+    """Complete elliptic integral of the first kind K(m), parameter m = e^2 < 1: pi / (2 AGM(1, sqrt(1 - m)))
+    (arithmetic-geometric mean; Abramowitz & Stegun 17.6)."""
+    x, y = 1.0, math.sqrt(1.0 - m)
+    while abs(x - y) > 1e-15 * x:
+        x, y = 0.5 * (x + y), math.sqrt(x * y)
+    return math.pi / (2.0 * x)
 
 
 def fin_conductance(h: float, d: float, k: float, length: float) -> float:
@@ -80,11 +103,32 @@ def rotating_cylinder_h(omega: float, d: float, k: float = AIR_K, nu: float = AI
     return max(0.133 * Re ** (2.0 / 3.0) * Pr ** (1.0 / 3.0) * k / d, 5.0)
 
 
+#: the constant of the ring-to-oil correlation of [1], with n in r/min (docs/thermal.md, "Review")
+HARRIS_OIL_CONSTANT = 0.0986
+
+
 def harris_oil_h(omega: float, nu: float, k: float, Pr: float, factor: float = 1.0) -> float:
     """Bearing surface to oil convection coefficient [W/(m^2 K)] ([1]):
-    h = 0.0986 k Pr^(1/3) sqrt(omega factor / nu), factor = 1 -+ D cos(alpha) / d_m (inner / outer ring),
-    1 for balls and cage; omega [rad/s] the ring speed relative to the other ring, nu [m^2/s] the oil's."""
-    return 0.0986 * k * Pr ** (1.0 / 3.0) * math.sqrt(abs(omega) * factor / nu)
+    h = 0.0986 k Pr^(1/3) sqrt(n factor / nu), n = 30 omega / pi the speed in **r/min** (the correlation's unit,
+    [1]'s nomenclature), omega [rad/s], nu [m^2/s].  For a ring, omega is its speed relative to the other ring
+    and factor = 1 + D cos(alpha)/d_m for the inner ring, 1 - D cos(alpha)/d_m for the outer: n factor is then twice
+    the ring's speed relative to the cage, with which the oil is taken to turn.  Other bodies: omega factor = twice
+    their speed relative to that oil (:func:`bearing_network`).  Read with n in r/min the correlation is 0.72-0.79
+    of the laminar rotating disk's h = C(Pr) k sqrt(omega_rel / nu) (von Karman similarity solution [7], Pr 18-572);
+    read with omega in rad/s it would be 0.23-0.26 of it (docs/thermal.md, "Review"; tests/test_thermal_reference.py)."""
+    n = abs(omega) * 30.0 / math.pi
+    return HARRIS_OIL_CONSTANT * k * Pr ** (1.0 / 3.0) * math.sqrt(n * factor / nu)
+
+
+def body_oil_speeds(omega: float, gamma: float, dm: float, D: float) -> dict:
+    """Speed [rad/s] of each body relative to the oil turning with the cage, for a relative ring speed omega and
+    gamma = D cos(alpha) / d_m (rolling kinematics without slip, Harris & Kotzalas Vol. 1 ch. 8):
+    inner ring omega (1 + gamma)/2, outer ring omega (1 - gamma)/2, balls their rolling speed about their own
+    axis (d_m / (2 D)) (1 - gamma^2) omega, cage 0 (it turns with the oil: its surfaces see the oil sheared
+    towards the two rings instead; :func:`bearing_network` takes the mean of the two rings', omega / 2)."""
+    w = abs(omega)
+    return {"inner_ring": 0.5 * w * (1.0 + gamma), "outer_ring": 0.5 * w * (1.0 - gamma),
+            "balls": dm / (2.0 * D) * (1.0 - gamma * gamma) * w, "cage": 0.0}
 
 
 # ----------------------------------------------------------------------------- generic steady network
@@ -169,6 +213,11 @@ def _viscosity(case, T):
     from hsbearing.models.viscosity import dynamic_viscosity
 
     lub = case.lubricant
+    d = getattr(lub, "definition", None)
+    if d is not None and lub.kinematic_viscosity is not None and math.isclose(
+            lub.kinematic_viscosity, float(d.kinematic_viscosity(lub.temperature, lub.density)), rel_tol=1e-9):
+        # the case's value came from its lubricant file at lubricant.temperature: evaluate the file at T
+        return float(d.kinematic_viscosity(T, lub.density)) * lub.density
     if lub.kinematic_viscosity is not None:
         return lub.kinematic_viscosity * lub.density
     if lub.dynamic_viscosity is not None:
@@ -259,8 +308,8 @@ def bearing_network(case, heat: dict, qs, T_in: float | None = None) -> tuple[Ne
         b = np.asarray(qs[f"{side}_contact_semiminor"].values, dtype=float)
         h = np.asarray(qs[f"{side}_film_thickness_central"].values, dtype=float) if f"{side}_film_thickness_central" in qs else 0.0 * a
         ok = (a > 0) & (b > 0)
-        aeq = np.sqrt(a * b)
-        R = 2.0 * np.array([constriction_resistance(x, ks) for x in np.where(ok, aeq, 1.0)]) + h / (k_oil * math.pi * np.where(ok, a * b, 1.0))
+        R = (2.0 * np.array([constriction_resistance(x, ks, y) for x, y in zip(np.where(ok, a, 1.0), np.where(ok, b, 1.0))])
+             + h / (k_oil * math.pi * np.where(ok, a * b, 1.0)))
         return float(np.sum(np.where(ok, 1.0 / R, 0.0)))
 
     G_bi, G_bo = contact_G("inner"), contact_G("outer")
@@ -268,6 +317,7 @@ def bearing_network(case, heat: dict, qs, T_in: float | None = None) -> tuple[Ne
     R_or = cylinder_resistance(0.5 * (g["dm"] + g["D"]), 0.5 * g["Do"], g["B"], ks)
     R_h = cylinder_resistance(0.5 * g["Do"], 0.5 * g["DH"], g["BH"], kh)
     h_shaft = rotating_cylinder_h(case.operating.inner_speed, g["d"])
+    Re_shaft = abs(case.operating.inner_speed) * g["d"] ** 2 / AIR_NU  # correlation range Re < 4.3e5 ([4])
     G_shaft = 2.0 * fin_conductance(h_shaft, g["d"], ks, 0.5 * g["Ls"])  # both sides of the bearing
     G_house = th.housing_convection * g["A_housing"]
 
@@ -279,14 +329,16 @@ def bearing_network(case, heat: dict, qs, T_in: float | None = None) -> tuple[Ne
         return harris_oil_h(omega, eta / lub.density, k_oil, eta * cp / k_oil, factor)
 
     gm = g["gamma"]
+    w_rel = body_oil_speeds(omega, gm, g["dm"], g["D"])
+    f_ball = 2.0 * w_rel["balls"] / omega if omega > 0 else 1.0  # n factor = 2 n_rel (harris_oil_h)
     links = [
         ("inner_ring", "shaft", 1.0 / R_ir, "conduction"),
         ("outer_ring", "housing", 1.0 / (R_or + R_h), "conduction"),
         ("balls", "inner_ring", G_bi, "conduction"),
         ("balls", "outer_ring", G_bo, "conduction"),
-        ("inner_ring", "oil", lambda T: h_oil(T, 1.0 - gm) * g["A_ir"], "convection oil"),
-        ("outer_ring", "oil", lambda T: h_oil(T, 1.0 + gm) * g["A_or"], "convection oil"),
-        ("balls", "oil", lambda T: h_oil(T, 1.0) * g["A_balls"], "convection oil"),
+        ("inner_ring", "oil", lambda T: h_oil(T, 1.0 + gm) * g["A_ir"], "convection oil"),
+        ("outer_ring", "oil", lambda T: h_oil(T, 1.0 - gm) * g["A_or"], "convection oil"),
+        ("balls", "oil", lambda T: h_oil(T, f_ball) * g["A_balls"], "convection oil"),
         ("cage", "oil", lambda T: h_oil(T, 1.0) * g["A_cage"], "convection oil"),
         ("housing", "ambient", G_house, "convection air"),
         ("shaft", "ambient", G_shaft, "conduction + convection air"),
@@ -294,7 +346,7 @@ def bearing_network(case, heat: dict, qs, T_in: float | None = None) -> tuple[Ne
     net = Network(nodes=list(NODES), fixed={"oil_inlet": T_in, "ambient": th.ambient_temperature}, links=links,
                   advection=[("oil", "oil_inlet", mcp)], sources=dict(heat))
     info = dict(G_ball_inner=G_bi, G_ball_outer=G_bo, R_inner_ring=R_ir, R_outer_ring=R_or, R_housing=R_h,
-                h_shaft=h_shaft, G_shaft=G_shaft, G_housing=G_house, oil_heat_capacity_rate=mcp, **g)
+                h_shaft=h_shaft, Re_shaft=Re_shaft, G_shaft=G_shaft, G_housing=G_house, oil_heat_capacity_rate=mcp, **g)
     return net, info
 
 
@@ -335,7 +387,7 @@ for _s in _SRC:
     register(f"thermal_power_loss_{_s}", (), "W", f"quasi-static power loss {_s} at the thermal equilibrium")
 _ATTR_UNITS = {"network_residual_W": "W", "network_G_ball_inner": "W/K", "network_G_ball_outer": "W/K",
                "network_R_inner_ring": "K/W", "network_R_outer_ring": "K/W", "network_R_housing": "K/W",
-               "network_h_shaft": "W/(m^2*K)", "network_G_shaft": "W/K", "network_G_housing": "W/K",
+               "network_h_shaft": "W/(m^2*K)", "network_Re_shaft": "1", "network_G_shaft": "W/K", "network_G_housing": "W/K",
                "network_oil_heat_capacity_rate": "W/K", "network_gamma": "1",
                **{f"network_{k}": "m" for k in ("D", "dm", "B", "d", "Do", "DH", "BH", "Ls")},
                **{f"network_{k}": "m^2" for k in ("A_ir", "A_or", "A_balls", "A_cage", "A_housing")}}
@@ -343,18 +395,36 @@ for _a, _u in _ATTR_UNITS.items():
     register_attr_units(_a, _u)
 
 
-def thermal_equilibrium(case, *, progress=None):
-    """Fixed point of the power loss and the thermal network; returns the Dataset (docs/thermal.md)."""
+#: largest change of the lubricant temperature per fixed-point iteration [K] (docs/thermal.md, "Solution")
+MAX_FIXED_POINT_STEP = 40.0
+
+
+def thermal_equilibrium(case, *, progress=None, T_start=None, x0_nodes=None):
+    """Fixed point of the power loss and the thermal network; returns the Dataset (docs/thermal.md).
+
+    ``T_start`` [K]: the lubricant temperature of the first iteration (default the oil inlet temperature);
+    ``x0_nodes`` [K]: the node temperatures the first network solve starts from (default all at the mean of
+    the fixed nodes).  Both only move the starting point (the uniqueness check of docs/thermal.md)."""
     from hsbearing.case import as_case
+    from hsbearing.errors import CaseError
 
     case = as_case(case)
     th = case.thermal
     T_in = th.oil_inlet_temperature or case.lubricant.temperature
-    T_lub = T_in
+    T_lub = T_in if T_start is None else float(T_start)
     hist_T, hist_P = [], []
     T_nodes, converged, it = None, False, 0
+    if x0_nodes is not None:
+        T_nodes = dict(zip(NODES, (float(v) for v in x0_nodes)))
     for it in range(1, th.max_iterations + 1):
-        c = case.with_overrides(**{"lubricant.temperature": f"{T_lub} K"})
+        try:
+            c = case.with_overrides(**{"lubricant.temperature": f"{T_lub} K"})
+        except CaseError as exc:  # the fixed point left the oil's range: no equilibrium at this oil flow
+            raise CaseError(case.source, "lubricant.oil_flow_rate", (
+                f"no thermal equilibrium: at iteration {it} the lubricant temperature reaches {T_lub - 273.15:.1f} degC "
+                f"(power {hist_P[-1] if hist_P else float('nan'):.4g} W at {hist_T[-1] - 273.15 if hist_T else float('nan'):.1f} degC, "
+                f"oil flow {case.lubricant.oil_flow_rate * 6e4:.4g} L/min), beyond the oil's range ({exc.message}); "
+                "more oil flow or a cooler inlet is needed")) from None
         src, heat, qs = heat_by_body(c)
         net, info = bearing_network(c, heat, qs, T_in)
         x0 = None if T_nodes is None else [T_nodes[n] for n in NODES]
@@ -367,7 +437,9 @@ def thermal_equilibrium(case, *, progress=None):
         if abs(T_new - T_lub) < th.tolerance:
             converged = True
             break
-        T_lub = T_lub + 0.8 * (T_new - T_lub)  # under-relaxed (the power falls as the oil thins)
+        # under-relaxed (the power falls as the oil thins), the step bounded so that a start far from the
+        # equilibrium (a cold start at high speed: a large power at a thick oil) cannot leave the oil's range
+        T_lub = T_lub + max(-MAX_FIXED_POINT_STEP, min(MAX_FIXED_POINT_STEP, 0.8 * (T_new - T_lub)))
     flows = net.flows(T_nodes)
     P = sum(net.sources.values())
     q_oil = sum(q for a, b, k, q in flows if k == "advection")
@@ -416,6 +488,10 @@ def thermal_lines(ds) -> list[str]:
                  f"balance error {float(ds.heat_balance_error):.2e}")
     lines.append("power loss by source at equilibrium [W]: " + ", ".join(
         f"{s} {float(ds[f'thermal_power_loss_{s}']):.3g}" for s in _SRC if abs(float(ds[f'thermal_power_loss_{s}'])) > 1e-9))
+    Re = float(ds.attrs.get("network_Re_shaft", 0.0))
+    if Re > 4.3e5:
+        lines.append(f"note: shaft Reynolds number {Re:.3g} is beyond the rotating-cylinder correlation's range (4.3e5): "
+                     "the shaft's air convection is extrapolated")
     lines.append("note: heat split " + ds.attrs["heat_split"] + "; correlations and assumptions: docs/thermal.md")
     return lines
 

@@ -6,8 +6,15 @@ import numpy as np
 import pytest
 
 from hsbearing import cli
-from hsbearing.thermal import (Network, constriction_resistance, cylinder_resistance, fin_conductance, harris_oil_h,
-                               rotating_cylinder_h, solve_network)
+from hsbearing.thermal import (
+    Network,
+    constriction_resistance,
+    cylinder_resistance,
+    fin_conductance,
+    harris_oil_h,
+    rotating_cylinder_h,
+    solve_network,
+)
 
 
 def test_one_conduction_path_to_a_convective_sink():
@@ -38,6 +45,9 @@ def test_advection_and_nonlinear_link():
 
 def test_elements():
     assert constriction_resistance(1e-3, 40.0) == pytest.approx(1.0 / 0.16)
+    assert constriction_resistance(1e-3, 40.0, 1e-3) == pytest.approx(1.0 / 0.16)
+    # a thin ellipse: K(m) -> ln(4 a / b) (Abramowitz & Stegun 17.3.26), R -> ln(4 a/b) / (2 pi k a)
+    assert constriction_resistance(1e-3, 40.0, 1e-6) == pytest.approx(math.log(4e3) / (2 * math.pi * 40.0 * 1e-3), rel=1e-5)
     # long fin: sqrt(h P k A)
     d, h, k = 0.02, 50.0, 40.0
     assert fin_conductance(h, d, k, 100.0) == pytest.approx(math.sqrt(h * math.pi * d * k * math.pi * d * d / 4))
@@ -46,7 +56,8 @@ def test_elements():
     # Nu = 0.133 Re^(2/3) Pr^(1/3), Re = omega d^2 / nu
     Re = 1000.0 * 0.03**2 / 1.8e-5
     assert rotating_cylinder_h(1000.0, 0.03) == pytest.approx(0.133 * Re ** (2 / 3) * 0.71 ** (1 / 3) * 0.028 / 0.03)
-    assert harris_oil_h(1000.0, 1e-5, 0.14, 50.0, 1.0) == pytest.approx(0.0986 * 0.14 * 50 ** (1 / 3) * 1e4)
+    # n in r/min: 1000 rad/s = 9549.3 r/min (the reading is checked against the rotating disk in test_thermal_reference)
+    assert harris_oil_h(1000.0, 1e-5, 0.14, 50.0, 1.0) == pytest.approx(0.0986 * 0.14 * 50 ** (1 / 3) * math.sqrt(9549.2966 / 1e-5))
 
 
 @pytest.fixture(scope="module")
@@ -80,6 +91,12 @@ def test_zhang2016_converges_and_balances(zhang_archive, capsys):
     T = dict(zip([str(n) for n in ds.node.values], ds.node_temperature.values))
     Tc = 0.25 * (T["inner_ring"] + T["outer_ring"] + 2 * T["balls"])
     assert abs(Tc - float(ds.lubricant_temperature)) < 0.01
+    # each node's own balance: heat generated = net outflow along its links
+    net = dict(zip([str(n) for n in ds.node.values], ds.node_heat_input.values.astype(float)))
+    for a, b, q in zip(ds.link_from.values, ds.link_to.values, ds.link_heat_flow.values):
+        net[str(a)] = net.get(str(a), 0.0) - float(q)
+        net[str(b)] = net.get(str(b), 0.0) + float(q)
+    assert max(abs(net[n]) for n in T if n in net and n not in ("oil_inlet", "ambient")) < 1e-9 * P
 
 
 def test_zhang2016_archive_plots(zhang_archive, tmp_path):
@@ -120,4 +137,59 @@ def test_run_thermal_starts_at_the_equilibrium_temperature(monkeypatch, capsys, 
         cli.main(["run", "zhang2016", "--thermal", "--duration", "1ms", "-o", str(tmp_path / "r.nc"), "-q", "--no-figure"])
     out = capsys.readouterr().out
     assert "thermal equilibrium: lubricant temperature" in out
-    assert seen["T"] - 273.15 == pytest.approx(133.385, abs=0.05)  # docs/thermal.md
+    assert seen["T"] - 273.15 == pytest.approx(131.72, abs=0.05)  # docs/thermal.md
+
+
+def test_oil_convection_follows_the_oil_temperature_for_a_lubricant_file():
+    """A lubricant file sets lubricant.kinematic_viscosity at the case temperature; the oil-side convection takes
+    the viscosity at the oil node's temperature from the file (it took the case's value at every temperature)."""
+    from hsbearing.case import load_case
+    from hsbearing.thermal import _viscosity
+
+    case = load_case("zhang2016", **{"lubricant.oil": "mobil_jet_oil_ii", "lubricant.temperature": "121 degC"})
+    d, rho = case.lubricant.definition, case.lubricant.density
+    assert _viscosity(case, 394.15) == pytest.approx(case.lubricant.kinematic_viscosity * rho, rel=1e-9)
+    for T in (360.0, 450.0):
+        assert _viscosity(case, T) == pytest.approx(float(d.kinematic_viscosity(T, rho)) * rho, rel=1e-12)
+    assert _viscosity(case, 450.0) < 0.6 * _viscosity(case, 394.15)
+    # a viscosity given in the case stays the user's value
+    fixed = load_case("zhang2016", **{"lubricant.kinematic_viscosity": "3 mm^2/s"})
+    assert _viscosity(fixed, 450.0) == pytest.approx(3e-6 * fixed.lubricant.density)
+
+
+def test_fixed_point_is_the_same_from_a_cold_and_a_hot_start(zhang_archive):
+    """Uniqueness (docs/thermal.md, "Review"): started 60 K below the inlet (lubricant and every node) the fixed
+    point reaches the temperatures of the default start within the fixed-point tolerance."""
+    from hsbearing import open_run
+    from hsbearing.case import load_case
+    from hsbearing.thermal import NODES, thermal_equilibrium
+
+    ref = open_run(zhang_archive[1])
+    case = load_case("zhang2016")
+    ds = thermal_equilibrium(case, T_start=case.lubricant.temperature - 60.0,
+                             x0_nodes=[case.lubricant.temperature - 60.0] * len(NODES))
+    assert ds.attrs["converged"] == 1
+    np.testing.assert_allclose(ds.node_temperature.values, ref.node_temperature.values, atol=0.01)
+
+
+def test_no_equilibrium_is_one_line_naming_the_oil_flow(capsys):
+    """An oil flow far too small: the fixed point climbs past the oil's range; the CLI says so on one line naming
+    lubricant.oil_flow_rate and exits 2 (it reported a lubricant.temperature the user had not set)."""
+    rc = cli.main(["thermal", "zhang2016", "--set", "lubricant.oil_flow_rate=0.01 L/min", "--set",
+                   "operating.inner_speed=40000 rpm"])  # 720 W, 0.3 W/K of oil: the network wants > 430 degC
+    err = capsys.readouterr().err.strip().splitlines()
+    assert rc == 2
+    assert "lubricant.oil_flow_rate" in err[-1] and "no thermal equilibrium" in err[-1]
+
+
+def test_summary_notes_a_shaft_beyond_the_correlation_range(zhang_archive):
+    """The rotating-cylinder correlation holds for Re < 4.3e5 (Incropera & DeWitt); zhang2016's shaft is at 7.3e4
+    (no note), TP-2275's at 72 000 r/min at 5.1e5 (docs/thermal.md "Review", 3): the summary says so."""
+    from hsbearing import open_run
+    from hsbearing.thermal import thermal_lines
+
+    ds = open_run(zhang_archive[1])
+    assert float(ds.attrs["network_Re_shaft"]) == pytest.approx(1466.08 * 0.03**2 / 1.8e-5, rel=1e-3)
+    assert not any("correlation's range" in line for line in thermal_lines(ds))
+    ds.attrs["network_Re_shaft"] = 5.1e5
+    assert any("beyond the rotating-cylinder correlation's range" in line for line in thermal_lines(ds))
