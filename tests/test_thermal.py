@@ -120,4 +120,6 @@ def test_run_thermal_starts_at_the_equilibrium_temperature(monkeypatch, capsys, 
         cli.main(["run", "zhang2016", "--thermal", "--duration", "1ms", "-o", str(tmp_path / "r.nc"), "-q", "--no-figure"])
     out = capsys.readouterr().out
     assert "thermal equilibrium: lubricant temperature" in out
-    assert seen["T"] - 273.15 == pytest.approx(133.385, abs=0.05)  # docs/thermal.md
+    # docs/thermal.md gives 133.385 degC with the former v^1.95 drag law; 133.445 degC with the sphere drag v^2
+    # (ball drag +15 % on the default case, docs/power_loss.md "The drag law checked independently")
+    assert seen["T"] - 273.15 == pytest.approx(133.445, abs=0.05)

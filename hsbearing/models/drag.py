@@ -9,8 +9,8 @@ References
     ball-centre orbital speed v = d_m omega_m / 2.  The exponent 1.95 is NOT used here: with C_D taken
     from the sphere's drag curve at the ball Reynolds number ([4]), the speed dependence of C_D is already
     in C_D(Re), and by the definition of C_D the force is 1/2 C_D rho_e (pi D^2/4) v^2.  v^1.95 would
-    multiply that by v^-0.05, a unit-dependent factor (SI: 0.88 at 14 m/s, 0.80 at 80 m/s; in in/s
-    0.70-0.63) that lowered the drag by 12-20 % over the speeds of the cases (docs/power_loss.md,
+    multiply that by v^-0.05, a unit-dependent factor (SI: 0.88 at 14 m/s, 0.80 at 85 m/s; in in/s
+    0.73-0.67) that lowered the drag by 12-20 % over the speeds of the cases (docs/power_loss.md,
     "The drag law checked independently").
 [2] Zhang W. et al., Chin. J. Aeronaut. 29 (2016), Eq. (7) (F_D).
 [3] Parker R. J., *Comparison of predicted and experimental thermal performance of
@@ -22,13 +22,18 @@ References
     search tools; no public code implementing it was found either.  The form, the constant and
     the units are those of secondary recollection; in particular whether X is a fraction or a
     percentage was open.  It is read as a FRACTION, on physical evidence (docs/power_loss.md, "The cavity
-    oil fraction: fraction or percent, decided"): read as a percent, (a) the oil would change the computed
-    heat of the TP-2275 bearing by only 1-2 % per e-fold of the constant 1e5, below the +-3 % scatter of
-    the heat data it was fitted to, so the constant could not have been determined; (b) the mass balance
-    X V_free = Q tau would give the oil a mean residence time of 0.1-0.3 ms (a tenth of a cage revolution)
-    and a mean axial transit speed of 40-100 m/s, faster than any jet supplying it (5-35 m/s at
-    0.1-0.5 MPa) -- impossible; read as a fraction, 10-30 ms and 0.4-1.1 m/s, i.e. oil that is slowed and
-    churned for several cage revolutions.  The formula itself (form, constant, units) stays unverified.
+    oil fraction: fraction or percent, decided"; tools/issue29_cavity_oil_fraction.py).  For the 35-mm
+    TP-2275 bearing at 28 000-72 000 r/min and 760 cm^3/min, read as a percent: (a) the oil's part of the
+    computed heat is 2.1-2.3 %, so doubling the constant 1e5 changes the total by +2.3..2.5 % and removing the
+    oil altogether by -2.1..-2.3 %, both inside the +-3 % scatter of the heat data the correlation was
+    fitted to -- its constant and exponents could not have been determined; (b) the mass balance
+    X V_free = Q tau gives the oil 0.09-0.65 ms in the bearing (0.05-0.15 cage revolutions, 1-2 ball passes)
+    and a mean axial speed of 10-140 m/s, up to 4x the fastest supply jet (33 m/s at 0.5 MPa); (b') the drag
+    spends on the oil 0.20-0.24 of m_dot v^2, the power that accelerates the supplied oil once to the ball
+    orbital speed, i.e. three quarters of the oil would never meet a ball.  Read as a fraction: oil 69-71 %
+    of the heat (+70 % / -34 % for 2x / 0.5x the constant), 9-65 ms = 5-15 cage revolutions, 0.1-1.4 m/s,
+    22-24 m_dot v^2 (oil re-accelerated ~20 times in 80-230 ball passes).  The formula itself (form,
+    constant, units) stays unverified.
 [4] Clift R., Grace J. R., Weber M. E., *Bubbles, Drops, and Particles*, Academic Press (1978),
     Ch. 5, Table 5.2: the standard drag curve of a rigid sphere in a steady uniform stream as ten
     correlations in w = log10 Re over 0 < Re < ~1e7, including the drag crisis (3.38e5-4e5).
