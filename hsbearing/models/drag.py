@@ -10,7 +10,7 @@ References
     from the sphere's drag curve at the ball Reynolds number ([4]), the speed dependence of C_D is already
     in C_D(Re), and by the definition of C_D the force is 1/2 C_D rho_e (pi D^2/4) v^2.  v^1.95 would
     multiply that by v^-0.05, a unit-dependent factor (SI: 0.88 at 14 m/s, 0.80 at 85 m/s; in in/s
-    0.73-0.67) that lowered the drag by 12-20 % over the speeds of the cases (docs/power_loss.md,
+    0.73-0.67) that lowered the drag by 12-21 % over the speeds of the cases (14-99 m/s) (docs/power_loss.md,
     "The drag law checked independently").
 [2] Zhang W. et al., Chin. J. Aeronaut. 29 (2016), Eq. (7) (F_D).
 [3] Parker R. J., *Comparison of predicted and experimental thermal performance of
