@@ -19,14 +19,12 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
+import issue29_nasa_tp2275 as tp  # same directory (sys.path[0] when run as a script)
 
 from hsbearing.case import load_case, loads_case
 from hsbearing.dynamics import build_model
 from hsbearing.models.drag import AIR_DENSITY, parker_cavity_oil_fraction
 from hsbearing.rating import quasi_static_power_loss
-
-import issue29_nasa_tp2275 as tp  # noqa: E402  (same directory)
 
 #: largest plausible jet speed [m/s]: Bernoulli sqrt(2 dp / rho) at 0.5 MPa supply pressure and 920 kg/m^3
 JET_SPEED_MAX = math.sqrt(2 * 0.5e6 / 920.0)
@@ -72,7 +70,7 @@ def tp2275():
         w = n * math.pi / 30
         Xf = parker_cavity_oil_fraction(tp.FLOW, w, 0.0465)
         for label, X in (("fraction", Xf), ("percent", Xf / 100)):
-            def at(x):
+            def at(x, w=w):
                 return quasi_static_power_loss(tp.case_for(f"oil_volume_fraction = {min(x, 1.0):.8g}"), w)
             r, r2, rh = at(X), at(2 * X), at(0.5 * X)
             rho_oil = 920.0
@@ -129,8 +127,9 @@ def drag_law_changes():
     """Old law (v^1.95, volume-weighted viscosity) against the committed one (v^2, droplet-in-air viscosity) at
     the quasi-static orbital speed: Re, C_D and the drag ratio new / old, for zhang2016 (X = 0.05), the TP-2275
     reconstruction (Parker X, fraction) and the 120-mm 7206-similar bearing (Parker X, 2 L/min)."""
-    from hsbearing.models.drag import ball_drag_coefficient, mixture_viscosity
     import issue29_speed_exponents as se
+
+    from hsbearing.models.drag import ball_drag_coefficient, mixture_viscosity
 
     cases = [("zhang2016", 14000, load_case("zhang2016"))]
     cases += [("TP-2275 35-mm", n, tp.case_for("")) for n in (28000, 72000)]
