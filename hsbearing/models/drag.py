@@ -24,8 +24,8 @@ References
     percentage was open.  It is read as a FRACTION, on physical evidence (docs/power_loss.md, "The cavity
     oil fraction: fraction or percent, decided"; tools/issue29_cavity_oil_fraction.py).  For the 35-mm
     TP-2275 bearing at 28 000-72 000 r/min and 760 cm^3/min, read as a percent: (a) the oil's part of the
-    computed heat is 2.1-2.3 %, so doubling the constant 1e5 changes the total by +2.3..2.5 % and removing the
-    oil altogether by -2.1..-2.3 %, both inside the +-3 % scatter of the heat data the correlation was
+    computed heat is 2.0-2.3 %, so doubling the constant 1e5 changes the total by +2.3..2.5 % and removing the
+    oil altogether by -2.2..-2.5 %, both inside the +-3 % scatter of the heat data the correlation was
     fitted to -- its constant and exponents could not have been determined; (b) the mass balance
     X V_free = Q tau gives the oil 0.09-0.65 ms in the bearing (0.05-0.15 cage revolutions, 1-2 ball passes)
     and a mean axial speed of 10-140 m/s, up to 4x the fastest supply jet (33 m/s at 0.5 MPa); (b') the drag
