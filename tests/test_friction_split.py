@@ -25,7 +25,10 @@ def test_split_sums_to_totals_and_validity():
     # 30000 r/min x 46 mm = 1.38e6 mm r/min: outside the SKF model's speed range
     assert "SKF 2004 model likely outside its range" in ds.attrs["warnings"] and "speed ratings" in ds.attrs["warnings"]
     assert (ds.cavity_oil_fraction.values == 0.05).all()
-    assert (1e3 < ds.drag_reynolds_number.values).all() and (ds.drag_reynolds_number.values < 2e5).all()
+    # ball Re in the droplet-laden air: 2.7e5 at 14 000 and 6.2e5 at 30 000 r/min (Re ~ rho_e v D / mu_e; the orbit
+    # speed v grows ~6 % faster than n here as the centrifugal load turns the contact angles)
+    Re = ds.drag_reynolds_number.values
+    assert (1e5 < Re).all() and (Re < 1e6).all() and Re[1] / Re[0] == pytest.approx(30000 / 14000, rel=0.1)
 
 
 def test_no_speed_warning_at_default():

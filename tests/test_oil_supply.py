@@ -63,4 +63,5 @@ def test_reynolds_in_newton_regime():
     rho = drag.mixture_density(960.0, 0.05)
     mu = drag.mixture_viscosity(3e-3, 0.05)
     Re = drag.ball_reynolds_number(rho, 14.0, 9.525e-3, mu)
-    assert 1e3 < Re < 2e5
+    # Newton regime (C_D ~ 0.4-0.5) below the smooth sphere's crisis: ~2.6e5 with the droplet-in-air viscosity
+    assert 1e3 < Re < drag.RE_SUBCRITICAL_MAX

@@ -4,11 +4,14 @@ References
 ----------
 [1] Harris T. A., Kotzalas M. N., *Rolling Bearing Analysis*, 5th ed., Vol. 2
     (*Advanced Concepts of Bearing Technology*), Ch. 3/5: ball drag in the
-    air-oil mixture F_D = (pi/32) C_D rho_e D^2 (d_m omega_m)^1.95.  Read here, in SI,
-    as 1/2 C_D rho_e (pi D^2/4) v^1.95 with v = d_m omega_m / 2 the ball-centre
-    orbital speed; that is (pi/8) 2^-1.95 = pi/30.9 instead of pi/32, i.e. 3.5 %
-    above the printed coefficient.  The 1.95 exponent makes the formula
-    unit-dependent anyway; the drag is a minor term here (docs/validation/cage_whirl.md).
+    air-oil mixture F_D = (pi/32) C_D rho_e D^2 (d_m omega_m)^1.95.  The factor pi/32 is
+    1/2 (pi D^2/4) (d_m omega_m / 2)^2 / (D^2 (d_m omega_m)^2): the sphere drag 1/2 C_D rho v^2 A at the
+    ball-centre orbital speed v = d_m omega_m / 2.  The exponent 1.95 is NOT used here: with C_D taken
+    from the sphere's drag curve at the ball Reynolds number ([4]), the speed dependence of C_D is already
+    in C_D(Re), and by the definition of C_D the force is 1/2 C_D rho_e (pi D^2/4) v^2.  v^1.95 would
+    multiply that by v^-0.05, a unit-dependent factor (SI: 0.88 at 14 m/s, 0.80 at 85 m/s; in in/s
+    0.73-0.67) that lowered the drag by 12-21 % over the speeds of the cases (14-99 m/s) (docs/power_loss.md,
+    "The drag law checked independently").
 [2] Zhang W. et al., Chin. J. Aeronaut. 29 (2016), Eq. (7) (F_D).
 [3] Parker R. J., *Comparison of predicted and experimental thermal performance of
     angular-contact ball bearings*, NASA TP-2275 (1984): an empirical oil content of the air-oil
@@ -18,9 +21,19 @@ References
     the formula (Harris & Kotzalas Vol. 2; Pouly et al. 2010) could be read through this project's
     search tools; no public code implementing it was found either.  The form, the constant and
     the units are those of secondary recollection; in particular whether X is a fraction or a
-    percentage is open (read as a percentage the drag almost vanishes).  It is read as a fraction.
-    What was tried and what the 35-mm TP-2275 bearing says about the two readings:
-    docs/power_loss.md, "Oil supply and the cavity oil fraction" and "Measured heat generation".
+    percentage was open.  It is read as a FRACTION, on physical evidence (docs/power_loss.md, "The cavity
+    oil fraction: fraction or percent, decided"; tools/issue29_cavity_oil_fraction.py).  For the 35-mm
+    TP-2275 bearing at 28 000-72 000 r/min and 760 cm^3/min, read as a percent: (a) the oil's part of the
+    computed heat is 2.0-2.3 %, so doubling the constant 1e5 changes the total by +2.3..2.5 % and removing the
+    oil altogether by -2.2..-2.5 %, both inside the +-3 % scatter of the heat data the correlation was
+    fitted to -- its constant and exponents could not have been determined; (b) the mass balance
+    X V_free = Q tau gives the oil 0.09-0.65 ms in the bearing (0.05-0.15 cage revolutions, 1-2 ball passes)
+    and a mean axial speed of 10-140 m/s, up to 4x the fastest supply jet (33 m/s at 0.5 MPa); (b') the drag
+    spends on the oil 0.20-0.24 of m_dot v^2, the power that accelerates the supplied oil once to the ball
+    orbital speed, i.e. three quarters of the oil would never meet a ball.  Read as a fraction: oil 69-71 %
+    of the heat (+70 % / -34 % for 2x / 0.5x the constant), 9-65 ms = 5-15 cage revolutions, 0.1-1.4 m/s,
+    22-24 m_dot v^2 (oil re-accelerated ~20 times in 80-230 ball passes).  The formula itself (form,
+    constant, units) stays unverified.
 [4] Clift R., Grace J. R., Weber M. E., *Bubbles, Drops, and Particles*, Academic Press (1978),
     Ch. 5, Table 5.2: the standard drag curve of a rigid sphere in a steady uniform stream as ten
     correlations in w = log10 Re over 0 < Re < ~1e7, including the drag crisis (3.38e5-4e5).
@@ -30,6 +43,16 @@ References
     the measured sphere drag of Roos & Willmarth, AIAA J. 9 (1971) 285 (tabulated in the
     ``sheardata`` collection, CC-BY-4.0) and against points read from Achenbach, J. Fluid
     Mech. 54 (1972) 565, Fig. 4 (through the crisis).
+[5] The effective viscosity of the droplet-laden air (air continuous, oil dispersed): Einstein A.,
+    Ann. Phys. 19 (1906) 289 and 34 (1911) 591 (mu = mu_c (1 + 5/2 phi) for dilute rigid spheres); Taylor G. I.,
+    Proc. R. Soc. A 138 (1932) 41 (drops of viscosity ratio lambda: mu = mu_c (1 + phi (1 + 5/2 lambda) /
+    (1 + lambda))); Hashin Z., Shtrikman S., J. Mech. Phys. Solids 11 (1963) 127 (bounds on the effective
+    shear modulus of an isotropic two-phase body, here in the Stokes-flow analogue with incompressible
+    phases).  The lower bound, attained by inclusions of the more viscous phase dispersed in the less
+    viscous one, is mu_c + phi / (1 / (mu_d - mu_c) + 2 (1 - phi) / (5 mu_c)); it reduces to Einstein's
+    result to first order in phi and to mu_d at phi = 1.  The volume-weighted mean X mu_oil + (1 - X) mu_air
+    is the opposite (Voigt, upper) bound, the viscosity of layers sheared in parallel: for a mist it
+    gives d mu / d phi = mu_oil - mu_air (~90 mu_air) at phi -> 0 against at most 5/2 mu_air (Einstein).
 """
 
 from __future__ import annotations
@@ -106,9 +129,22 @@ AIR_VISCOSITY = 2.1e-5
 
 
 def mixture_viscosity(oil_viscosity: float, oil_volume_fraction: float, air_viscosity: float = AIR_VISCOSITY) -> float:
-    """Effective viscosity of the air-oil mixture mu_e = X mu_oil + (1 - X) mu_air [Pa s] (same volume
-    weighting as :func:`mixture_density`, [1])."""
-    return oil_volume_fraction * oil_viscosity + (1.0 - oil_volume_fraction) * air_viscosity
+    """Effective viscosity of the air-oil mixture of the cavity, oil droplets dispersed in air [Pa s] ([5]).
+
+    mu_e = mu_a + X / (1 / (mu_oil - mu_a) + 2 (1 - X) / (5 mu_a))   (Hashin-Shtrikman lower bound with
+    incompressible phases, air the continuous phase); to first order in X this is Einstein's
+    mu_a (1 + 5/2 X) for mu_oil >> mu_a and Taylor's drop-suspension viscosity for finite
+    mu_oil / mu_a; X = 0 gives mu_a, X = 1 gives mu_oil.  Used for the ball Reynolds number only.
+    Needs mu_oil >= mu_a (an oil less viscous than air is rejected).
+    """
+    X = oil_volume_fraction
+    if not 0.0 <= X <= 1.0:
+        raise ValueError("oil_volume_fraction must be within [0, 1]")
+    if oil_viscosity < air_viscosity:
+        raise ValueError("oil viscosity below that of air")
+    if X == 0.0 or oil_viscosity == air_viscosity:
+        return air_viscosity
+    return air_viscosity + X / (1.0 / (oil_viscosity - air_viscosity) + 0.4 * (1.0 - X) / air_viscosity)  # [5]
 
 
 def ball_reynolds_number(rho_e: float, v: float, D: float, mu_e: float) -> float:
@@ -164,7 +200,7 @@ def sphere_drag_coefficient(Re: float) -> float:
 
 
 #: Below this ball Reynolds number the drag coefficient is taken at it: a bearing standing still or
-#: creeping has no meaningful drag Reynolds number, and the drag (~ v^1.95) is negligible there.
+#: creeping has no meaningful drag Reynolds number, and the drag (~ v^2) is negligible there.
 RE_FLOOR = 1.0
 
 
@@ -196,12 +232,13 @@ def ball_drag_coefficient(rho_e: float, mu_e: float, v: float, D: float) -> tupl
 def ball_drag_force(v, D, rho_e, C_D, v0):
     """Drag on a ball moving at speed v through the mixture [N], opposite to v.
 
-    F_D = 1/2 C_D rho_e (pi D^2 / 4) v |v|^0.95 ([1]: exponent 1.95); |v| is
-    regularised as sqrt(v^2 + v0^2) so that the force is smooth at v = 0.
-    Returns the signed force along the direction of v (negative for v > 0).
+    F_D = 1/2 C_D rho_e (pi D^2 / 4) v |v|  (the sphere drag that defines C_D, [4]; Harris's
+    pi/32 form [1] at v = d_m omega_m / 2, with the exponent 2 instead of 1.95 because C_D(Re)
+    carries the speed dependence); |v| is regularised as sqrt(v^2 + v0^2) so that the force is
+    smooth at v = 0.  Returns the signed force along the direction of v (negative for v > 0).
     """
     va = math.sqrt(v * v + v0 * v0)
-    return -0.5 * C_D * rho_e * 0.25 * math.pi * D * D * v * va**0.95  # [1]
+    return -0.5 * C_D * rho_e * 0.25 * math.pi * D * D * v * va  # [4], [1]
 
 
 # numba bakes callees and captured constants into its cache: key the cache on them (compile_cache.py)
