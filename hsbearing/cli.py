@@ -258,6 +258,12 @@ def cmd_run(args) -> int:
         from hsbearing.thermal import thermal_equilibrium
 
         th = thermal_equilibrium(case)
+        if th.attrs["status"] != "ok":  # no steady state to start from: say so before any dynamics is computed
+            from hsbearing.errors import CaseError
+
+            raise CaseError(case.source, "lubricant.oil_flow_rate", th.attrs.get("error") or
+                            f"the thermal fixed point did not converge in {int(th.fixed_point_iterations)} iterations "
+                            "(thermal.max_iterations, thermal.tolerance)")
         T = float(th.lubricant_temperature)
         print(f"thermal equilibrium: lubricant temperature {T - 273.15:.3f} degC (oil outlet "
               f"{float(th.oil_outlet_temperature) - 273.15:.3f} degC, {float(th.heat_generated):.4g} W); the run uses it")

@@ -436,6 +436,8 @@ def _compute_point(case: Case, kind: str, duration, point_fn) -> tuple[dict, xr.
 
             ds = simulate(case, duration=duration)
         rec["status"] = str(ds.attrs.get("status", STATUS_OK))
+        if rec["status"] != STATUS_OK and ds.attrs.get("error"):  # a result that says why it is not ok (e.g. thermal runaway)
+            rec["error"] = str(ds.attrs["error"])
     except CaseError as exc:
         rec.update(status="invalid", error=str(exc))
         ds = None

@@ -40,6 +40,7 @@ References
 from __future__ import annotations
 
 import math
+import sys
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -395,6 +396,10 @@ for _a, _u in _ATTR_UNITS.items():
     register_attr_units(_a, _u)
 
 
+#: status of a thermal archive whose fixed point left the oil's range (thermal runaway at that oil flow): the
+#: archive holds the last network solved, attrs["error"] says where it stopped
+STATUS_NO_EQUILIBRIUM = "no_equilibrium"
+
 #: largest change of the lubricant temperature per fixed-point iteration [K] (docs/thermal.md, "Solution")
 MAX_FIXED_POINT_STEP = 40.0
 
@@ -413,18 +418,22 @@ def thermal_equilibrium(case, *, progress=None, T_start=None, x0_nodes=None):
     T_in = th.oil_inlet_temperature or case.lubricant.temperature
     T_lub = T_in if T_start is None else float(T_start)
     hist_T, hist_P = [], []
-    T_nodes, converged, it = None, False, 0
+    T_nodes, converged, it, runaway = None, False, 0, ""
     if x0_nodes is not None:
         T_nodes = dict(zip(NODES, (float(v) for v in x0_nodes)))
     for it in range(1, th.max_iterations + 1):
         try:
             c = case.with_overrides(**{"lubricant.temperature": f"{T_lub} K"})
         except CaseError as exc:  # the fixed point left the oil's range: no equilibrium at this oil flow
-            raise CaseError(case.source, "lubricant.oil_flow_rate", (
-                f"no thermal equilibrium: at iteration {it} the lubricant temperature reaches {T_lub - 273.15:.1f} degC "
-                f"(power {hist_P[-1] if hist_P else float('nan'):.4g} W at {hist_T[-1] - 273.15 if hist_T else float('nan'):.1f} degC, "
-                f"oil flow {case.lubricant.oil_flow_rate * 6e4:.4g} L/min), beyond the oil's range ({exc.message}); "
-                "more oil flow or a cooler inlet is needed")) from None
+            if not hist_T:  # the start itself is outside the oil's data: bad input
+                raise
+            # a result, not bad input (thermal runaway at this flow): the last network solved is kept, with its status
+            runaway = (f"no thermal equilibrium: at iteration {it} the lubricant temperature reaches {T_lub - 273.15:.1f} degC "
+                       f"(power {hist_P[-1]:.4g} W at {hist_T[-1] - 273.15:.1f} degC, oil flow "
+                       f"{case.lubricant.oil_flow_rate * 6e4:.4g} L/min), beyond the oil's range ({exc.message}); "
+                       "more oil flow (lubricant.oil_flow_rate) or a cooler inlet is needed")
+            it -= 1
+            break
         src, heat, qs = heat_by_body(c)
         net, info = bearing_network(c, heat, qs, T_in)
         x0 = None if T_nodes is None else [T_nodes[n] for n in NODES]
@@ -460,8 +469,9 @@ def thermal_equilibrium(case, *, progress=None, T_start=None, x0_nodes=None):
     }
     data.update({f"thermal_power_loss_{s}": src[s] for s in _SRC})
     coords = {"node": list(NODES), "link": [f"{a}->{b}" for a, b, *_ in flows], "iteration": np.arange(1, len(hist_T) + 1)}
+    status = "ok" if converged else STATUS_NO_EQUILIBRIUM if runaway else "not_converged"
     attrs = standard_attrs(
-        case, "ok" if converged else "not_converged", title="hsbearing thermal: steady thermal network at the power loss",
+        case, status, title="hsbearing thermal: steady thermal network at the power loss", error=runaway or None,
         archive_kind="thermal", converged=int(converged), network_residual_W=float(np.max(np.abs(R))),
         heat_split=("race contact -> 1/2 ring + 1/2 balls; pocket -> 1/2 balls + 1/2 cage; guide land -> 1/2 cage + "
                     "1/2 guiding ring; ball drag -> oil"),
@@ -476,9 +486,14 @@ def thermal_equilibrium(case, *, progress=None, T_start=None, x0_nodes=None):
 def thermal_lines(ds) -> list[str]:
     """Printed summary of :func:`thermal_equilibrium`."""
     C = lambda v: f"{float(v) - 273.15:.2f} degC"  # noqa: E731
-    lines = [f"thermal network ({'converged' if ds.attrs.get('converged') else 'NOT converged'} in "
-             f"{int(ds.fixed_point_iterations)} fixed-point iterations, lubricant temperature "
-             f"{C(ds.lubricant_temperature)}):"]
+    if ds.attrs.get("status") == STATUS_NO_EQUILIBRIUM:
+        lines = [f"NO thermal equilibrium -- {ds.attrs.get('error', '')}",
+                 f"the last network solved ({int(ds.fixed_point_iterations)} fixed-point iterations, lubricant temperature "
+                 f"{C(ds.lubricant_temperature)}; not a steady state):"]
+    else:
+        lines = [f"thermal network ({'converged' if ds.attrs.get('converged') else 'NOT converged'} in "
+                 f"{int(ds.fixed_point_iterations)} fixed-point iterations, lubricant temperature "
+                 f"{C(ds.lubricant_temperature)}):"]
     for n in NODES:
         i = list(ds.node.values).index(n)
         lines.append(f"  {n:12s} {C(ds.node_temperature.values[i]):>12s}   heat in {float(ds.node_heat_input.values[i]):8.3f} W")
@@ -486,7 +501,8 @@ def thermal_lines(ds) -> list[str]:
     lines.append(f"heat generated {float(ds.heat_generated):.3f} W = removed by the oil {float(ds.heat_removed_by_oil):.3f} W "
                  f"+ by conduction to the air (housing, shaft) {float(ds.heat_removed_by_conduction):.3f} W; "
                  f"balance error {float(ds.heat_balance_error):.2e}")
-    lines.append("power loss by source at equilibrium [W]: " + ", ".join(
+    at = "at the last iteration" if ds.attrs.get("status") == STATUS_NO_EQUILIBRIUM else "at equilibrium"
+    lines.append(f"power loss by source {at} [W]: " + ", ".join(
         f"{s} {float(ds[f'thermal_power_loss_{s}']):.3g}" for s in _SRC if abs(float(ds[f'thermal_power_loss_{s}'])) > 1e-9))
     Re = float(ds.attrs.get("network_Re_shaft", 0.0))
     if Re > 4.3e5:
@@ -518,8 +534,12 @@ def thermal_cli(args) -> int:
     case = load_case(args.case, **parse_sets(getattr(args, "set", None)))
     check_inputs(case)
     out = getattr(args, "output", None)
-    if out and not str(out).endswith((".nc", ".nc4")):
-        raise CaseError("-o", None, f"{out!r}: the archive must be a .nc file")
+    if out:
+        from hsbearing.results import check_output_path
+
+        if not str(out).endswith((".nc", ".nc4")):
+            raise CaseError("-o", None, f"{out!r}: the archive must be a .nc file")
+        check_output_path(out, source="-o")
     ds = thermal_equilibrium(case, progress=lambda i, T, P, Tn: print(
         f"  iteration {i}: lubricant {T - 273.15:.3f} degC, power {P:.3f} W -> contacts at {Tn - 273.15:.3f} degC", flush=True))
     print(f"case {case.name}: n = {case.operating.inner_speed * 30 / math.pi:.6g} r/min, oil flow "
@@ -528,4 +548,6 @@ def thermal_cli(args) -> int:
     if out:
         write_netcdf(ds, out)
         print(f"archive: {out}")
+    if ds.attrs["status"] == STATUS_NO_EQUILIBRIUM:
+        print(f"hsbearing: {case.source}: {ds.attrs['error']}", file=sys.stderr)
     return 0 if ds.attrs["converged"] else 1

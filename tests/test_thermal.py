@@ -172,14 +172,38 @@ def test_fixed_point_is_the_same_from_a_cold_and_a_hot_start(zhang_archive):
     np.testing.assert_allclose(ds.node_temperature.values, ref.node_temperature.values, atol=0.01)
 
 
-def test_no_equilibrium_is_one_line_naming_the_oil_flow(capsys):
-    """An oil flow far too small: the fixed point climbs past the oil's range; the CLI says so on one line naming
-    lubricant.oil_flow_rate and exits 2 (it reported a lubricant.temperature the user had not set)."""
-    rc = cli.main(["thermal", "zhang2016", "--set", "lubricant.oil_flow_rate=0.01 L/min", "--set",
-                   "operating.inner_speed=40000 rpm"])  # 720 W, 0.3 W/K of oil: the network wants > 430 degC
+def test_no_equilibrium_is_a_result_with_its_status(capsys, tmp_path):
+    """An oil flow far too small: the fixed point climbs past the oil's range (thermal runaway at this flow). That is
+    an answer, not bad input: the last network solved is archived with status no_equilibrium and the reason, the
+    CLI says so on one stderr line naming lubricant.oil_flow_rate and exits 1; ``run --thermal`` has no steady state
+    to start from and refuses on one line (exit 2) before any dynamics."""
+    from hsbearing import open_run
+
+    bad = ["--set", "lubricant.oil_flow_rate=0.01 L/min", "--set", "operating.inner_speed=40000 rpm"]
+    rc = cli.main(["thermal", "zhang2016", *bad, "-o", str(tmp_path / "t.nc")])  # 720+ W, 0.3 W/K of oil
     err = capsys.readouterr().err.strip().splitlines()
-    assert rc == 2
-    assert "lubricant.oil_flow_rate" in err[-1] and "no thermal equilibrium" in err[-1]
+    assert rc == 1 and len(err) == 1
+    assert "lubricant.oil_flow_rate" in err[0] and "no thermal equilibrium" in err[0]
+    ds = open_run(tmp_path / "t.nc")
+    assert ds.attrs["status"] == "no_equilibrium" and "no thermal equilibrium" in ds.attrs["error"]
+    assert int(ds.fixed_point_iterations) == ds.sizes["iteration"] >= 1
+    assert abs(float(ds.heat_balance_error)) < 1e-9  # the last network solved is a balanced network
+    assert np.all(np.diff(ds.iteration_lubricant_temperature.values) > 0)  # it was climbing
+    rc = cli.main(["run", "zhang2016", "--thermal", *bad, "--duration", "1ms", "-o", str(tmp_path / "r.nc")])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert rc == 2 and len(err) == 1 and "no thermal equilibrium" in err[0]
+    assert not (tmp_path / "r.nc").exists()
+
+
+def test_no_equilibrium_point_of_a_thermal_sweep(tmp_path):
+    """In a sweep over the oil flow the runaway point keeps its archive and its status; the others are ok."""
+    import hsbearing
+
+    ds = hsbearing.sweep(hsbearing.load_case("zhang2016", inner_speed="40000 rpm"), {"oil_flow_rate": "0.01,1L/min"},
+                         out_dir=tmp_path, kind="thermal", jobs=1, progress=False)
+    assert list(ds["status"].values) == ["no_equilibrium", "ok"]
+    assert "no thermal equilibrium" in str(ds["error"].values[0])
+    assert (tmp_path / str(ds["archive"].values[0])).exists()
 
 
 def test_summary_notes_a_shaft_beyond_the_correlation_range(zhang_archive):
