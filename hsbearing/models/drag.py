@@ -115,7 +115,8 @@ def cavity_oil_fraction(oil_volume_fraction, oil_flow_rate, speed: float, pitch_
         return 0.0, "lubrication = dry"
     if oil_flow_rate is not None and lubrication in ("oil_jet", "oil_air"):
         return (parker_cavity_oil_fraction(oil_flow_rate, speed, pitch_diameter),
-                "Parker (NASA TP-2275) from oil_flow_rate -- form and units UNVERIFIED, docs/power_loss.md")
+                "Parker (NASA TP-2275) from oil_flow_rate -- source UNVERIFIED (form and units as recalled), "
+                "X read as a fraction (decided on evidence), docs/power_loss.md")
     return DEFAULT_OIL_FRACTION, "default 0.05 (no oil_volume_fraction, no oil_flow_rate for a jet / air-oil supply)"
 
 
