@@ -485,8 +485,10 @@ def cmd_friction(args) -> int:
     case = load_case(args.case, **parse_sets(getattr(args, "set", None)))
     out = getattr(args, "output", None)
     system = systems.get(case)
-    if out and not str(out).endswith((".nc", ".nc4")) and system.friction_archive:
-        raise CaseError("-o", None, f"{out!r}: the archive must be a .nc file")
+    if system.friction_archive:
+        from hsbearing.results import check_archive_name
+
+        check_archive_name(out)
     return system.friction(case, args)
 
 

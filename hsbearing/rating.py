@@ -174,13 +174,12 @@ def life_lines(ds) -> list[str]:
 
 def life_cli(args) -> int:
     """``hsbearing life CASE [--set k=v] [-o OUT.nc]``: ISO 281 and ISO/TS 16281 lives (radial ball bearings)."""
-    from hsbearing.case import CaseError, load_case, parse_sets
-    from hsbearing.results import write_netcdf
+    from hsbearing.case import load_case, parse_sets
+    from hsbearing.results import check_archive_name, write_netcdf
 
     case = load_case(args.case, **parse_sets(getattr(args, "set", None)))
     out = getattr(args, "output", None)
-    if out and not str(out).endswith((".nc", ".nc4")):
-        raise CaseError("-o", None, f"{out!r}: the archive must be a .nc file")
+    check_archive_name(out)
     ds = life(case)
     print(f"case {case.name}: Fa = {abs(case.operating.axial_load):g} N, Fr = "
           f"{math.hypot(case.operating.radial_load, case.operating.radial_load_z):g} N")

@@ -289,6 +289,14 @@ def _name_max(directory: Path) -> int:
         return 255
 
 
+def check_archive_name(path) -> None:
+    """Raise CaseError unless ``path`` (an ``-o`` archive; None: no archive asked) ends in ``.nc`` / ``.nc4``."""
+    if path and not str(path).endswith((".nc", ".nc4")):
+        from hsbearing.case import CaseError
+
+        raise CaseError("-o", None, f"{str(path)!r}: the archive must be a .nc file")
+
+
 def check_output_path(path: str | os.PathLike, *, source: str = "-o", directory: bool = False,
                       derived: tuple | list = ()) -> Path:
     """Check, before any computation, that ``path`` can be written; raise CaseError if not.

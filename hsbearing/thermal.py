@@ -294,12 +294,7 @@ def bearing_network(case, heat: dict, qs, T_in: float | None = None) -> tuple[Ne
     k_oil = th.oil_thermal_conductivity or OILS[lub.oil].K
     cp = th.oil_specific_heat
     T_in = T_in or th.oil_inlet_temperature or lub.temperature
-    flow = lub.oil_flow_rate
-    if not flow:
-        from hsbearing.errors import CaseError
-
-        raise CaseError(case.source, "lubricant.oil_flow_rate", "the thermal network needs the oil flow (e.g. \"1 L/min\"): "
-                        "the oil carries the heat away")
+    flow = _oil_flow(case)
     mcp = lub.density * flow * cp
     omega = abs(case.operating.inner_speed - case.operating.outer_speed)
 
@@ -512,6 +507,16 @@ def thermal_lines(ds) -> list[str]:
     return lines
 
 
+def _oil_flow(case) -> float:
+    """The oil flow through the bearing [m^3/s]; a CaseError naming the key if the case gives none."""
+    if not case.lubricant.oil_flow_rate:
+        from hsbearing.errors import CaseError
+
+        raise CaseError(case.source, "lubricant.oil_flow_rate", "the thermal network needs the oil flow (e.g. \"1 L/min\"): "
+                        "the oil carries the heat away")
+    return case.lubricant.oil_flow_rate
+
+
 def check_inputs(case) -> None:
     """Raise a CaseError naming the file and key if the case cannot give a thermal network: not an
     angular-contact case, no bore/outside diameter/width, no oil flow.  Called before anything is computed
@@ -521,25 +526,18 @@ def check_inputs(case) -> None:
     if case.system != "angular_contact":
         raise CaseError(case.source, "case.system", f"the thermal network is for angular_contact cases, not {case.system!r}")
     _geometry(case)
-    if not case.lubricant.oil_flow_rate:
-        raise CaseError(case.source, "lubricant.oil_flow_rate", "the thermal network needs the oil flow (e.g. \"1 L/min\"): "
-                        "the oil carries the heat away")
+    _oil_flow(case)
 
 
 def thermal_cli(args) -> int:
     """``hsbearing thermal CASE [--set k=v] [-o OUT.nc]``."""
-    from hsbearing.case import CaseError, load_case, parse_sets
-    from hsbearing.results import write_netcdf
+    from hsbearing.case import load_case, parse_sets
+    from hsbearing.results import check_archive_name, write_netcdf
 
     case = load_case(args.case, **parse_sets(getattr(args, "set", None)))
     check_inputs(case)
     out = getattr(args, "output", None)
-    if out:
-        from hsbearing.results import check_output_path
-
-        if not str(out).endswith((".nc", ".nc4")):
-            raise CaseError("-o", None, f"{out!r}: the archive must be a .nc file")
-        check_output_path(out, source="-o")
+    check_archive_name(out)  # (the path itself: cli.cmd_thermal, before this)
     ds = thermal_equilibrium(case, progress=lambda i, T, P, Tn: print(
         f"  iteration {i}: lubricant {T - 273.15:.3f} degC, power {P:.3f} W -> contacts at {Tn - 273.15:.3f} degC", flush=True))
     print(f"case {case.name}: n = {case.operating.inner_speed * 30 / math.pi:.6g} r/min, oil flow "

@@ -32,7 +32,7 @@ from hsbearing.models.friction.wire_race import (  # noqa: F401 - the physics, a
     wire_contact_radii,
 )
 from hsbearing.models.hertz import point_contact
-from hsbearing.results import make_dataset, register, standard_attrs, write_netcdf
+from hsbearing.results import check_archive_name, make_dataset, register, standard_attrs, write_netcdf
 
 #: the physics' public names (re-exported above) and this module's own
 __all__ = [*_physics.__all__,
@@ -437,8 +437,7 @@ def preload_command(case, args) -> int:
             raise CaseError("--target-torque", None, "expected a window lo..hi, e.g. 90..100N*m")
         target = (float(t[0]), float(t[-1]))
     out = getattr(args, "output", None)
-    if out and not str(out).endswith((".nc", ".nc4")):
-        raise CaseError("-o", None, f"{out!r}: the archive must be a .nc file")
+    check_archive_name(out)
     ds = preload_sweep(case, preloads)
     window = preload_window(case, *target) if target else None
     p = _wire_params(case)
