@@ -28,6 +28,11 @@ def test_drag_force_is_unit_system_independent():
     # and it is the sphere drag: 1/2 C_D rho v^2 (pi D^2 / 4), independent of the regularisation far from v = 0
     assert f_si == pytest.approx(-0.5 * C * rho * v * v * math.pi * D * D / 4.0, rel=1e-12)
     assert drag.ball_drag_force(2 * v, D, rho, C, 0.0) == pytest.approx(4.0 * f_si, rel=1e-12)
+    # both directions of the orbit: opposite to the motion, odd in v (also through the regularised v = 0)
+    for u in (-v, -1e-3, 1e-3, v):
+        f = drag.ball_drag_force(u, D, rho, C, 0.01)
+        assert f * u < 0.0 and f == pytest.approx(-drag.ball_drag_force(-u, D, rho, C, 0.01), rel=1e-15)
+    assert drag.ball_drag_force(0.0, D, rho, C, 0.01) == 0.0
 
 
 def test_mixture_viscosity_einstein_limit():
