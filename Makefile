@@ -48,11 +48,11 @@ lock: $(STAMP)
 	$(BIN)/pip-compile --quiet --upgrade --extra test --extra bench --strip-extras --no-emit-find-links \
 	    --no-emit-index-url --no-emit-trusted-host -o requirements.lock pyproject.toml
 
-# ruff over the package (rules: [tool.ruff] in pyproject.toml); installed into .venv on demand until the lock has it
+# ruff over the package, tests, tools, benchmarks and docs scripts (rules: [tool.ruff] in pyproject.toml; ruff is in the lock)
 lint: $(STAMP)
-	@$(BIN)/ruff --version >/dev/null 2>&1 || $(BIN)/python -m pip install --quiet ruff
-	$(BIN)/ruff check hsbearing
+	$(BIN)/ruff check hsbearing tests tools benchmarks docs
 
+# every benchmark in benchmarks/ (one-off measurements live in tools/investigations/)
 bench: $(STAMP)
 	@for f in benchmarks/bench_*.py; do echo "== $$f"; $(BIN)/python $$f || exit 1; done
 

@@ -1,10 +1,10 @@
-"""Benchmark of the dynamic model (issue 18): rhs and Jacobian cost, CVODE vs scipy BDF on the same rhs.
+"""Benchmark of the dynamic model: rhs and Jacobian cost, CVODE vs scipy BDF on the same rhs.
 
 Usage::
 
     .venv/bin/python benchmarks/bench_dynamics.py [--spans 0.02,0.1] [--repeat 1] [--no-scipy] [--no-onestep]
 
-Prints, for the bundled seed 004 case (default case, rtol/atol and output interval of the case file), in
+Prints, for the bundled Zhang et al. 2016 case (default case, rtol/atol and output interval of the case file), in
 one run:
 - microseconds per right-hand-side call (Python wrapper as CVODE calls it, and the bare kernel) and per
   compiled arrowhead Jacobian;
@@ -73,9 +73,9 @@ def main(argv=None) -> int:
     spans = [float(s) for s in args.spans.split(",")]
 
     import hsbearing as h
-    from hsbearing import dynamics as dy
-    from hsbearing.models import kernel as K
+    from hsbearing.models.ball_bearing import kernel as K
     from hsbearing.solvers.cvode import counters_available, integrate
+    from hsbearing.systems.angular_contact import dynamics as dy
 
     settings = dict(dy.SOLVER_SETTINGS) if counters_available() else {}
     print(f"load average at start: {_load()} ({os.cpu_count()} cores); {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}")
@@ -122,7 +122,7 @@ def main(argv=None) -> int:
           f"{t_ker[0] * 1e6:.2f} / {t_ker[1] * 1e6:.2f} us (bare kernel); "
           f"Jacobian: {t_jac[0] * 1e6:.0f} / {t_jac[1] * 1e6:.0f} us per call ({t_jac[1] / t_ker[1]:.0f} kernel-equivalents)")
     rhs_us, jac_us = t_rhs[1] * 1e6, t_jac[1] * 1e6  # CPU per call, the least load-sensitive figure
-    # the physical traction model (issue 26) on the same case and state: its cost in the rhs
+    # the physical traction model on the same case and state: its cost in the rhs
     m_ey = dy.build_model(h.load_case(args.case, **{"lubricant.traction_law": "eyring"}))
     yd_ey = np.empty_like(y)
     m_ey.rhs(0.0, m_ey.y0, yd_ey)

@@ -1,4 +1,4 @@
-"""CVODE's linear algebra on the dynamic model: SUNDIALS' dense LU vs the arrowhead block LU (issue 28, item 4).
+"""CVODE's linear algebra on the dynamic model: SUNDIALS' dense LU vs the arrowhead block LU.
 
     .venv/bin/python benchmarks/bench_linsolver.py [--span 0.1] [--repeat 3] [--check 0.4]
 
@@ -42,9 +42,9 @@ def _cpu(fn, number, repeat=9):
 
 
 def kernels(M: np.ndarray, st) -> None:
-    from hsbearing.solvers import arrowhead as ah
-
     import sksundae  # noqa: F401 - loads the SUNDIALS libraries
+
+    from hsbearing.solvers import arrowhead as ah
 
     n = M.shape[0]
     vp = ctypes.c_void_p
@@ -113,8 +113,8 @@ def main(argv=None) -> int:
     args = ap.parse_args(argv)
 
     import hsbearing as h
-    from hsbearing import dynamics as dy
     from hsbearing.solvers.cvode import counters_available, integrate
+    from hsbearing.systems.angular_contact import dynamics as dy
 
     print(f"load average at start: {_load()} ({os.cpu_count()} cores); {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}")
     case = h.load_case(args.case)

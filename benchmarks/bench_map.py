@@ -1,11 +1,11 @@
-"""Cost of a cage-stability map point, and the projected wall time of a large map on a cluster (issue 16, item 6).
+"""Cost of a cage-stability map point, and the projected wall time of a large map on a cluster.
 
     .venv/bin/python benchmarks/bench_map.py                                  # 2 x 2 maps of 5 and 20 ms runs, -j 2
     .venv/bin/python benchmarks/bench_map.py --durations 5ms,50ms --target 0.6s --runs 4000 --cores 16
 
 What it does
 ------------
-1. Runs a tiny map (``hsbearing.maps.run_map``: guide clearance x pocket clearance of the default case,
+1. Runs a tiny map (``hsbearing.workflows.maps.run_map``: guide clearance x pocket clearance of the default case,
    2 x 2 points, fresh temporary directory each, so nothing is resumed) once per simulated duration
    in ``--durations``, with ``-j`` local worker processes, and records each point's wall time
    (``wall_time`` of map.nc: the time spent computing the point in its worker, from case build to the
@@ -48,7 +48,7 @@ def measure(duration: str, jobs: int, x: str, y: str) -> dict:
     import numpy as np
 
     from hsbearing.case import parse_quantity
-    from hsbearing.maps import run_map
+    from hsbearing.workflows.maps import run_map
 
     d = parse_quantity(duration, "time", source="--durations", key="duration")
     with tempfile.TemporaryDirectory(prefix="bench_map_") as tmp:

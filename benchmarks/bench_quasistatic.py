@@ -1,11 +1,11 @@
-"""Benchmark of the quasi-static solver (issue 3).
+"""Benchmark of the quasi-static solver.
 
 Run:  .venv/bin/python benchmarks/bench_quasistatic.py
 
 1. one solve of the default case (zhang2016: 7206 size, 1 kN axial, 14000 r/min),
    cold (including the Hertz K(alpha) table) and warm (repeated, best of 5);
 2. a 50-point inner-ring speed sweep 0..20000 r/min, each point continuing
-   from the previous one (hsbearing.quasistatic.speed_sweep);
+   from the previous one (hsbearing.systems.angular_contact.quasistatic.speed_sweep);
 3. the same sweep with a combined load (1 kN axial + 1 kN radial + 2 N m),
    where the balls differ and the 5-DOF ring problem is fully coupled.
 
@@ -20,7 +20,7 @@ import time
 import numpy as np
 
 from hsbearing.case import load_case
-from hsbearing import quasistatic as qs
+from hsbearing.systems.angular_contact import quasistatic as qs
 
 
 def _time(fn, repeat=1):

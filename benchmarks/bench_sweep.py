@@ -1,5 +1,5 @@
 """Sweep wall time: a quasi-static sweep with -j 1 (in-process) vs -j 2 (two worker processes),
-and optionally the bundled seed 004 study with -j 2.
+and optionally the bundled Zhang et al. 2016 study with -j 2.
 
     .venv/bin/python benchmarks/bench_sweep.py                      # quasi-static sweep, 48 points
     .venv/bin/python benchmarks/bench_sweep.py --loads 24 --speeds 4
@@ -37,7 +37,7 @@ def quasistatic_sweep(jobs: int, n_loads: int, n_speeds: int) -> tuple[float, in
 
 
 def study(jobs: int, duration: str | None, out: str | None, stop: str | None = None) -> dict:
-    from hsbearing.study import run_study
+    from hsbearing.workflows.study import run_study
 
     if out:
         return run_study("zhang2016", out, jobs=jobs, duration=duration, progress=True, stop=stop)

@@ -1,6 +1,6 @@
 """hsbearing: dynamics and friction of rolling ball bearings.
 
-Public API (DESIGN.md "Contracts"):
+Public API (docs/design.md "Contracts"):
 
 - :func:`load_case` -- TOML case (bundled name or path) -> frozen SI dataclasses
 - :func:`simulate` -- dynamic simulation -> ``xarray.Dataset`` over ``time`` (and ``ball``)
@@ -12,8 +12,9 @@ Public API (DESIGN.md "Contracts"):
 
 from __future__ import annotations
 
+from hsbearing import _moved
 from hsbearing._version import __version__
-from hsbearing.case import Case, CaseError, list_cases, load_case
+from hsbearing.case import Case, CaseError, as_case, list_cases, load_case
 from hsbearing.errors import SolverError
 from hsbearing.results import open_run
 
@@ -32,7 +33,7 @@ __all__ = [
 ]
 
 
-from hsbearing.case import as_case as _as_case  # noqa: E402 - the older private name
+_moved.install()  # the old module paths, with a DeprecationWarning, for one release
 
 
 def simulate(case, duration=None, *, progress: bool = False, **kwargs):
@@ -44,25 +45,25 @@ def simulate(case, duration=None, *, progress: bool = False, **kwargs):
     """
     from hsbearing import systems  # the registry: [case] system -> its package (hsbearing/systems/)
 
-    return systems.simulate(_as_case(case), duration=duration, progress=progress, **kwargs)
+    return systems.simulate(as_case(case), duration=duration, progress=progress, **kwargs)
 
 
 def quasi_static(case, **kwargs):
     """High-speed quasi-static equilibrium of the case (Jones-Harris) as a Dataset over ``ball``."""
-    from hsbearing import quasistatic
+    from hsbearing.systems.angular_contact import quasistatic
 
-    return quasistatic.solve_case(_as_case(case), **kwargs)
+    return quasistatic.solve_case(as_case(case), **kwargs)
 
 
 def sweep(case, vary, **kwargs):
-    """Cartesian (or zipped) sweep over case keys; see :func:`hsbearing.sweeps.run_sweep`."""
-    from hsbearing import sweeps
+    """Cartesian (or zipped) sweep over case keys; see :func:`hsbearing.workflows.sweeps.run_sweep`."""
+    from hsbearing.workflows import sweeps
 
     return sweeps.run_sweep(case, vary, **kwargs)
 
 
 def dynamic_model(case):
     """The dynamic model object of a case: ``y0``, ``rhs(t, y, ydot)``, ``state_names``."""
-    from hsbearing import dynamics
+    from hsbearing.systems.angular_contact import dynamics
 
-    return dynamics.build_model(_as_case(case))
+    return dynamics.build_model(as_case(case))

@@ -1,7 +1,7 @@
 """Output variables: one registry (name, dims, units, long_name) -> xarray attrs; atomic netCDF I/O.
 
 Every variable a model writes into a result Dataset is declared once with
-:func:`register` (the core names of DESIGN.md are declared below; a model
+:func:`register` (the core names of docs/design.md are declared below; a model
 module declares its own at import).  :func:`make_dataset` builds a Dataset
 from plain arrays and attaches the declared attrs, so units and descriptions
 are never typed twice.  :func:`write_netcdf` writes through a temporary file
@@ -22,6 +22,8 @@ from typing import Any, Mapping
 
 import numpy as np
 import xarray as xr
+
+from hsbearing.case.load import special_file_kind
 
 __all__ = ["Variable", "VARIABLES", "register", "make_dataset", "write_netcdf", "open_run", "solver_attrs", "atomic_write",
            "ATTR_UNITS", "register_attr_units", "with_attr_units", "check_output_path"]
@@ -50,7 +52,7 @@ def register(name: str, dims: tuple[str, ...] | str, units: str, long_name: str)
     return var
 
 
-# Core names (DESIGN.md "Dataset names").  Dims listed are the dynamic ones; the quasi-static
+# Core names (docs/design.md "Dataset names").  Dims listed are the dynamic ones; the quasi-static
 # dataset uses the same names without ``time`` (make_dataset drops missing dims).
 for _n, _d, _u, _l in [
     ("time", ("time",), "s", "simulated time"),
@@ -79,21 +81,21 @@ for _n, _d, _u, _l in [
 #: global attributes have no attributes of their own; CF has no convention for them).  Attributes not
 #: listed here are texts, counts or dimensionless numbers.  Declare new ones with :func:`register_attr_units`.
 ATTR_UNITS: dict[str, str] = {
-    # dynamic run (hsbearing.dynamics) and its annotation (hsbearing.analysis)
+    # dynamic run (hsbearing.systems.angular_contact.dynamics) and its annotation (hsbearing.analysis)
     "guide_clearance": "m", "pocket_clearance": "m", "theoretical_cage_speed_nominal": "rad/s",
     "transient_discarded": "s", "cage_slip_contact_angle": "rad",
     # solver statistics
     "solver_wall_time": "s", "solver_total_wall_time": "s", "solver_wall_time_s": "s", "solver_rtol": "1",
-    "solver_atol": "SI unit of each state times its scale (hsbearing.models.state.ATOL_SCALE)",
+    "solver_atol": "SI unit of each state times its scale (hsbearing.models.ball_bearing.state.ATOL_SCALE)",
     # quasi-static equilibrium
     "inner_speed": "rad/s", "outer_speed": "rad/s", "applied_loads": "N, N, N, N m, N m (F_x, F_y, F_z, M_y, M_z)",
-    # gyro bearing (seed 000 model)
+    # gyro bearing (Jiang et al. 2014 model)
     "contact_angle_deg": "degree", "ball_load_N": "N", "cage_mass_kg": "kg", "ball_cage_stiffness": "N/m^1.5",
     "hunt_crossley_chi": "s/m", "creep_speed": "m/s", "cage_slip_speed": "m/s", "fine_interval": "s",
     "pocket_clearance_m": "m", "oscillation_period": "s", "cage_gravity": "m/s^2", "cage_gravity_direction": "1",
     "prl_inner": "1 (fraction of the contact semi-major axis)", "prl_outer": "1 (fraction of the contact semi-major axis)",
     "start_ensemble_play_rad": "rad", "start_ensemble_duration_s": "s", "start_ensemble_wall_time_s": "s",
-    # wire-race preload sweep (seed 001 model)
+    # wire-race preload sweep (Shan et al. 2010 model)
     "rolling_resistance": "m", "unconsidered_torque": "N m", "framework_weight": "N", "contact_angle": "rad",
     "target_torque": "N m", "preload_window": "m",
     # friction torque
@@ -223,14 +225,6 @@ def final_target(path: str | os.PathLike) -> Path:
     if path.is_symlink():
         return Path(os.path.realpath(path))
     return path
-
-
-def special_file_kind(path: str | os.PathLike) -> str | None:
-    """What ``path`` is if it exists (following symbolic links) and is neither a regular file nor a directory
-    (a device node, a FIFO, a socket), else None."""
-    from hsbearing.case import _special_file_kind
-
-    return _special_file_kind(path)
 
 
 class atomic_write:

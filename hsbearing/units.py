@@ -12,6 +12,8 @@ import math
 import re
 from typing import Any
 
+import numpy as np
+
 from hsbearing.errors import CaseError
 
 #: Dimension name -> (pint dimensionality check unit, SI unit string).
@@ -57,11 +59,11 @@ def _ureg():
 
 
 #: Kinds whose SI unit pint treats as dimensionless or as 1/s, where a cycle and a radian are confused unless
-#: the angle is made explicit (issue 27): pint reads "Hz" and "1/min" as 1/s and "25 %" as 0.25 rad.
-_ANGULAR_KINDS = ("angle", "angular_speed", "frequency")
+#: the angle is made explicit: pint reads "Hz" and "1/min" as 1/s and "25 %" as 0.25 rad.
+ANGULAR_KINDS = ("angle", "angular_speed", "frequency")
 
 
-def _has_angle_unit(q, ureg) -> bool:
+def has_angle_unit(q, ureg) -> bool:
     """True if the unit of ``q`` contains an angle unit (rad, deg, revolution, turn, cycle, rpm ...)."""
     for name in q._units:
         _, base = ureg.get_base_units(name)
@@ -70,7 +72,7 @@ def _has_angle_unit(q, ureg) -> bool:
     return False
 
 
-def _angular_si(q, ureg, kind: str, value: str, source: str, key: str | None) -> float:
+def angular_si(q, ureg, kind: str, value: str, source: str, key: str | None) -> float:
     """SI value of an angle [rad], an angular speed [rad/s] or a frequency [Hz = cycles/s], never confusing
     cycles with radians.
 
@@ -81,7 +83,7 @@ def _angular_si(q, ureg, kind: str, value: str, source: str, key: str | None) ->
       so ``"233.33 Hz"`` = 233.33 rev/s = 2 pi 233.33 rad/s and ``"14000 1/min"`` = 14000 r/min.
     - frequency: cycles per second; an angular unit (``rad/s``, ``rpm``) is converted to cycles.
     """
-    has_angle = _has_angle_unit(q, ureg)
+    has_angle = has_angle_unit(q, ureg)
     dim = q.dimensionality
     if kind == "angle":
         if q.magnitude == 0 and not dim:
@@ -91,7 +93,7 @@ def _angular_si(q, ureg, kind: str, value: str, source: str, key: str | None) ->
                                          "(a bare number or a ratio is not read as radians)")
         return float(q.to("radian").magnitude)
     if dim != ureg.Quantity(1, "1/s").dimensionality:
-        raise CaseError(source, key, f"{value!r} is not {_a(kind)} (expected units like {_example_unit(kind)})")
+        raise CaseError(source, key, f"{value!r} is not {_a(kind)} (expected units like {example_unit(kind)})")
     if kind == "angular_speed":
         if has_angle:
             return float(q.to("radian/second").magnitude)
@@ -117,11 +119,11 @@ def parse_quantity(value: Any, kind: str, *, source: str = "<value>", key: str |
     if isinstance(value, (int, float)):
         if value == 0:
             return 0.0
-        raise CaseError(source, key, f"expected {_a(kind)} with units like \"{value} {_example_unit(kind)}\", got bare number "
+        raise CaseError(source, key, f"expected {_a(kind)} with units like \"{value} {example_unit(kind)}\", got bare number "
                                      f"{value!r}: a value needs a unit (only 0 may be written without one)")
     if not isinstance(value, str):
         raise CaseError(source, key, f"expected a quantity string with units, got {type(value).__name__}")
-    _check_quantity_text(value, kind, source, key)
+    check_quantity_text(value, kind, source, key)
     ureg = _ureg()
     try:
         q = ureg.Quantity(value.strip())
@@ -132,18 +134,18 @@ def parse_quantity(value: Any, kind: str, *, source: str = "<value>", key: str |
     try:
         if kind == "temperature":
             out = q.to("kelvin").magnitude
-        elif kind in _ANGULAR_KINDS:
-            out = _angular_si(q, ureg, kind, value, source, key)
+        elif kind in ANGULAR_KINDS:
+            out = angular_si(q, ureg, kind, value, source, key)
         else:
             out = q.to(si).magnitude
     except CaseError:
         raise
     except Exception:
         if not q._units and kind != "temperature":
-            raise CaseError(source, key, f"{value!r} has no unit: write e.g. \"{value.strip()} {_example_unit(kind)}\" "
+            raise CaseError(source, key, f"{value!r} has no unit: write e.g. \"{value.strip()} {example_unit(kind)}\" "
                                          "(no unit is assumed)") from None
         raise CaseError(
-            source, key, f"{value!r} is not {_a(kind)} (expected units like {_example_unit(kind)})"
+            source, key, f"{value!r} is not {_a(kind)} (expected units like {example_unit(kind)})"
         ) from None
     try:
         out = float(out)
@@ -197,7 +199,7 @@ _UNIT_POWER = re.compile(r"[A-Za-z_\u00b5\u03bc\u00b0]\s*(?:\*\*|\^)\s*\(?\s*[-+
 _SPLIT_NUMBER = re.compile(r"\d\s+[-+]?\d*\.?\d+(?=\s*[A-Za-z\u00b0%]|\s*$)")
 
 
-def _check_quantity_text(value: str, kind: str, source: str, key: str | None) -> None:
+def check_quantity_text(value: str, kind: str, source: str, key: str | None) -> None:
     """Refuse, before pint sees it, text whose evaluation is unbounded.
 
     pint evaluates powers of integers exactly (``"10**10**10 mm"`` never returns), so a power is
@@ -221,7 +223,7 @@ def _a(kind: str) -> str:
     return ("an " if words[:1] in "aeiou" else "a ") + words
 
 
-def _example_unit(kind: str) -> str:
+def example_unit(kind: str) -> str:
     return {
         "length": "mm", "angle": "deg", "angular_speed": "rpm", "force": "N", "moment": "N*m",
         "temperature": "degC", "time": "s", "pressure": "GPa", "density": "kg/m^3", "mass": "kg",
@@ -230,3 +232,36 @@ def _example_unit(kind: str) -> str:
     }.get(kind, DIMENSIONS[kind])
 
 
+def parse_speeds(speeds, source: str = "--speeds") -> np.ndarray:
+    """Speeds -> rad/s array.  Accepts numbers (rad/s), unit strings, lists of them,
+    and the CLI form ``"500,5000,15000rpm"`` (one unit after the last number)."""
+    if isinstance(speeds, (int, float)) and not isinstance(speeds, bool):
+        items = [speeds]
+    elif isinstance(speeds, str):
+        parts = [p.strip() for p in speeds.split(",") if p.strip()]
+        if not parts:
+            raise CaseError(source, "speeds", "no speed given")
+        m = re.match(r"^[-+0-9.eE]+\s*(.*)$", parts[-1])
+        unit = m.group(1).strip() if m else ""
+        items = []
+        for p in parts:
+            if re.fullmatch(r"[-+]?[0-9.]+([eE][-+]?[0-9]+)?", p):
+                if not unit:
+                    raise CaseError(source, "speeds", f"speed {p!r} has no unit (e.g. 500,5000rpm)")
+                items.append(f"{p} {unit}")
+            else:
+                items.append(p)
+    else:
+        items = list(speeds)
+    out = []
+    for it in items:
+        if isinstance(it, (int, float)) and not isinstance(it, bool):
+            val = float(it)
+        else:
+            val = parse_quantity(it, "angular_speed", source=source, key="speeds")
+        if not math.isfinite(val) or val <= 0.0:
+            raise CaseError(source, "speeds", f"speeds must be positive, got {it!r}")
+        out.append(val)
+    if not out:
+        raise CaseError(source, "speeds", "no speed given")
+    return np.asarray(out, dtype=float)

@@ -31,8 +31,8 @@ PKG = Path(hsbearing.__file__).resolve().parent
 _PROBE = textwrap.dedent("""
     import json
     import hsbearing
-    import hsbearing.models.kernel  # imports every cached module of the kernel: all checks run
-    from hsbearing.models import pocket
+    import hsbearing.models.ball_bearing.kernel  # imports every cached module of the kernel: all checks run
+    from hsbearing.models.ball_bearing import pocket
     from hsbearing.models.traction import _kernels, zhang2016
     from hsbearing.models.traction import law_id
     from hsbearing import jit
@@ -70,8 +70,8 @@ def _run(root: Path, **env_extra) -> dict:
 
 def test_cached_modules_and_closure_come_from_the_import_graph():
     mods = cc.cached_modules()
-    for m in ("hsbearing.models.kernel", "hsbearing.models.traction._kernels", "hsbearing.models.pocket",
-              "hsbearing.models.cage", "hsbearing.models.friction.gyro"):
+    for m in ("hsbearing.models.ball_bearing.kernel", "hsbearing.models.traction._kernels", "hsbearing.models.ball_bearing.pocket",
+              "hsbearing.models.ball_bearing.cage", "hsbearing.models.friction.gyro"):
         assert m in mods
     names = {str(p.relative_to(cc.ROOT)) for p in cc.import_closure(mods)}
     # the constants' module and what it imports, reached only through imports, never listed by hand
@@ -156,8 +156,8 @@ def test_no_recompile_without_bytecode(tmp_path):
 _MODEL_PROBE = textwrap.dedent("""
     import json
     import hsbearing
-    from hsbearing.dynamics import build_model
-    from hsbearing.models import kernel as K
+    from hsbearing.systems.angular_contact.dynamics import build_model
+    from hsbearing.models.ball_bearing import kernel as K
     m = build_model(hsbearing.load_case("zhang2016"))
     aux, gaux = m.outputs(m.y0)
     print(json.dumps({"file": hsbearing.__file__, "T_roll_i": aux[:, K.AUX_INDEX["T_roll_i"]].tolist(),

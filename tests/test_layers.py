@@ -1,5 +1,11 @@
-"""The package's layers, read from its imports (ast, every ``import`` including those inside functions;
-issue 19 item 2):
+"""The package's layers, read from its imports (ast, every ``import`` including those inside functions):
+
+- the layers, lowest first (``LAYERS``): foundations (errors, jit, compile_cache, _version) < physics (models,
+  solvers) < inputs and outputs (units, lubricant, case, results, display) < analysis and shared figures (analysis,
+  plotting) < systems < workflows < front ends (cli and the package API); a module imports only from its own layer
+  or below;
+- peers do not import each other: models and solvers, and one system package and another (the registry
+  ``hsbearing.systems`` and ``systems.base`` excepted);
 
 - ``hsbearing.models`` is pure physics: it imports only ``hsbearing.models``, ``hsbearing.errors``,
   ``hsbearing.jit`` and ``hsbearing.compile_cache`` (which imports no package module; nothing above it: no cli, plotting, sweeps, study, maps, systems, dynamics, solvers,
@@ -8,8 +14,8 @@ issue 19 item 2):
   ``hsbearing.errors`` and ``hsbearing.jit``;
 - no module imports one that (directly or through others) imports it back: no import circles.
 
-``ALLOWED`` lists the exceptions that must stay for now, each with its reason and issue: a test that
-an exception is still needed fails once it is not, so the list only shrinks.
+``ALLOWED`` lists the exceptions that must stay for now, each with its reason: a test that an exception is still
+needed fails once it is not, so the list only shrinks.
 """
 
 from __future__ import annotations
@@ -28,8 +34,30 @@ LAYER_RULES = {
     "hsbearing.compile_cache": (),
 }
 
+#: the layers, lowest first; a module belongs to the first prefix it matches (``hsbearing`` alone: the package API)
+LAYERS = (
+    ("foundations", ("hsbearing._version", "hsbearing._moved", "hsbearing.errors", "hsbearing.jit", "hsbearing.compile_cache")),
+    ("physics", ("hsbearing.models", "hsbearing.solvers")),
+    ("inputs and outputs", ("hsbearing.units", "hsbearing.lubricant", "hsbearing.case", "hsbearing.results",
+                            "hsbearing.display")),
+    ("analysis and shared figures", ("hsbearing.analysis", "hsbearing.plotting")),
+    ("systems", ("hsbearing.systems",)),
+    ("workflows", ("hsbearing.workflows",)),
+    ("front ends", ("hsbearing.cli", "hsbearing")),
+)
+#: packages whose direct sub-packages are peers that must not import each other
+PEER_PARENTS = ("hsbearing.systems",)
+#: modules of a peer parent that are shared by its peers (the registry and the interface)
+PEER_SHARED = ("hsbearing.systems", "hsbearing.systems.base")
+
 # (importer, imported) -> reason.  Each must be a real edge today (test_exceptions_still_needed).
-ALLOWED: dict[tuple[str, str], str] = {}  # issue 19: zero exceptions (the last four removed in session 4)
+ALLOWED: dict[tuple[str, str], str] = {
+    ("hsbearing.systems.deep_groove", "hsbearing.systems.angular_contact"):
+        "a deep-groove bearing runs the ball-bearing engine of the angular-contact system (Zhang et al. 2016 model "
+        "at any contact angle): its System takes simulate/build_model/summaries from there",
+    ("hsbearing.systems.deep_groove.friction", "hsbearing.systems.angular_contact.quasistatic"):
+        "the dgbb_prl sliding method needs the contact loads of the ball-bearing quasi-static solver",
+}
 
 
 def _modules() -> dict[str, Path]:
@@ -127,9 +155,70 @@ def _cycles() -> list[list[str]]:
     return out
 
 
+def layer_of(mod: str) -> int:
+    for i, (_, prefixes) in enumerate(LAYERS):
+        if any(mod == p or (p != "hsbearing" and mod.startswith(p + ".")) for p in prefixes):
+            return i
+    raise AssertionError(f"{mod} is in no layer: add it to LAYERS")
+
+
+def _upward_imports() -> list[tuple[str, str]]:
+    return sorted((m, d) for m, deps in GRAPH.items() for d in deps if layer_of(d) > layer_of(m))
+
+
+def _peer_of(mod: str) -> str | None:
+    for parent in PEER_PARENTS:
+        if mod.startswith(parent + ".") and mod not in PEER_SHARED:
+            return ".".join(mod.split(".")[: parent.count(".") + 2])
+    return None
+
+
+def _peer_imports() -> list[tuple[str, str]]:
+    bad = []
+    for m, deps in GRAPH.items():
+        for d in deps:
+            pm, pd = _peer_of(m), _peer_of(d)
+            if pm and pd and pm != pd:
+                bad.append((m, d))
+    bad += [(m, d) for m, deps in GRAPH.items() for d in deps
+            if (m.startswith("hsbearing.models") and d.startswith("hsbearing.solvers"))
+            or (m.startswith("hsbearing.solvers") and d.startswith("hsbearing.models"))]
+    return sorted(bad)
+
+
+def test_every_module_has_a_layer():
+    for m in MODULES:
+        layer_of(m)
+
+
+def test_no_module_imports_a_higher_layer():
+    bad = [e for e in _upward_imports() if e not in ALLOWED]
+    assert not bad, "imports of a higher layer (importer -> imported):\n" + "\n".join(
+        f"  {a} ({LAYERS[layer_of(a)][0]}) -> {b} ({LAYERS[layer_of(b)][0]})" for a, b in bad)
+
+
+def test_peers_do_not_import_each_other():
+    bad = [e for e in _peer_imports() if e not in ALLOWED]
+    assert not bad, "imports between peers:\n" + "\n".join(f"  {a} -> {b}" for a, b in bad)
+
+
+def test_layer_rules_are_live():
+    """The checks see a violation when there is one (a broken reader or rule would pass everything)."""
+    assert layer_of("hsbearing.models.hertz") < layer_of("hsbearing.case") < layer_of("hsbearing.systems.gyro.model")
+    assert layer_of("hsbearing.workflows.sweeps") < layer_of("hsbearing.cli") == layer_of("hsbearing")
+    assert _peer_of("hsbearing.systems.gyro.model") == "hsbearing.systems.gyro"
+    assert _peer_of("hsbearing.systems.base") is None
+
+
+def test_top_level_is_small():
+    """The top of the package keeps the API and the foundations: at most 12 modules."""
+    top = sorted(p.name for p in PKG.glob("*.py"))
+    assert len(top) <= 12, top
+
+
 def test_graph_is_read():
     """The parser sees the imports (a broken reader would pass every rule)."""
-    assert "hsbearing.models.hertz" in GRAPH["hsbearing.models.quasistatic_physics"]
+    assert "hsbearing.models.hertz" in GRAPH["hsbearing.models.ball_bearing.quasistatic"]
     assert "hsbearing.case" in GRAPH["hsbearing.cli"]
     assert len(MODULES) > 40
 

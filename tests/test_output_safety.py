@@ -11,7 +11,6 @@ saying where the result went, leaves no temporary file and keeps the result in a
 from __future__ import annotations
 
 import contextlib
-
 import os
 import re
 import resource

@@ -1,4 +1,4 @@
-"""Output registry and atomic netCDF archives (issue 2, item 8)."""
+"""Output registry and atomic netCDF archives."""
 
 import os
 

@@ -14,9 +14,9 @@ from pathlib import Path
 
 import numpy as np
 
-from hsbearing import contact_state, quasistatic
 from hsbearing.case import load_case
 from hsbearing.models import ehl, viscosity
+from hsbearing.systems.angular_contact import contact_state, quasistatic
 
 OILS = ("4109", "4106", "4050")
 TEMPS = (27.0, 80.0, 130.0, 180.0)

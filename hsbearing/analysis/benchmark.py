@@ -6,7 +6,7 @@ the labels that are also acceptable) sampled like a real run of the bundled case
 guide clearance 200 um.  Velocities are the exact derivatives (a real run stores them as states), so the
 noise added by :func:`with_noise` is independent in every coordinate, as integration error would be.
 
-:func:`cases` lists the whole benchmark (docs/analysis.md, "Synthetic benchmark"; tests/test_classify_benchmark.py):
+:func:`cases` lists the whole benchmark (docs/analysis.md, "Synthetic benchmark"; tests/analysis/test_classify_benchmark.py):
 circles at whirl/cage ratios 0.95, 0.98, 1.00, 1.02 with and without a ball-pass ripple; exact 3- and
 4-loop epicycles; a two-frequency torus; a 1:1 locking transient; a growing and a decaying spiral; a
 micro-vibration of a cage resting off-centre; the Rössler chaotic flow projected on (x, y); 2-D

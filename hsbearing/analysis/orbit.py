@@ -29,11 +29,11 @@ import numpy as np
 import xarray as xr
 
 from hsbearing.analysis import poincare as _pc
-from hsbearing.analysis.classify import cage_instability_index as _instability
-from hsbearing.analysis.classify import classification_detail as _detail
-from hsbearing.analysis.classify import classify_motion as _motion
 from hsbearing.analysis.slip import cage_slip_ratio, raceway_control_cage_speed, theoretical_cage_speed
 from hsbearing.analysis.spectrum import whirl_frequency  # noqa: F401 - public here as before
+from hsbearing.analysis.whirl import cage_instability_index as _instability
+from hsbearing.analysis.whirl import classification_detail as _detail
+from hsbearing.analysis.whirl import classify_motion as _motion
 from hsbearing.results import VARIABLES, register
 
 _trapz = getattr(np, "trapezoid", None) or np.trapz  # numpy < 2 has only trapz
@@ -182,7 +182,7 @@ def _jsonable(d):
 
 
 def _lock_text(lock: dict) -> str:
-    """One line: is the whirl locked to the cage rotation (whirl-cage phase drift, classify.whirl_lock)."""
+    """One line: is the whirl locked to the cage rotation (whirl-cage phase drift, whirl.whirl_lock)."""
     if not lock or lock.get("locked") is None:
         return "not measured (no cage angle, a still cage, or less than one cage revolution)"
     n = lock["harmonic"]
@@ -218,8 +218,8 @@ def annotate(ds: xr.Dataset, case=None, *, alpha=None, section: str = _pc.DEFAUL
         Start-up transient to discard: ``"auto"`` (drift detection, between
         30 % and 60 % of the span) or a fixed fraction of the span.
     **classify_kw
-        Thresholds passed to :func:`hsbearing.analysis.classify.classify_motion` /
-        :func:`hsbearing.analysis.classify.classify`.
+        Thresholds passed to :func:`hsbearing.analysis.whirl.classify_motion` /
+        :func:`hsbearing.analysis.periods.classify`.
 
     Returns
     -------
@@ -281,7 +281,7 @@ def annotate(ds: xr.Dataset, case=None, *, alpha=None, section: str = _pc.DEFAUL
             ds["mean_cage_slip_ratio_raceway_control"] = _var(
                 "mean_cage_slip_ratio_raceway_control", cage_slip_ratio(float(ds["mean_cage_speed"]), w_rc))
 
-    # --- classification of the motion (classify.classify_motion: growth, still cage, section, classifier)
+    # --- classification of the motion (whirl.classify_motion: growth, still cage, section, classifier)
     t_m = t[mask]
     y_m = np.asarray(ds["cage_center_y"].values, float)[mask]
     z_m = np.asarray(ds["cage_center_z"].values, float)[mask]

@@ -19,7 +19,7 @@ points, a two-frequency orbit a closed curve, a chaotic orbit a cloud
 the cage-centre orbit is periodic, not that the whole state is: the cage
 rotation (and the ball-pass excitation) may run at an incommensurate
 frequency, and whether the whirl is locked to the cage rotation is reported
-separately (:func:`hsbearing.analysis.classify.whirl_lock`).
+separately (:func:`hsbearing.analysis.whirl.whirl_lock`).
 
 Alternatives (kept as options):
 
@@ -100,7 +100,7 @@ def section_description(section: str = DEFAULT_SECTION) -> str:
                 "half-plane D_Z = mean(D_Z), D_Y > mean(D_Y) in the sense of the whirl (one point per loop of the orbit)")
     if section == "cage_revolution":
         return ("one point per cage revolution: (D_Y, V_Y) of the cage mass centre when the cage rotation "
-                "angle about X crosses a multiple of 2 pi (stroboscopic map, seed 004 Figs. 5-12)")
+                "angle about X crosses a multiple of 2 pi (stroboscopic map, Zhang et al. 2016 Figs. 5-12)")
     if section == "plane":
         return ("plane section: (D_Y, V_Y) of the cage mass centre when D_Z crosses its mean value "
                 "with dD_Z/dt > 0")

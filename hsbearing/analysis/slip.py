@@ -9,9 +9,9 @@ References
     gamma = D cos(alpha) / d_m (cited below as "Eq. 8.21"; the equation
     number is from our reading of the 5th edition and could not be checked
     against the printed page here -- the formula itself is the epicyclic
-    pure-rolling identity, re-derived in tests/test_analysis.py).
+    pure-rolling identity, re-derived in tests/analysis/test_analysis.py).
 [2] Zhang W., Deng S., Chen G., Cui Y., Chin. J. Aeronaut. 29 (2016), Sec. 5,
-    Figs. 13-15 (seed 004): the cage slip ratio is used as a stability criterion;
+    Figs. 13-15 (Zhang et al. 2016): the cage slip ratio is used as a stability criterion;
     the seed does not print its formula, so the usual definition
     S_c = (omega_c,th - omega_c) / omega_c,th (e.g. Gupta, *Advanced Dynamics of
     Rolling Elements*, 1984, Ch. 6 cage slip) is used here.

@@ -1,5 +1,5 @@
 """Dominant whirl frequency of a planar motion (FFT peak): used by the orbit summary and the classifier,
-in a module of its own so that neither imports the other (issue 19: no import circles)."""
+in a module of its own so that neither imports the other (no import circles)."""
 
 from __future__ import annotations
 

@@ -39,7 +39,7 @@ References
     give the same raceway ratings with 98.1 in N, mm.)
 [4] ISO/TR 1281-1:2008, explanatory notes on ISO 281: f_c of [1] Table 2 is
     the Lundberg-Palmgren expression computed with r_i = r_e = 0.52 D_w (used
-    here only to cross-check the transcribed table, tests/test_life.py).
+    here only to cross-check the transcribed table, tests/models/test_life.py).
 
 Reading decided here (docs/life.md): the contact angle of each ball enters its
 own Q_c in ISO/TS 16281 (speed effects change alpha_i and alpha_o); the ring
@@ -118,7 +118,7 @@ def factor_fc_lundberg_palmgren(gamma, fi=0.52, fe=0.52, reduction=1.0):
 
     ``reduction`` is the factor lambda (reduction for edge stresses and
     manufacturing); [1] Table 2 corresponds to a constant lambda ~ 0.957
-    (measured, tests/test_life.py).
+    (measured, tests/models/test_life.py).
     """
     g = np.asarray(gamma, dtype=float)
     base = 39.9 * reduction * g**0.3 * (1 - g) ** 1.39 / (1 + g) ** (1 / 3) * (2 * fi / (2 * fi - 1)) ** 0.41

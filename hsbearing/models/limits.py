@@ -1,7 +1,7 @@
 """Limits of a ball/raceway contact: static stress limit, film parameter, groove-shoulder truncation.
 
 Pure functions (SI).  Used for the contact state over time and the warnings
-of hsbearing.contact_state (docs/life.md).
+of hsbearing.systems.angular_contact.contact_state (docs/life.md).
 
 References
 ----------

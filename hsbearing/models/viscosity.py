@@ -1,6 +1,6 @@
 """Ambient-pressure viscosity of the aviation oils 4109, 4106 and 4050 against temperature.
 
-(Oils defined in a lubricant file -- ``lubricant.file``, issue 26 -- use the same Walther relation
+(Oils defined in a lubricant file -- ``lubricant.file`` -- use the same Walther relation
 through their own points: :mod:`hsbearing.lubricant`.)
 
 Two laws, selected by the case key ``lubricant.viscosity_law`` (decision and evidence in
@@ -80,7 +80,7 @@ def table1_ratio(oil, ref, T):
 
 # 4109 ("low viscosity", Table 1 beta 0.0215/degC) -> 3 cSt diester class (MIL-PRF-7808 grade 3) [4];
 # 4106 ("medium viscosity") -> 5 cSt polyol-ester class (MIL-PRF-23699) [3];
-# 4050 ("medium viscosity, high-temperature resistant", issue 26) -> its own points: the 4106 class points
+# 4050 ("medium viscosity, high-temperature resistant") -> its own points: the 4106 class points
 # times Table 1's 4050/4106 viscosity ratio at 40 and 100 degC (table1_ratio: 1.043 and 0.847), i.e.
 # 28.8 and 4.32 mm^2/s (decision and evidence: docs/traction.md, "4050 as an oil of its own").
 _NU40_23699, _NU100_23699 = 27.6e-6, 5.1e-6

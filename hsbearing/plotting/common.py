@@ -15,7 +15,7 @@ __all__ = ["save_figure", "title_lines", "ISO76_BALL_PRESSURE"]
 
 from hsbearing.display import ISO76_BALL_PRESSURE  # noqa: E402  (ISO 76 static limit of ball bearings [Pa])
 
-_RPM = 60.0 / (2.0 * math.pi)
+RPM = 60.0 / (2.0 * math.pi)
 
 
 def save_figure(fig, path, dpi: int = 110, metadata: dict | None = None) -> Path:
@@ -43,7 +43,7 @@ def save_figure(fig, path, dpi: int = 110, metadata: dict | None = None) -> Path
 _save = save_figure
 
 
-def _case_labels(ds) -> dict[str, str]:
+def case_labels(ds) -> dict[str, str]:
     """Readable operating-condition labels from the ``case_toml`` attr (empty dict if absent)."""
     from hsbearing.case import parse_quantity
 
@@ -70,7 +70,7 @@ def _case_labels(ds) -> dict[str, str]:
         out["temperature"] = f"T = {T - 273.15:.0f} \N{DEGREE SIGN}C"
     n = q(op, "inner_speed", "angular_speed")
     if n is not None:
-        out["speed"] = f"n = {n * _RPM:.0f} r/min"
+        out["speed"] = f"n = {n * RPM:.0f} r/min"
     Fa = q(op, "axial_load", "force")
     if Fa is not None:
         out["axial_load"] = f"Fa = {Fa:.0f} N"
@@ -83,7 +83,7 @@ def _case_labels(ds) -> dict[str, str]:
 def title_lines(ds) -> list[str]:
     """Figure title: case name and operating conditions; classification, slip and status."""
     name = ds.attrs.get("case_name", "hsbearing run")
-    lab = _case_labels(ds)
+    lab = case_labels(ds)
     first = ", ".join([name] + [lab[k] for k in ("oil", "speed", "axial_load", "radial_load", "temperature") if k in lab])
     parts = []
     if "classification" in ds.attrs:
@@ -106,17 +106,17 @@ def _figure(figsize):
     return Figure(figsize=figsize, layout="constrained")
 
 
-def _length_scale(extent_m: float) -> tuple[float, str]:
+def length_scale(extent_m: float) -> tuple[float, str]:
     """Display factor and unit for a length of the given extent [m]: um, or nm below 1 um."""
     return (1e9, "nm") if np.isfinite(extent_m) and extent_m < 1e-6 else (1e6, "\u00b5m")
 
 
-def _velocity_scale(extent: float) -> tuple[float, str]:
+def velocity_scale(extent: float) -> tuple[float, str]:
     """Display factor and unit for a velocity extent [m/s]: mm/s, or um/s below 1 mm/s."""
     return (1e6, "\u00b5m/s") if np.isfinite(extent) and extent < 1e-3 else (1e3, "mm/s")
 
 
-def _shade(ax, t_end_ms):
+def shade(ax, t_end_ms):
     if t_end_ms > 0:
         ax.axvspan(0.0, t_end_ms, color="0.9", zorder=0, label="transient (discarded)")
 
@@ -127,7 +127,7 @@ def _wrap(text: str, width: int) -> str:
     return "\n".join(textwrap.wrap(text, width))
 
 
-def _per_ball_axes(ax, nb, ylabel: str, title: str, grid_axis: str) -> None:
+def per_ball_axes(ax, nb, ylabel: str, title: str, grid_axis: str) -> None:
     """Labels, ball ticks 0..nb-1 (the ``ball`` coordinate of the archives and the printed tables), legend and
     grid of a per-ball panel."""
     ax.set_xlabel("ball")
@@ -141,5 +141,5 @@ def _per_ball_axes(ax, nb, ylabel: str, title: str, grid_axis: str) -> None:
 
 
 
-def _vals(ds, name, factor=1.0):
+def vals(ds, name, factor=1.0):
     return np.asarray(ds[name].values, dtype=float) * factor

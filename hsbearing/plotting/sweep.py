@@ -10,11 +10,11 @@ from pathlib import Path
 import numpy as np
 
 from hsbearing.plotting import common  # common.save_figure: one place to capture every figure
-from hsbearing.plotting.common import _RPM, _case_labels
+from hsbearing.plotting.common import RPM, case_labels
 
 # ----------------------------------------------------------------------------- sweep / study summary figure
 #
-# A sweep Dataset (hsbearing.sweeps.assemble) has one dimension per varied key (``point`` for --zip),
+# A sweep Dataset (hsbearing.workflows.sweeps.assemble) has one dimension per varied key (``point`` for --zip),
 # an SI coordinate per key with ``units`` / ``case_key`` attrs and ``<dim>_label`` (the values as
 # written), a ``status`` per point and the per-point summary variables.  The figure draws those
 # summaries against the varied key with the most numeric values (x axis); every other varied key
@@ -23,7 +23,7 @@ from hsbearing.plotting.common import _RPM, _case_labels
 # is drawn on top, with the paper's label of every cell when the summary carries
 # ``paper_classification`` (study tables).
 
-#: Marker and colour of each cage-motion class (:data:`hsbearing.analysis.classify.LABELS`;
+#: Marker and colour of each cage-motion class (:data:`hsbearing.analysis.periods.LABELS`;
 #: ``"k periods"`` stands for every k >= 2, the cell text of the map keeps the k).
 CLASS_STYLE = {
     "1 period": ("o", "#2ca02c"),
@@ -55,7 +55,7 @@ _SWEEP_PANELS = (
                                                        ("max_inner_contact_load", "max over balls", "--"))),
     ("outer race contact load $Q_o$", "$Q_o$ [N]", 1.0, (("mean_outer_contact_load", "mean over balls", "-"),
                                                        ("max_outer_contact_load", "max over balls", "--"))),
-    ("cage speed", "cage speed [r/min]", _RPM, (("cage_speed", None, "-"),)),
+    ("cage speed", "cage speed [r/min]", RPM, (("cage_speed", None, "-"),)),
     ("inner ring axial displacement", "displacement [\u00b5m]", 1e6, (("inner_ring_axial_displacement", None, "-"),)),
     # thermal sweeps (kind = "thermal"): temperatures in degC (factor, offset), heats in W
     ("component temperatures", "temperature [\N{DEGREE SIGN}C]", (1.0, -273.15),
@@ -66,7 +66,7 @@ _SWEEP_PANELS = (
     ("heat generated and where it goes", "heat [W]", 1.0,
      (("heat_generated", "generated", "-"), ("heat_removed_by_oil", "removed by the oil", "--"),
       ("heat_removed_by_conduction", "conducted to the air", ":"))),
-    ("friction moments (seed 000)", "moment [\u00b5N m]", 1e6,
+    ("friction moments (Jiang et al. 2014)", "moment [\u00b5N m]", 1e6,
      (("sfmc", "SFMC", "-"), ("sfmc_ensemble_mean", "SFMC, start ensemble mean", "-."), ("sfmo", "SFMO", "--"),
       ("rfmc", "RFMC", ":"))),
 )
@@ -80,7 +80,7 @@ _YERR = {"sfmo": ("sfmo_stderr", "standard error"), "sfmc_ensemble_mean": ("sfmc
 _PRETTY_UNIT = {"rpm": "r/min", "degC": "\N{DEGREE SIGN}C", "deg": "\N{DEGREE SIGN}", "um": "\u00b5m",
                 "N*m": "N m", "mm^2/s": "mm\u00b2/s", "kg/m^3": "kg/m\u00b3"}
 # SI unit of a coordinate -> (factor, offset, unit) for display, when the labels do not share one unit
-_SI_DISPLAY = {"rad/s": (_RPM, 0.0, "r/min"), "K": (1.0, -273.15, "\N{DEGREE SIGN}C"),
+_SI_DISPLAY = {"rad/s": (RPM, 0.0, "r/min"), "K": (1.0, -273.15, "\N{DEGREE SIGN}C"),
                "rad": (180.0 / math.pi, 0.0, "\N{DEGREE SIGN}"), "N*m": (1.0, 0.0, "N m"),
                "m**2/s": (1e6, 0.0, "mm\u00b2/s"), "kg/m**3": (1.0, 0.0, "kg/m\u00b3")}
 _LABEL_KEYS = {"lubricant.oil": "oil", "operating.inner_speed": "speed", "operating.axial_load": "axial_load",
@@ -90,7 +90,7 @@ _LABEL_KEYS = {"lubricant.oil": "oil", "operating.inner_speed": "speed", "operat
 def is_sweep_summary(ds) -> bool:
     """True for a sweep or study summary Dataset.
 
-    The attrs written by :func:`hsbearing.sweeps.assemble` (``title = "hsbearing sweep"``, ``sweep_vary``),
+    The attrs written by :func:`hsbearing.workflows.sweeps.assemble` (``title = "hsbearing sweep"``, ``sweep_vary``),
     or, for a summary whose attrs were lost, its shape: no ``time`` dimension and a text ``status``
     variable over at least one dimension (no result Dataset of a single run has one).
     """
@@ -348,7 +348,7 @@ def _sweep_title(ds, prep) -> str:
     for c in ds.coords:
         if str(c).endswith("_label") and ds[c].dims == ("point",):
             keys.add(ds[str(c)[:-6]].attrs.get("case_key", str(c)[:-6]) if str(c)[:-6] in ds.coords else str(c)[:-6])
-    lab = _case_labels(ds)
+    lab = case_labels(ds)
     if ds.attrs.get("case_system", "angular_contact") != "angular_contact":
         lab.pop("oil", None)  # the other systems carry the oil name as a placeholder: their models do not use it
     if lab.get("speed") == "n = 0 r/min":  # outer ring rotating (gyro bearings): show the outer-ring speed
@@ -364,7 +364,7 @@ def _sweep_title(ds, prep) -> str:
         except (KeyError, tomllib.TOMLDecodeError, CaseError):  # no case text or no outer speed: nothing to add
             n_o = 0.0
         if n_o and not n_o_varied:
-            lab["speed"] = f"outer ring n$_o$ = {n_o * _RPM:.3g} r/min"
+            lab["speed"] = f"outer ring n$_o$ = {n_o * RPM:.3g} r/min"
     fixed = [lab[v] for k, v in _LABEL_KEYS.items() if v in lab and k not in keys and v not in keys]
     line2 = "varied: " + ", ".join(varied) + ("; fixed: " + ", ".join(fixed) if fixed else "")
     import textwrap
@@ -535,7 +535,7 @@ def _draw_class_map(ax, prep) -> None:
 
 
 def plot_sweep(ds, path) -> Path:
-    """Draw the figure of a sweep or study summary (:func:`hsbearing.sweeps.assemble`) to ``path`` (PNG).
+    """Draw the figure of a sweep or study summary (:func:`hsbearing.workflows.sweeps.assemble`) to ``path`` (PNG).
 
     Panels (each only if its variables are present with a finite value at an ok point): mean cage slip
     ratio [%], whirl amplitude (RMS radius) [um], whirl frequency / cage speed [-], inner and outer

@@ -29,7 +29,7 @@ bounded by the distance to the first requested time):
     scikit-sundae build or version) and kept for comparison
     (``benchmarks/bench_dynamics.py``).  When the counters are readable this
     mode reports them too, with the Python count as ``python_counted_steps``
-    (an independent check of the counter read, ``tests/test_cvode_stepping.py``).
+    (an independent check of the counter read, ``tests/solvers/test_cvode_stepping.py``).
 
 Failure, wall-time limit and Ctrl-C: an exception raised inside the rhs or
 Jacobian (``KeyboardInterrupt`` included) makes CVODE return, scikit-sundae

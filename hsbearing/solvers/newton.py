@@ -1,5 +1,5 @@
 """Damped Newton iteration for a small scaled nonlinear system R(x) = 0 (generic: nothing here knows the
-problem; used by the quasi-static bearing equilibrium, :mod:`hsbearing.quasistatic`).
+problem; used by the quasi-static bearing equilibrium, :mod:`hsbearing.systems.angular_contact.quasistatic`).
 
 Steps are least-squares solutions of the scaled linear system (so a singular or rank-deficient Jacobian
 still gives a step), with a backtracking line search that halves the step until the scaled residual

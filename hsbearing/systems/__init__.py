@@ -20,12 +20,14 @@ To add a system: docs/adding_a_system.md.
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Callable
 
 from hsbearing.errors import CaseError
+from hsbearing.plotting import is_sweep_summary, plot_sweep
 from hsbearing.systems.base import System
 
-__all__ = ["System", "SYSTEMS", "get", "for_archive", "simulate", "figure_functions"]
+__all__ = ["System", "SYSTEMS", "get", "for_archive", "simulate", "figure_functions", "archive_kind", "plot_run"]
 
 
 def _load() -> dict[str, System]:
@@ -68,3 +70,37 @@ def figure_functions() -> dict[str, Callable]:
         for kind, fn in s.figures.items():
             out.setdefault(kind, fn)
     return out
+
+
+def plot_run(ds, path) -> Path:
+    """Draw the figure of a result Dataset to ``path`` (PNG) and return the path.
+
+    See the module docstring for the dispatch.  A dynamic run that was not
+    annotated is annotated first (:func:`hsbearing.analysis.annotate`, with the
+    case re-read from ``attrs["case_toml"]``) so the figure shows the slip
+    ratio, the Poincare map and the classification.
+    """
+    path = Path(path)
+    kind = archive_kind(ds)
+    if kind == "sweep":
+        return plot_sweep(ds, path)
+    return figure_functions()[kind](ds, path)
+
+
+def archive_kind(ds) -> str:
+    """What an hsbearing Dataset holds: ``"sweep"``, ``"gyro"``, ``"friction"``, ``"preload"``,
+    ``"quasistatic"`` or ``"run"`` (see the module docstring).
+
+    Decided from the attributes every archive carries (``title``, ``model``, ``case_system``) and
+    the dimensions / variables, so archives written before this function existed are recognised too.
+    Raises :class:`hsbearing.case.CaseError` for a Dataset that is none of these.
+    """
+    if is_sweep_summary(ds):
+        return "sweep"
+    for system in sorted(SYSTEMS.values(), key=lambda s: s.fallback):  # specific kinds first, generic last
+        kind = system.archive_kind(ds)
+        if kind is not None:
+            return kind
+    source = str(ds.encoding.get("source", "dataset"))
+    raise CaseError(source, None, "not an hsbearing result this command can draw (no run, quasi-static, friction, "
+                                  "preload, gyro or sweep variables)")

@@ -1,4 +1,4 @@
-"""Gyroscope mini bearing with a ribbon cage under ultra-low-speed oscillation (seed 000): the physics.
+"""Gyroscope mini bearing with a ribbon cage under ultra-low-speed oscillation (Jiang et al. 2014): the physics.
 
 This module holds the friction-moment sources, the ribbon-cage contact and the compiled right-hand side
 (sections 1-3); the model builder, simulation, start ensemble, studies and figures are the gyro system,
@@ -33,7 +33,7 @@ References
 ----------
 [J] Jiang S., Chen X., Gu J., Shen X., "Friction moment analysis of space
     gyroscope bearing with ribbon cage under ultra-low oscillatory motion",
-    Chin. J. Aeronaut. 27(5) (2014) 1301-1311 (seed 000).
+    Chin. J. Aeronaut. 27(5) (2014) 1301-1311 (Jiang et al. 2014).
 [H] Harris T. A., *Rolling Bearing Analysis*, 4th ed., Wiley 2001: Ch. 6
     (Hertz), Ch. 7 (thrust-loaded bearing, Eq. 7.xx: F_a = Z K_n (B D)^1.5
     sin(beta) (cos(beta_0)/cos(beta) - 1)^1.5), Ch. 10 ("Friction in rolling
@@ -464,7 +464,7 @@ def euler_rate_matrix(tx, ty, tz, P):
 
 # Decision on Eq. 5: the seed prints A_Ic[1, 0] = cos(ty) sin(tz); the product Rz Ry Rx of the
 # sequential rotations gives -cos(ty) sin(tz) (also the sign used in phi of Eq. 6, row 2); with the
-# printed sign A_Ic is not orthogonal.  tests/test_gyro.py checks orthogonality.
+# printed sign A_Ic is not orthogonal.  tests/systems/gyro/test_gyro.py checks orthogonality.
 
 
 @numba.njit(cache=True)
@@ -502,7 +502,7 @@ def _hunt_crossley(K, delta, ddelta, chi):
 
 
 @numba.njit(cache=True)
-def _kernel(t, y, p, Z, ydot, diag):
+def kernel(t, y, p, Z, ydot, diag):
     """Right-hand side of the assembled model; ``diag[j] = (F_N, F_pbz (driving +), F_T)`` per ball."""
     dm, D, Dp, e, nabla = p[_P_DM], p[_P_D], p[_P_DP], p[_P_E], p[_P_NABLA]
     K, chi, mu_c, vreg_c = p[_P_K], p[_P_CHI], p[_P_MU_C], p[_P_VREG_C]

@@ -21,7 +21,7 @@ References
     frictional moment" (SKF 2004/2014).
 [2] SKF *General Catalogue* 6000 EN, deep-groove ball bearing tables:
     basic static load ratings C_0 (6206: 11.2 kN, 6207: 15.3 kN, 6208: 19 kN).
-[3] Seed 003 (DGBB sliding friction torque with pure rolling lines), Sec. 3
+[3] dgbb_prl (DGBB sliding friction torque with pure rolling lines), Sec. 3
     and Tables 2-4: the "SKF" column lists the sliding moment M_sl only.
 [4] SKF *General Catalogue* 6000 EN, "Friction", Table 2a, angular contact
     ball bearings: G_rr = R1 d_m^1.97 (F_r + F_g + R2 F_a)^0.54 with
@@ -58,7 +58,7 @@ References
 [5] Public transcription of the SKF friction-model constants tables (an
     open-source Python bearing tool, module of "SKF friction-model constants
     transcribed from the published SKF tables"; its deep-groove 62 row equals
-    DGBB_SERIES (S1, S2 also reproduce seed 003), its other deep-groove rows
+    DGBB_SERIES (S1, S2 also reproduce dgbb_prl), its other deep-groove rows
     agree with two other public transcriptions, and its K_rs and mu_EHL
     values with [1]).  Not an SKF document: secondary.
 """
@@ -73,7 +73,18 @@ import numpy as np
 
 from hsbearing.errors import CaseError
 
+#: output variables of the SKF 2004 moments over ``speed`` (name, dims, units, long_name): a table the systems that
+#: report them register (``hsbearing friction`` of deep-groove and angular-contact cases)
+OUTPUTS = (
+    ("skf_sliding_torque", ("speed",), "N*m", "SKF 2004 sliding frictional moment M_sl = G_sl mu_sl"),
+    ("skf_rolling_torque", ("speed",), "N*m", "SKF 2004 rolling frictional moment M_rr"),
+    ("skf_drag_torque", ("speed",), "N*m", "SKF 2004 drag-loss moment M_drag (oil bath)"),
+    ("skf_total_torque", ("speed",), "N*m", "SKF 2004 total frictional moment M_rr + M_sl + M_drag (open bearing, no seal)"),
+    ("skf_sliding_coefficient", ("speed",), "1", "SKF 2004 sliding coefficient mu_sl = phi_bl mu_bl + (1 - phi_bl) mu_EHL"),
+)
+
 __all__ = [
+    "OUTPUTS",
     "SeriesConstants",
     "DGBB_SERIES",
     "series_of",
@@ -110,7 +121,7 @@ class SeriesConstants:
 
 #: [1], Table 1 "Geometry constants for rolling and sliding frictional moments",
 #: deep-groove ball bearings, series 62 / 622.  S1, S2 are checked: they reproduce
-#: seed 003 Table 2 (SKF column) to 5 significant digits (tests/test_friction_dgbb.py);
+#: dgbb_prl Table 2 (SKF column) to 5 significant digits (tests/systems/deep_groove/test_friction_dgbb.py);
 #: R1, R2 are not checked by any seed table.  Other series (60, 63, ...) are left
 #: out on purpose until their row is verified against the catalogue.
 DGBB_SERIES: dict[str, SeriesConstants] = {
@@ -255,7 +266,7 @@ def sliding_variable_G_sl(Fr, Fa, dm_mm, C0, consts: SeriesConstants, reading: s
       F_a = 0: G_sl = S1 d_m^-0.26 F_r^(5/3);
       F_a > 0: G_sl = S1 d_m^-0.145 (F_r^5 + S2 d_m^1.5 / sin(alpha_F) F_a^4)^(1/3).
 
-    ``reading="seed003"``: the reading that reproduces the SKF column of seed
+    ``reading="dgbb_prl"``: the reading that reproduces the SKF column of seed
     003 Tables 2-4 to 4-5 digits: the axial (F_a > 0) term and *half* the
     pure-radial term added,
       G_sl = S1 d_m^-0.145 (S2 d_m^1.5 / sin(alpha_F) F_a^4)^(1/3) + 0.5 S1 d_m^-0.26 F_r^(5/3).
@@ -268,12 +279,12 @@ def sliding_variable_G_sl(Fr, Fa, dm_mm, C0, consts: SeriesConstants, reading: s
     Fr = float(Fr)
     Fa = float(Fa)
     radial_only = consts.S1 * dm_mm ** (-0.26) * Fr ** (5.0 / 3.0)  # [1], Table 2a (F_a = 0)
-    if reading == "seed003":
+    if reading == "dgbb_prl":
         axial = 0.0
         if Fa > 0.0:
             aF = contact_angle_alpha_F(Fa, C0)
             axial = consts.S1 * dm_mm ** (-0.145) * (consts.S2 * dm_mm**1.5 / np.sin(aF) * Fa**4) ** (1.0 / 3.0)
-        return axial + 0.5 * radial_only  # seed 003 Tables 2-4 (reverse-engineered, see docs)
+        return axial + 0.5 * radial_only  # dgbb_prl Tables 2-4 (reverse-engineered, see docs)
     if reading != "catalogue":
         raise ValueError(f"unknown G_sl reading {reading!r}")
     if Fa <= 0.0:
@@ -300,7 +311,7 @@ def sliding_coefficient_mu_sl(n_rpm, nu_mm2s, dm_mm, mu_bl=0.15, mu_ehl=0.05):
     """Sliding friction coefficient mu_sl [-] = phi_bl mu_bl + (1 - phi_bl) mu_EHL ([1]).
 
     SKF defaults: mu_bl = 0.15; mu_EHL = 0.05 for mineral oils (0.04 synthetic,
-    0.1 transmission fluids).  This is the "Stribeck-type" coefficient of seed 003.
+    0.1 transmission fluids).  This is the "Stribeck-type" coefficient of dgbb_prl.
     """
     phi = boundary_weighting_phi_bl(n_rpm, nu_mm2s, dm_mm)
     return phi * mu_bl + (1.0 - phi) * mu_ehl  # [1]
@@ -362,7 +373,7 @@ def skf_moments(case, speeds, reading: str | None = None) -> dict[str, np.ndarra
         ``friction.static_load_rating``, ``boundary_coefficient``,
         ``ehl_coefficient``, ``skf_reading``, ``skf_drag_variable``.
     speeds : inner-ring speeds [rad/s] (array).
-    reading : G_sl reading (``"catalogue"``, ``"seed003"``); None = ``[friction] skf_reading``.
+    reading : G_sl reading (``"catalogue"``, ``"dgbb_prl"``); None = ``[friction] skf_reading``.
 
     Returns
     -------

@@ -1,4 +1,4 @@
-"""Sliding friction torque of deep-groove ball bearings with pure rolling lines (seed 003).
+"""Sliding friction torque of deep-groove ball bearings with pure rolling lines (dgbb_prl).
 
 M_sl = M_s + M_r + M_d                                         ([S], Eq. 1)
 
@@ -8,7 +8,7 @@ ellipses of a (quasi-)static solution.
 
 What the seed transcript lost and how it is rebuilt here
 --------------------------------------------------------
-The transcript of seed 003 keeps Eq. 1, Eq. 7 (2-PRL spinning moment) and a
+The transcript of dgbb_prl keeps Eq. 1, Eq. 7 (2-PRL spinning moment) and a
 fragment of Eq. 10 (2-PRL friction force); the kinematic relations (Eqs. 3-4,
 11), the rotation moment (Eq. 13), the orbital slip distances (Eqs. 16-19),
 the equilibrium (Eqs. 20-23, 29) and the c-value updates (Eqs. 24-28) are
@@ -56,7 +56,7 @@ missing.  They are rebuilt from the sources the seed cites:
 
 References
 ----------
-[S] Seed 003 (``/work/shared/seeds/003_*.txt``): estimation of the sliding
+[S] dgbb_prl (``/work/shared/seeds/003_*.txt``): estimation of the sliding
     friction torque of deep-groove ball bearings with pure rolling lines and
     an updated c-value method; Tables 2-4.
 [H] Harris T. A., Kotzalas M. N., *Rolling Bearing Analysis*, 5th ed., Vol. 2,

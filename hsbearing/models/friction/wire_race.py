@@ -1,4 +1,4 @@
-"""Wire-race ball bearing: preload magnitude versus starting torque (seed 001).
+"""Wire-race ball bearing: preload magnitude versus starting torque (Shan et al. 2010).
 
 A wire-race bearing carries its balls on four hardened wires, two in the
 inner ring and two in the outer ring; each ball touches the four wires at the
@@ -20,7 +20,7 @@ References
 ----------
 [1] Shan X.-B., Wang L.-L., Xie T., Chen W.-S., "A simple approach for
     determining the preload of a wire race ball bearing", J. Zhejiang Univ.
-    Sci. A 11(8) (2010), doi:10.1631/jzus.A0900583 (seed 001).  Eqs. 1-13,
+    Sci. A 11(8) (2010), doi:10.1631/jzus.A0900583 (Shan et al. 2010).  Eqs. 1-13,
     Tables 1-3, Fig. 9a.
 [2] Shan X.-B., Xie T., Chen W.-S., "A new method for determining the preload
     in a wire race ball bearing", Tribol. Int. 40(5) (2007) 869-875 -- where
@@ -52,7 +52,7 @@ Conventions and decisions (details in docs/validation/wire_race.md)
   wire is convex and the outer wire concave (torus normal curvature).
 * K_i, K_o come from the exact elliptic-integral Hertz solution
   (:func:`hsbearing.models.hertz.point_contact`) instead of Johnson's
-  F_2(e) chart fit; the two differ by 0.4 % here (tests/test_wire_race.py).
+  F_2(e) chart fit; the two differ by 0.4 % here (tests/systems/wire_race/test_wire_race.py).
   They are 15-16 % above the K implied by Table 2 of [1]; no reading of
   Table 1 reproduces both its deformation and its pressure columns (docs).
 * zeta is only defined together with a force model: measured torques fix

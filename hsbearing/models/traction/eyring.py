@@ -37,11 +37,11 @@ docs/traction.md, "Physical model").  Film thickness: Hamrock & Dowson central f
 load, speed, R_x and ellipticity.
 
 Quadrature (the kernel's split): the kernel integrates along the major axis (transverse, y = a u) over
-the strips of :func:`hsbearing.models.ball.strip_load_weights`; in each strip :func:`strip_mu` integrates
+the strips of :func:`hsbearing.models.ball_bearing.ball.strip_load_weights`; in each strip :func:`strip_mu` integrates
 across the minor axis (rolling, x = b_u sin(theta), b_u = b sqrt(1 - u^2)) with :data:`N_MINOR`
 Gauss-Legendre nodes in theta: the substitution removes the square-root edges of the Hertz pressure, so
 the integrand is smooth and a handful of nodes suffice (tested against a fine 2-D grid over the ellipse,
-tests/test_traction_eyring.py).  A strip needs its local peak pressure p_0 sqrt(1 - u^2): the one extra
+tests/models/test_traction_eyring.py).  A strip needs its local peak pressure p_0 sqrt(1 - u^2): the one extra
 argument of the kernel's per-node call.
 
 Parameters and defaults (each overridable in a lubricant file, docs/traction.md "Lubricant files"):
@@ -237,7 +237,7 @@ def contact_mu(S, W, U, Ep, Rx, k, a, eta_in, alpha, tau0, Lambda, G, n_major=5)
 
     The Python twin of what the kernel does per contact (one slip S for every strip: no spin).  Vectorised in S.
     """
-    from hsbearing.models.ball import strip_load_weights
+    from hsbearing.models.ball_bearing.ball import strip_load_weights
 
     c = contact_coefficients(W, U, Ep, Rx, k, a, eta_in, alpha, tau0, Lambda, G)
     qu, qw = strip_load_weights(n_major)

@@ -1,5 +1,5 @@
 """The angular-contact ball bearing (Zhang et al. 2016): the 6-DOF dynamic model with cage
-(:mod:`hsbearing.dynamics`, wrapped here), its quasi-static start (:mod:`hsbearing.quasistatic`), the
+(:mod:`hsbearing.systems.angular_contact.dynamics`, wrapped here), its quasi-static start (:mod:`hsbearing.systems.angular_contact.quasistatic`), the
 quasi-static power loss by source with the SKF 2004 cross-check (``hsbearing friction``) and the run
 figures (:mod:`hsbearing.systems.angular_contact.figures`)."""
 
@@ -16,24 +16,24 @@ __all__ = ["SYSTEM", "simulate", "build_model", "summary_lines", "run_summary", 
 
 
 def simulate(case, duration=None, progress: bool = False, **kwargs):
-    """The dynamic run (:func:`hsbearing.dynamics.simulate`)."""
-    from hsbearing import dynamics
+    """The dynamic run (:func:`hsbearing.systems.angular_contact.dynamics.simulate`)."""
+    from hsbearing.systems.angular_contact import dynamics
 
     return dynamics.simulate(case, duration=duration, progress=progress, **kwargs)
 
 
 def build_model(case, **kwargs):
-    """The dynamic model object (:func:`hsbearing.dynamics.build_model`)."""
-    from hsbearing import dynamics
+    """The dynamic model object (:func:`hsbearing.systems.angular_contact.dynamics.build_model`)."""
+    from hsbearing.systems.angular_contact import dynamics
 
     return dynamics.build_model(case, **kwargs)
 
 
 def summary_lines(ds) -> list[str]:
-    """Drive torque and power loss by source of a dynamic run (:func:`hsbearing.balances.power_summary_lines`)."""
+    """Drive torque and power loss by source of a dynamic run (:func:`hsbearing.systems.angular_contact.balances.power_summary_lines`)."""
     if "drive_torque" not in ds:
         return []
-    from hsbearing.balances import power_summary_lines
+    from hsbearing.systems.angular_contact.balances import power_summary_lines
 
     return list(power_summary_lines(ds))
 
@@ -47,23 +47,23 @@ def run_summary(ds) -> dict:
 
 def friction_command(case, args) -> int:
     """``hsbearing friction CASE``: quasi-static power loss by source and the SKF 2004 angular-contact model."""
-    from hsbearing.rating import _NOTE_QS, _NOTE_SKF, _rpm, friction_angular_contact
     from hsbearing.results import write_netcdf
-    from hsbearing.systems.deep_groove.friction import parse_speeds
+    from hsbearing.systems.angular_contact.rating import NOTE_QS, NOTE_SKF, friction_angular_contact, rpm
+    from hsbearing.units import parse_speeds
 
     out = getattr(args, "output", None)
     speeds = parse_speeds(args.speeds) if args.speeds else np.array([abs(case.operating.inner_speed)])
     ds = friction_angular_contact(case, speeds)
     print(f"case {case.name}: Fa = {abs(case.operating.axial_load):g} N, Fr = {math.hypot(case.operating.radial_load, case.operating.radial_load_z):g} N, "
           f"oil {case.lubricant.oil} at {case.lubricant.temperature - 273.15:.4g} degC")
-    from hsbearing.balances import SOURCES
+    from hsbearing.systems.angular_contact.balances import SOURCES
 
     srcs = [s for s in SOURCES if np.any(np.abs(ds[f"qs_power_loss_{s}"].values) > 1e-9)]
     head = ["n [r/min]"] + [f"{s} [W]" for s in srcs] + ["total [W]", "M [N mm]", "SKF M_rr", "SKF M_sl", "SKF M [N mm]", "SKF P [W]"]
     print("quasi-static power loss by source | SKF 2004 (72xx angular contact)")
     print("  ".join(f"{h:>14s}" for h in head))
     for i, wi in enumerate(ds["speed"].values):
-        row = [f"{_rpm(wi):14.0f}"] + [f"{ds[f'qs_power_loss_{s}'].values[i]:14.4g}" for s in srcs]
+        row = [f"{rpm(wi):14.0f}"] + [f"{ds[f'qs_power_loss_{s}'].values[i]:14.4g}" for s in srcs]
         M = ds.qs_friction_torque.values[i]
         row += [f"{ds.qs_power_loss.values[i]:14.4g}", f"{M * 1e3:14.4g}" if np.isfinite(M) else f"{'n/a (0 r/min)':>14s}",
                 f"{ds.skf_rolling_torque.values[i] * 1e3:14.4g}", f"{ds.skf_sliding_torque.values[i] * 1e3:14.4g}",
@@ -75,16 +75,16 @@ def friction_command(case, args) -> int:
     for i, wi in enumerate(ds["speed"].values):
         for label, pre, tot in (("ours", "qs_power_as_skf_", ds.qs_power_loss.values[i]),
                                 ("SKF 2004", "skf_power_", ds.skf_total_torque.values[i] * abs(wi))):
-            print("  ".join([f"{_rpm(wi):14.0f}", f"{label:>14s}"] + [f"{ds[pre + t].values[i]:14.4g}" for t in
+            print("  ".join([f"{rpm(wi):14.0f}", f"{label:>14s}"] + [f"{ds[pre + t].values[i]:14.4g}" for t in
                                                                       ("rolling", "sliding", "drag", "seal")] + [f"{tot:14.4g}"]))
     X, Re, CD = ds["cavity_oil_fraction"].values, ds["drag_reynolds_number"].values, ds["drag_coefficient"].values
     print(f"drag: cavity oil fraction {', '.join(f'{x:.4g}' for x in X)} ({ds.attrs.get('cavity_oil_fraction_source', '')}); "
           f"ball Reynolds number {', '.join(f'{r:.3g}' for r in Re)}; C_D {', '.join(f'{c:.3g}' for c in CD)} (smooth "
           "sphere, standard drag curve of Clift, Grace & Weber 1978, Table 5.2)")
-    print("note: " + _NOTE_QS)
-    print("note: " + _NOTE_SKF)
+    print("note: " + NOTE_QS)
+    print("note: " + NOTE_SKF)
     if case.friction.law == "coulomb":
-        print("note: friction.law = coulomb selects the seed 003 deep-groove sliding method with a dry constant mu; it is not "
+        print("note: friction.law = coulomb selects the dgbb_prl deep-groove sliding method with a dry constant mu; it is not "
               "used for angular-contact bearings (the traction law of the oil is)")
     if not np.all(np.isfinite(ds.qs_friction_torque.values)):
         print("note: M = P / omega is not defined at 0 r/min (no rotation, no power): n/a")
@@ -140,7 +140,7 @@ def _plot_thermal(ds, path):
 
 def _register_outputs():
     import hsbearing.analysis.orbit  # noqa: F401 - the run summary variables
-    import hsbearing.thermal  # noqa: F401 - the thermal network variables
+    import hsbearing.systems.angular_contact.thermal  # noqa: F401 - the thermal network variables
 
 
 SYSTEM = System(

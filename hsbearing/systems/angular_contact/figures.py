@@ -1,5 +1,5 @@
-"""Figures of the ball-bearing dynamic model (:mod:`hsbearing.dynamics`: angular-contact and deep-groove runs)
-and of the quasi-static equilibrium (:mod:`hsbearing.quasistatic`).
+"""Figures of the ball-bearing dynamic model (:mod:`hsbearing.systems.angular_contact.dynamics`: angular-contact and deep-groove runs)
+and of the quasi-static equilibrium (:mod:`hsbearing.systems.angular_contact.quasistatic`).
 
 - :func:`plot_dynamic`: (a) cage whirl orbit D_Y-D_Z with the guide clearance circle, (b) Poincare map (D_Y, V_Y)
   -- the same section points as the stored classification (:mod:`hsbearing.analysis.poincare`), (c) cage speed
@@ -15,16 +15,16 @@ import numpy as np
 
 from hsbearing.plotting import common  # common.save_figure: one place to capture every figure
 from hsbearing.plotting.common import (
-    _RPM,
-    _case_labels,
+    RPM,
     _figure,
-    _length_scale,
-    _per_ball_axes,
-    _shade,
-    _vals,
-    _velocity_scale,
     _wrap,
+    case_labels,
+    length_scale,
+    per_ball_axes,
+    shade,
     title_lines,
+    vals,
+    velocity_scale,
 )
 
 __all__ = ['plot_dynamic', 'plot_quasistatic', 'plot_friction_angular_contact']
@@ -58,7 +58,7 @@ def _plot_dynamic(ds, path: Path) -> Path:
         z_m = np.asarray(ds["cage_center_z"].values, float)
         r_m = np.hypot(y_m, z_m)
         r_ext = float(np.nanmax(r_m)) if r_m.size and np.any(np.isfinite(r_m)) else float("nan")
-        lf, lu = _length_scale(r_ext)
+        lf, lu = length_scale(r_ext)
         y, z = y_m * lf, z_m * lf
         ax.plot(y[~mask], z[~mask], color="0.75", lw=0.6, label=f"transient (first {t_tr * 1e3:.3g} ms)")
         ax.plot(y[mask], z[mask], color="C0", lw=0.8, label="after transient")
@@ -119,8 +119,8 @@ def _plot_dynamic(ds, path: Path) -> Path:
     if len(pts):
         ext_y = max(ext_y, float(np.nanmax(np.abs(pts[:, 0])))) if np.isfinite(ext_y) else float(np.nanmax(np.abs(pts[:, 0])))
         ext_v = max(ext_v, float(np.nanmax(np.abs(pts[:, 1])))) if np.isfinite(ext_v) else float(np.nanmax(np.abs(pts[:, 1])))
-    lf, lu = _length_scale(ext_y)
-    vf, vu = _velocity_scale(ext_v)
+    lf, lu = length_scale(ext_y)
+    vf, vu = velocity_scale(ext_v)
     if len(pts):
         sc = ax.scatter(pts[:, 0] * lf, pts[:, 1] * vf, c=np.arange(len(pts)), cmap="viridis", s=14, zorder=3)
         cb = fig.colorbar(sc, ax=ax, pad=0.01)
@@ -166,16 +166,16 @@ def _plot_dynamic(ds, path: Path) -> Path:
     # (c) cage speed
     ax = axs[1, 0]
     if "cage_speed" in ds:
-        w = np.asarray(ds["cage_speed"].values, float) * _RPM
+        w = np.asarray(ds["cage_speed"].values, float) * RPM
         ax.plot(t_ms, w, color="C0", lw=0.8, label="cage speed")
         if "theoretical_cage_speed" in ds:
-            wth = float(ds["theoretical_cage_speed"]) * _RPM
+            wth = float(ds["theoretical_cage_speed"]) * RPM
             ax.axhline(wth, color="k", ls="--", lw=0.9, label=f"pure rolling at \u03b1$_0$: {wth:.0f} r/min")
         if "raceway_control_cage_speed" in ds and np.isfinite(float(ds["raceway_control_cage_speed"])):
-            wrc = float(ds["raceway_control_cage_speed"]) * _RPM
+            wrc = float(ds["raceway_control_cage_speed"]) * RPM
             ax.axhline(wrc, color="C2", ls=":", lw=1.1,
                        label=f"outer-raceway control at loaded \u03b1: {wrc:.0f} r/min")
-        _shade(ax, t_tr * 1e3)
+        shade(ax, t_tr * 1e3)
         ax.legend(fontsize=8, loc="best")
     ax.set_xlabel("time [ms]")
     ax.set_ylabel("cage speed [r/min]")
@@ -193,7 +193,7 @@ def _plot_dynamic(ds, path: Path) -> Path:
         if "mean_cage_slip_ratio_raceway_control" in ds and np.isfinite(float(ds["mean_cage_slip_ratio_raceway_control"])):
             rc = 100 * float(ds["mean_cage_slip_ratio_raceway_control"])
             ax.plot([], [], " ", label=f"against outer-raceway control at loaded \u03b1: {rc:.2f} %")
-        _shade(ax, t_tr * 1e3)
+        shade(ax, t_tr * 1e3)
         ax.legend(fontsize=8, loc="best")
     else:
         ax.text(0.5, 0.5, "no cage slip ratio (case unknown)", ha="center", va="center", transform=ax.transAxes)
@@ -217,15 +217,15 @@ def _plot_static(ds, path: Path) -> Path:
         if name in ds:
             q = np.atleast_1d(np.asarray(ds[name].values, float))
             nb = len(q)
-            x = np.arange(nb)  # balls 0..Z-1, as in the archive and the printed table (issue 27)
+            x = np.arange(nb)  # balls 0..Z-1, as in the archive and the printed table
             off = -0.2 if "inner" in name else 0.2
             ax1.bar(x + off, q, width=0.4, color=c, label=lab)
-    _per_ball_axes(ax1, nb, "contact load [N]", "contact loads per ball", grid_axis="y")
+    per_ball_axes(ax1, nb, "contact load [N]", "contact loads per ball", grid_axis="y")
     for name, lab, c in (("inner_contact_angle", "inner race $\\alpha_i$", "C0"), ("outer_contact_angle", "outer race $\\alpha_o$", "C1")):
         if name in ds:
             a = np.degrees(np.atleast_1d(np.asarray(ds[name].values, float)))
             ax2.plot(np.arange(len(a)), a, "o-", color=c, label=lab)
-    _per_ball_axes(ax2, nb, "contact angle [\N{DEGREE SIGN}]", "contact angles per ball", grid_axis="both")
+    per_ball_axes(ax2, nb, "contact angle [\N{DEGREE SIGN}]", "contact angles per ball", grid_axis="both")
     return common.save_figure(fig, path)
 
 
@@ -254,25 +254,25 @@ def _draw_section_line(ax, ds, lf: float, view: float) -> None:
 
 
 def plot_friction_angular_contact(ds, path) -> Path:
-    """Figure of ``hsbearing friction`` of an angular-contact case (dim ``speed``, ``qs_power_loss``; issue 27):
+    """Figure of ``hsbearing friction`` of an angular-contact case (dim ``speed``, ``qs_power_loss``):
     (a) the quasi-static power loss by source against the inner-ring speed [W]; (b) its friction torque
     P / omega next to the SKF 2004 moments M_rr, M_sl and M [N mm]."""
-    from hsbearing.balances import SOURCES
+    from hsbearing.systems.angular_contact.balances import SOURCES
 
     path = Path(path)
     fig = _figure((11, 4.6))
     ax1, ax2 = fig.subplots(1, 2)
-    rpm = _vals(ds, "speed", _RPM)
-    lab = _case_labels(ds)
+    rpm = vals(ds, "speed", RPM)
+    lab = case_labels(ds)
     head = ", ".join([ds.attrs.get("case_name", "friction")] + [lab[k] for k in ("oil", "axial_load", "radial_load",
                                                                                 "temperature") if k in lab])
     fig.suptitle(f"quasi-static power loss and friction torque: {head}", fontsize=11)
     marker = "o" if len(rpm) <= 12 else None
     for k, s in enumerate(SOURCES):
         name = f"qs_power_loss_{s}"
-        if name in ds and np.any(np.abs(_vals(ds, name)) > 1e-9):
-            ax1.plot(rpm, _vals(ds, name), marker=marker, ms=4, lw=1.2, color=f"C{k}", label=s.replace("_", " "))
-    ax1.plot(rpm, _vals(ds, "qs_power_loss"), marker=marker, ms=4, lw=2.0, color="k", label="total")
+        if name in ds and np.any(np.abs(vals(ds, name)) > 1e-9):
+            ax1.plot(rpm, vals(ds, name), marker=marker, ms=4, lw=1.2, color=f"C{k}", label=s.replace("_", " "))
+    ax1.plot(rpm, vals(ds, "qs_power_loss"), marker=marker, ms=4, lw=2.0, color="k", label="total")
     ax1.set_xlabel("inner-ring speed n [r/min]")
     ax1.set_ylabel("power loss [W]")
     ax1.set_title("(a) power loss by source (quasi-static state)", fontsize=10)
@@ -284,7 +284,7 @@ def plot_friction_angular_contact(ds, path) -> Path:
             ("skf_total_torque", "SKF 2004 total $M$", "C3", "--", 1.6))
     for name, label, col, ls, lw in rows:
         if name in ds:
-            ax2.plot(rpm, _vals(ds, name, 1e3), ls=ls, color=col, lw=lw, marker=marker, ms=4, label=label)
+            ax2.plot(rpm, vals(ds, name, 1e3), ls=ls, color=col, lw=lw, marker=marker, ms=4, label=label)
     ax2.set_xlabel("inner-ring speed n [r/min]")
     ax2.set_ylabel("torque [N mm]")
     ax2.set_title("(b) friction torque", fontsize=10)

@@ -1,7 +1,7 @@
 """Lock/drift figure of a dynamic run (``OUT_lock.png``): is the cage whirl locked to the cage rotation?
 
 (a) the whirl-cage phase psi = (theta - n phi) / 2 pi [turns] against the cage revolutions after the transient,
-with its least-squares line (the drift rho of :func:`hsbearing.analysis.classify.whirl_lock`); a locked whirl is
+with its least-squares line (the drift rho of :func:`hsbearing.analysis.whirl.whirl_lock`); a locked whirl is
 flat, a whirl at 0.98 x the cage speed drifts by -0.02 turn per revolution.  (b) the once-per-cage-revolution
 (clock) section, whose points creep along the orbit by that drift -- the section the label is *not* read on (the
 model is autonomous; docs/analysis.md §0), shown beside the transverse one of the run figure.
@@ -31,7 +31,7 @@ def plot_lock(ds, path) -> Path:
     from matplotlib.figure import Figure
 
     from hsbearing.analysis import poincare
-    from hsbearing.analysis.classify import whirl_cage_phase, whirl_lock
+    from hsbearing.analysis.whirl import whirl_cage_phase, whirl_lock
     from hsbearing.plotting.common import save_figure
 
     t = np.asarray(ds["time"].values, float)

@@ -1,7 +1,7 @@
 """The power figure of an angular-contact dynamic run: where the shaft's power goes.
 
 ``hsbearing run`` writes it next to the run figure as ``OUT_power.png``; ``hsbearing plot OUT.nc`` too.
-Panels, from the dataset variables of :mod:`hsbearing.balances` (docs/power_loss.md):
+Panels, from the dataset variables of :mod:`hsbearing.systems.angular_contact.balances` (docs/power_loss.md):
 
 (a) ``power_loss_<source>`` stacked against time (each smoothed by a centred moving mean over
     ``smooth_ms``, 0.5 ms by default, so ball-passage ripple does not hide the levels), with the
@@ -52,8 +52,8 @@ def plot_power(ds, path, smooth_ms: float = 0.5) -> Path:
     """Draw the power figure of a dynamic run archive to ``path`` (PNG) and return the path."""
     from matplotlib.figure import Figure
 
-    from hsbearing.balances import SOURCES
     from hsbearing.plotting import save_figure, title_lines
+    from hsbearing.systems.angular_contact.balances import SOURCES
 
     t = np.asarray(ds["time"].values, float)
     t_ms = (t - t[0]) * 1e3
@@ -69,7 +69,7 @@ def plot_power(ds, path, smooth_ms: float = 0.5) -> Path:
     ax.stackplot(t_ms, *series, labels=[s.replace("_", " ") for s in names], alpha=0.85)
     drive = _moving_mean(t, np.asarray(ds["drive_power"].values, float), w)
     ax.plot(t_ms, drive, "k-", lw=1.2, label="drive power (shaft); drive - loss = dE/dt")
-    # headroom above the curves for the legend, so it never covers the drive-power line (issue 27)
+    # headroom above the curves for the legend, so it never covers the drive-power line
     top = np.nanmax([np.nanmax(np.sum(series, axis=0)) if series else 0.0, np.nanmax(drive) if drive.size else 0.0])
     bottom = min(0.0, float(np.nanmin(drive))) if drive.size else 0.0
     if np.isfinite(top) and top > bottom:

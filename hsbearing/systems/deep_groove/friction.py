@@ -1,15 +1,15 @@
-"""Friction torque of deep-groove ball bearings: seed 003 sliding method and the SKF 2004 model.
+"""Friction torque of deep-groove ball bearings: dgbb_prl sliding method and the SKF 2004 model.
 
 :func:`friction_torque` evaluates, over a list of inner-ring speeds,
 
-* the seed 003 sliding friction torque M_sl = M_s + M_r + M_d
+* the dgbb_prl sliding friction torque M_sl = M_s + M_r + M_d
   (:mod:`hsbearing.models.friction.sliding_prl`: pure rolling lines, ball
   equilibrium) with the sliding coefficient of ``[friction] law``
   (``stribeck``: the SKF-weighted mu_sl(n); ``coulomb``: ``[friction] coefficient``);
 * the SKF 2004 moments (:mod:`hsbearing.models.friction.skf2004`).
 
 :func:`friction_command` is ``hsbearing friction CASE [--speeds ...] [-o OUT.nc]`` of a deep-groove case;
-the figures of seed 003 are :func:`hsbearing.systems.deep_groove.figures.make_figures`.
+the figures of dgbb_prl are :func:`hsbearing.systems.deep_groove.figures.make_figures`.
 """
 
 from __future__ import annotations
@@ -18,69 +18,28 @@ import math
 
 import numpy as np
 
-from hsbearing.case import parse_quantity
 from hsbearing.errors import CaseError
+from hsbearing.models.friction import skf2004
 from hsbearing.results import make_dataset, register, standard_attrs
+from hsbearing.units import parse_speeds
 
-__all__ = ["friction_torque", "friction_command", "parse_speeds", "contact_states"]
+__all__ = ["friction_torque", "friction_command", "contact_states"]
 
 for _n, _d, _u, _l in [
     ("speed", ("speed",), "rad/s", "inner-ring rotational speed n"),
-    ("spinning_torque", ("speed",), "N*m", "spinning friction torque M_s (seed 003 method)"),
-    ("rotation_sliding_torque", ("speed",), "N*m", "differential sliding friction torque due to ball rotation M_r (seed 003 method)"),
-    ("orbital_sliding_torque", ("speed",), "N*m", "differential sliding friction torque due to ball orbital motion M_d (seed 003 method)"),
-    ("sliding_torque", ("speed",), "N*m", "sliding friction torque M_sl = M_s + M_r + M_d (seed 003 method)"),
-    ("sliding_coefficient", ("speed",), "1", "sliding friction coefficient mu used by the seed 003 method"),
-    ("skf_sliding_torque", ("speed",), "N*m", "SKF 2004 sliding frictional moment M_sl = G_sl mu_sl"),
-    ("skf_rolling_torque", ("speed",), "N*m", "SKF 2004 rolling frictional moment M_rr"),
-    ("skf_drag_torque", ("speed",), "N*m", "SKF 2004 drag-loss moment M_drag (oil bath)"),
-    ("skf_total_torque", ("speed",), "N*m", "SKF 2004 total frictional moment M_rr + M_sl + M_drag (open bearing, no seal)"),
-    ("skf_sliding_coefficient", ("speed",), "1", "SKF 2004 sliding coefficient mu_sl = phi_bl mu_bl + (1 - phi_bl) mu_EHL"),
+    ("spinning_torque", ("speed",), "N*m", "spinning friction torque M_s (dgbb_prl method)"),
+    ("rotation_sliding_torque", ("speed",), "N*m", "differential sliding friction torque due to ball rotation M_r (dgbb_prl method)"),
+    ("orbital_sliding_torque", ("speed",), "N*m", "differential sliding friction torque due to ball orbital motion M_d (dgbb_prl method)"),
+    ("sliding_torque", ("speed",), "N*m", "sliding friction torque M_sl = M_s + M_r + M_d (dgbb_prl method)"),
+    ("sliding_coefficient", ("speed",), "1", "sliding friction coefficient mu used by the dgbb_prl method"),
     ("ball_contact_load", ("ball",), "N", "ball-inner race normal load Q_i (= outer load without centrifugal force)"),
     ("ball_contact_angle", ("ball",), "rad", "ball-inner race contact angle alpha_i (= outer angle without centrifugal force)"),
     ("inner_prl_c1", ("ball",), "1", "first pure-rolling-line location c1 = x/a at the inner contact (nan: outside)"),
     ("inner_prl_c2", ("ball",), "1", "second pure-rolling-line location c2 = x/a at the inner contact (nan: outside)"),
     ("outer_prl_c1", ("ball",), "1", "first pure-rolling-line location c1 = x/a at the outer contact (nan: outside)"),
     ("outer_prl_c2", ("ball",), "1", "second pure-rolling-line location c2 = x/a at the outer contact (nan: outside)"),
-]:
+] + list(skf2004.OUTPUTS):
     register(_n, _d, _u, _l)
-
-
-def parse_speeds(speeds, source: str = "--speeds") -> np.ndarray:
-    """Speeds -> rad/s array.  Accepts numbers (rad/s), unit strings, lists of them,
-    and the CLI form ``"500,5000,15000rpm"`` (one unit after the last number)."""
-    if isinstance(speeds, (int, float)) and not isinstance(speeds, bool):
-        items = [speeds]
-    elif isinstance(speeds, str):
-        parts = [p.strip() for p in speeds.split(",") if p.strip()]
-        if not parts:
-            raise CaseError(source, "speeds", "no speed given")
-        import re
-
-        m = re.match(r"^[-+0-9.eE]+\s*(.*)$", parts[-1])
-        unit = m.group(1).strip() if m else ""
-        items = []
-        for p in parts:
-            if re.fullmatch(r"[-+]?[0-9.]+([eE][-+]?[0-9]+)?", p):
-                if not unit:
-                    raise CaseError(source, "speeds", f"speed {p!r} has no unit (e.g. 500,5000rpm)")
-                items.append(f"{p} {unit}")
-            else:
-                items.append(p)
-    else:
-        items = list(speeds)
-    out = []
-    for it in items:
-        if isinstance(it, (int, float)) and not isinstance(it, bool):
-            val = float(it)
-        else:
-            val = parse_quantity(it, "angular_speed", source=source, key="speeds")
-        if not math.isfinite(val) or val <= 0.0:
-            raise CaseError(source, "speeds", f"speeds must be positive, got {it!r}")
-        out.append(val)
-    if not out:
-        raise CaseError(source, "speeds", "no speed given")
-    return np.asarray(out, dtype=float)
 
 
 def _require_dgbb(case):
@@ -98,7 +57,7 @@ def contact_states(case, speed=None, source: str = "static", tilt: bool = True, 
     ``tilt=True`` lets the inner ring tilt under the given moment
     (``operating.moment_z``, about the axis normal to the radial load F_y),
     the seed's 5-DOF loading {F_x, F_y, F_z, M_x, M_y}; False holds it square.
-    ``source="quasistatic"``: :func:`hsbearing.quasistatic.solve_case`
+    ``source="quasistatic"``: :func:`hsbearing.systems.angular_contact.quasistatic.solve_case`
     at ``speed`` with (``centrifugal=True``) or without ball inertia effects.
 
     Returns (psi, Q, alpha, [ContactState per ball]).
@@ -123,7 +82,7 @@ def contact_states(case, speed=None, source: str = "static", tilt: bool = True, 
         Qi = Qo = Q
         ai = ao = al
     elif source == "quasistatic":
-        from hsbearing import quasistatic
+        from hsbearing.systems.angular_contact import quasistatic
 
         ds = quasistatic.solve_case(case, inner_speed=speed, centrifugal=centrifugal, gyroscopic=centrifugal)
         Qi, Qo = ds["inner_contact_load"].values, ds["outer_contact_load"].values
@@ -145,14 +104,14 @@ def contact_states(case, speed=None, source: str = "static", tilt: bool = True, 
 
 def friction_torque(case, speeds="500,5000,15000rpm", *, traction: str = "strip", contacts: str = "static",
                     tilt: bool = True):
-    """Sliding friction torque (seed 003 method) and SKF 2004 moments over inner-ring speeds.
+    """Sliding friction torque (dgbb_prl method) and SKF 2004 moments over inner-ring speeds.
 
     Parameters
     ----------
     case : a Case or a bundled case name / path (``system = "deep_groove"``).
     speeds : inner-ring speeds: numbers [rad/s], unit strings (``"500 rpm"``)
         or the CLI form ``"500,5000,15000rpm"``.
-    traction : ``"strip"`` (seed 003 / Harris strip theory) or ``"full"`` (2-D slip direction).
+    traction : ``"strip"`` (dgbb_prl / Harris strip theory) or ``"full"`` (2-D slip direction).
     contacts : ``"static"`` (no centrifugal/gyroscopic, the seed's reading) or ``"quasistatic"``.
     tilt : static contacts: inner ring free to tilt under the given moment (True, the
         seed's 5-DOF loading) or held square (False).
@@ -164,7 +123,6 @@ def friction_torque(case, speeds="500,5000,15000rpm", *, traction: str = "strip"
     """
     from hsbearing.case import Case, load_case
     from hsbearing.models import geometry
-    from hsbearing.models.friction import skf2004
     from hsbearing.models.friction import sliding_prl as sp
 
     case = case if isinstance(case, Case) else load_case(case)
@@ -220,7 +178,7 @@ def friction_torque(case, speeds="500,5000,15000rpm", *, traction: str = "strip"
     }
     data.update({k: v for k, v in skf.items()})
     attrs = standard_attrs(
-        case, "ok", title="hsbearing friction torque (seed 003 sliding method, SKF 2004 model)",
+        case, "ok", title="hsbearing friction torque (dgbb_prl sliding method, SKF 2004 model)",
         friction_law=fr.law, traction_model=traction, contact_source=contacts, ring_tilt_free=bool(tilt),
         kinematic_viscosity_mm2_s=lub.kinematic_viscosity * 1e6 if lub.kinematic_viscosity else None,
         skf_reading=fr.skf_reading, spin_torque_reading=fr.spin_torque_reading,

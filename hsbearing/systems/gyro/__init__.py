@@ -1,6 +1,6 @@
-"""The gyroscope mini bearing with a ribbon cage (seed 000, Jiang et al. 2014): ``[case] system =
+"""The gyroscope mini bearing with a ribbon cage (Jiang et al. 2014): ``[case] system =
 "gyro_ribbon_cage"``.  Model, simulation and start ensemble: :mod:`hsbearing.systems.gyro.model`; studies
-and validation figures: :mod:`hsbearing.systems.gyro.studies`; the run figure:
+and validation figures: :mod:`hsbearing.workflows.study.gyro`; the run figure:
 :mod:`hsbearing.systems.gyro.figures`; the physics: :mod:`hsbearing.models.friction.gyro`."""
 
 from __future__ import annotations
@@ -42,7 +42,7 @@ def run_summary(ds) -> dict:
 
 
 def friction_command(case, args) -> int:
-    """``hsbearing friction CASE``: the five friction moments of seed 000 at the case thrust load (static part)."""
+    """``hsbearing friction CASE``: the five friction moments of Jiang et al. 2014 at the case thrust load (static part)."""
     from hsbearing.errors import CaseError
 
     if getattr(args, "output", None):
@@ -51,7 +51,7 @@ def friction_command(case, args) -> int:
 
     sf = gyro.static_friction(case)
     print(f"case {case.name}: gyro bearing, Fa = {case.operating.axial_load:g} N, contact angle {math.degrees(sf.beta):.3g} deg")
-    print(f"  friction moments of the ball-race contacts (seed 000 Eqs. 1-2), N mm: M_E (hysteresis) = {sf.M_E * 1e3:.4g}, "
+    print(f"  friction moments of the ball-race contacts (Jiang et al. 2014 Eqs. 1-2), N mm: M_E (hysteresis) = {sf.M_E * 1e3:.4g}, "
           f"M_D (differential sliding) = {sf.M_D * 1e3:.4g}, M_S (spin) = {sf.M_S * 1e3:.4g}, M_L (viscous) = {sf.M_L * 1e3:.4g}, "
           f"sum = {(sf.M_E + sf.M_D + sf.M_S + sf.M_L) * 1e3:.4g}")
     print("note: cage moment M_C and the start/oscillation moments (SFMC, SFMO, RFMC) need the cage dynamics: hsbearing run "
@@ -80,7 +80,7 @@ def _register_outputs():
 
 SYSTEM = System(
     name="gyro_ribbon_cage",
-    description="gyroscope mini bearing with a ribbon cage under ultra-low-speed oscillation (seed 000)",
+    description="gyroscope mini bearing with a ribbon cage under ultra-low-speed oscillation (Jiang et al. 2014)",
     friction=friction_command, simulate=simulate, build_model=build_model, summary_lines=summary_lines,
     run_summary=run_summary, archive_kind=archive_kind, figures={"gyro": _plot_gyro}, friction_archive=False,
     register_outputs=_register_outputs,

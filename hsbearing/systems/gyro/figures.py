@@ -1,4 +1,4 @@
-"""Figure of a gyro-bearing run (seed 000, like [J] Figs. 7-9): speeds, M_C, the friction-moment sources."""
+"""Figure of a gyro-bearing run (Jiang et al. 2014, like [J] Figs. 7-9): speeds, M_C, the friction-moment sources."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ from pathlib import Path
 import numpy as np
 
 from hsbearing.plotting import common  # common.save_figure: one place to capture every figure
-from hsbearing.plotting.common import _RPM, _figure, _vals
+from hsbearing.plotting.common import RPM, _figure, vals
 
 __all__ = ['GYRO_SOURCES', 'plot_gyro']
 
@@ -29,26 +29,26 @@ def plot_gyro(ds, path) -> Path:
     """
     path = Path(path)
     u = 1e6
-    t = _vals(ds, "time")
+    t = vals(ds, "time")
     fig = _figure((10, 9))
     ax = fig.subplots(3, 1, sharex=True)
     if "outer_race_speed" in ds:
-        ax[0].plot(t, _vals(ds, "outer_race_speed", _RPM), color="0.5", lw=1.0, ls="--", label="outer race")
+        ax[0].plot(t, vals(ds, "outer_race_speed", RPM), color="0.5", lw=1.0, ls="--", label="outer race")
     if "ball_orbit_speed" in ds:
-        ax[0].plot(t, _vals(ds.isel(ball=0), "ball_orbit_speed", _RPM), "k-", lw=1, label="ball 1 orbit")
+        ax[0].plot(t, vals(ds.isel(ball=0), "ball_orbit_speed", RPM), "k-", lw=1, label="ball 1 orbit")
     if "cage_speed" in ds:
-        ax[0].plot(t, _vals(ds, "cage_speed", _RPM), "r-", lw=0.8, label="cage")
+        ax[0].plot(t, vals(ds, "cage_speed", RPM), "r-", lw=0.8, label="cage")
     ax[0].set_ylabel("angular speed [r/min]")
     ax[0].set_title("(a) speeds", fontsize=10)
     ax[0].legend(loc="best", fontsize=8)
     if "friction_moment_cage" in ds:
-        ax[1].plot(t, _vals(ds, "friction_moment_cage", u), "-", color=GYRO_SOURCES[-1][2], lw=0.8)
+        ax[1].plot(t, vals(ds, "friction_moment_cage", u), "-", color=GYRO_SOURCES[-1][2], lw=0.8)
     ax[1].set_ylabel("$M_C$ [\u00b5N m]")
     ax[1].set_title("(b) ball/cage friction moment $M_C$ (signed; peak of each output interval)", fontsize=10)
     bands, labels, colours = [], [], []
     for name, lab, col in GYRO_SOURCES:
         if name in ds:
-            v = _vals(ds, name, u)
+            v = vals(ds, name, u)
             v = np.maximum(v, 0.0) if name == "friction_moment_cage" else v
             bands.append(v)
             labels.append(f"{lab}: mean {np.nanmean(v):.3g} \u00b5N m")
@@ -56,7 +56,7 @@ def plot_gyro(ds, path) -> Path:
     if bands:
         ax[2].stackplot(t, *bands, labels=labels, colors=colours, alpha=0.85, lw=0)
     if "friction_moment_total" in ds:
-        ax[2].plot(t, _vals(ds, "friction_moment_total", u), color="b", lw=1.1, label="$M$ total (Eq. 1)")
+        ax[2].plot(t, vals(ds, "friction_moment_total", u), color="b", lw=1.1, label="$M$ total (Eq. 1)")
     ax[2].set_ylabel("friction moment [\u00b5N m]")
     ax[2].set_xlabel("time [s]")
     ax[2].set_title("(c) friction-moment sources, stacked: $M_L + M_E + M_D + M_S + \\max(M_C, 0) = M$", fontsize=10)

@@ -1,4 +1,4 @@
-"""The gyro bearing system (seed 000, Jiang et al. 2014): model builder, simulation, derived moments, start
+"""The gyro bearing system (Jiang et al. 2014): model builder, simulation, derived moments, start
 ensemble, parameter studies and figures.  The physics (friction-moment sources, ribbon-cage contact, the
 compiled right-hand side) is :mod:`hsbearing.models.friction.gyro`; the decisions are in
 ``docs/validation/gyro.md``.
@@ -50,7 +50,6 @@ from hsbearing.models.friction.gyro import (  # noqa: F401 - the physics, also p
     _P_WI,
     GRAVITY,
     StaticFriction,
-    _kernel,
     _speed,
     ball_cage_stiffness,
     cage_contact_moment,
@@ -60,6 +59,7 @@ from hsbearing.models.friction.gyro import (  # noqa: F401 - the physics, also p
     differential_sliding_moment,
     euler_rate_matrix,
     hysteresis_moment,
+    kernel,
     outer_race_speed,
     pivoting_moment,
     pocket_geometry,
@@ -93,34 +93,34 @@ __all__ = [*_physics.__all__,
 # ----------------------------------------------------------------------------------------------
 # output variables (declared once, here)
 for _n, _d, _u, _l in [
-    ("outer_race_speed", ("time",), "rad/s", "outer-race angular speed omega_o(t) (seed 000 operating profile)"),
-    ("cage_angle", ("time",), "rad", "cage rotation angle about X (unwrapped)"),  # same declaration as hsbearing.dynamics
+    ("outer_race_speed", ("time",), "rad/s", "outer-race angular speed omega_o(t) (Jiang et al. 2014 operating profile)"),
+    ("cage_angle", ("time",), "rad", "cage rotation angle about X (unwrapped)"),  # same declaration as hsbearing.systems.angular_contact.dynamics
     ("friction_moment_total", ("time",), "N m",
-     "total friction moment on the outer race M = M_L + M_E + M_D + M_S + max(M_C, 0) (seed 000 Eq. 1); peak-hold over each output interval"),
-    ("friction_moment_viscous", ("time",), "N m", "viscous (lubricant drag) friction moment M_L (seed 000 Eq. 2)"),
-    ("friction_moment_hysteresis", ("time",), "N m", "elastic-hysteresis friction moment M_E (seed 000 Eqs. 1-2)"),
-    ("friction_moment_differential", ("time",), "N m", "differential-sliding friction moment M_D (seed 000 Eqs. 1-2)"),
-    ("friction_moment_pivoting", ("time",), "N m", "pivoting (spin) friction moment M_S (seed 000 Eqs. 1-2)"),
+     "total friction moment on the outer race M = M_L + M_E + M_D + M_S + max(M_C, 0) (Jiang et al. 2014 Eq. 1); peak-hold over each output interval"),
+    ("friction_moment_viscous", ("time",), "N m", "viscous (lubricant drag) friction moment M_L (Jiang et al. 2014 Eq. 2)"),
+    ("friction_moment_hysteresis", ("time",), "N m", "elastic-hysteresis friction moment M_E (Jiang et al. 2014 Eqs. 1-2)"),
+    ("friction_moment_differential", ("time",), "N m", "differential-sliding friction moment M_D (Jiang et al. 2014 Eqs. 1-2)"),
+    ("friction_moment_pivoting", ("time",), "N m", "pivoting (spin) friction moment M_S (Jiang et al. 2014 Eqs. 1-2)"),
     ("friction_moment_cage", ("time",), "N m",
-     "ball/cage friction moment M_C = sum (F_mu + F_pbz) R_o/2, signed, driving positive (seed 000 Eq. 1); value of largest magnitude in each output interval"),
-    ("ball_cage_contact_force", ("time", "ball"), "N", "ball/pocket normal contact force F_pbN (seed 000 Eq. 10), sum of the pocket's contact points"),
-    ("sfmc", (), "N m", "starting friction moment at constant rate: max M after the start from rest (seed 000 Sec. 4)"),
-    ("sfmo", (), "N m", "starting friction moment under oscillation: mean of the max M of each reversal window (seed 000 Sec. 4)"),
-    ("rfmc", (), "N m", "running friction moment at constant rate M_E + M_D + M_S + M_L (seed 000 Sec. 5.1)"),
-    ("window_max_moment", ("window",), "N m", "max total friction moment M in each oscillation window (seed 000 Sec. 4)"),
+     "ball/cage friction moment M_C = sum (F_mu + F_pbz) R_o/2, signed, driving positive (Jiang et al. 2014 Eq. 1); value of largest magnitude in each output interval"),
+    ("ball_cage_contact_force", ("time", "ball"), "N", "ball/pocket normal contact force F_pbN (Jiang et al. 2014 Eq. 10), sum of the pocket's contact points"),
+    ("sfmc", (), "N m", "starting friction moment at constant rate: max M after the start from rest (Jiang et al. 2014 Sec. 4)"),
+    ("sfmo", (), "N m", "starting friction moment under oscillation: mean of the max M of each reversal window (Jiang et al. 2014 Sec. 4)"),
+    ("rfmc", (), "N m", "running friction moment at constant rate M_E + M_D + M_S + M_L (Jiang et al. 2014 Sec. 5.1)"),
+    ("window_max_moment", ("window",), "N m", "max total friction moment M in each oscillation window (Jiang et al. 2014 Sec. 4)"),
     ("window", ("window",), "1", "index of the oscillation window (0 = start from rest)"),
     # sweep summary of a gyro run (gyro.summary)
-    ("sfmo_sd", (), "N m", "sample standard deviation (n - 1) of the reversal-window maxima of M (seed 000 Sec. 4)"),
+    ("sfmo_sd", (), "N m", "sample standard deviation (n - 1) of the reversal-window maxima of M (Jiang et al. 2014 Sec. 4)"),
     ("sfmo_stderr", (), "N m", "standard error of SFMO: sfmo_sd / sqrt(reversal_windows)"),
     ("reversal_windows", (), "1", "number of reversal windows averaged in SFMO"),
-    ("pocket_clearance", (), "m", "ball/pocket clearance A = k - D_w/2 (seed 000 Sec. 3.2)"),
+    ("pocket_clearance", (), "m", "ball/pocket clearance A = k - D_w/2 (Jiang et al. 2014 Sec. 3.2)"),
     ("cage_mass", (), "kg", "cage mass used by the model (ribbon strips of thickness s, or cage.mass)"),
     # start ensemble (simulation.start_positions > 1; gyro.start_ensemble)
     ("start_offset", ("start_offset",), "1",
      "initial turn of the cage about the axis as a fraction of its circumferential pocket play (-0.5..0.5; 0 = the default start)"),
     ("sfmc_ensemble", ("start_offset",), "N m",
      ("SFMC of each start of the start ensemble: max M in a constant-rate start of one oscillation_period from rest, "
-      "cage turned by start_offset of its play (seed 000 Sec. 4)")),
+      "cage turned by start_offset of its play (Jiang et al. 2014 Sec. 4)")),
     ("sfmc_ensemble_mean", (), "N m", "mean of sfmc_ensemble over the start offsets (SFMC averaged over the initial cage position)"),
     ("sfmc_ensemble_sd", (), "N m", "sample standard deviation (n - 1) of sfmc_ensemble over the start offsets"),
 ]:
@@ -142,13 +142,13 @@ class GyroModel:
 
     def rhs(self, t, y, ydot):
         """``rhs(t, y, ydot)`` in place (CVODE signature)."""
-        _kernel(t, y, self.p, self.Z, ydot, self._diag)
+        kernel(t, y, self.p, self.Z, ydot, self._diag)
 
     def diagnostics(self, t, y):
         """Per-ball (F_N, F_pbz driving +, F_T) [N] at one state."""
         ydot = np.empty_like(y)
         diag = np.zeros((self.Z, 3))
-        _kernel(float(t), np.ascontiguousarray(y), self.p, self.Z, ydot, diag)
+        kernel(float(t), np.ascontiguousarray(y), self.p, self.Z, ydot, diag)
         return diag
 
     def y0(self, settle: bool = True, cage_offset=(0.0, 0.0, 0.0), cage_angle: float = 0.0):
@@ -178,7 +178,7 @@ class GyroModel:
         def net(h):
             yy = y.copy()
             yy[0:3] = y[0:3] + h * g_hat
-            _kernel(0.0, yy, ps, Z, ydot, diag)
+            kernel(0.0, yy, ps, Z, ydot, diag)
             # net force against gravity: contacts minus weight (Frame c -> Frame I: A^T; cage at rest)
             return -float(g_hat @ (A.T @ ydot[6:9])) * ps[_P_MC]
 
@@ -199,7 +199,7 @@ class GyroModel:
                         yy = y.copy()
                         yy[0:3] = y[0:3] + h * g_hat
                         diag[:] = 0.0
-                        _kernel(0.0, yy, p0, Z, ydot, diag)
+                        kernel(0.0, yy, p0, Z, ydot, diag)
                         return diag[:, 0].max() > 0.0
 
                     lo, up = 0.0, hi
@@ -243,7 +243,7 @@ def build_model(case, *, creep_speed: float = 2e-5, cage_slip_speed: float = 1e-
     Dp, k = c.pocket_diameter, c.pocket_depth
     if not (0.5 * D < k <= 0.5 * Dp * (1.0 + 1e-9)):
         raise CaseError(case.source, "cage.pocket_depth",
-                        f"pocket depth k = {k*1e3:g} mm must lie between D/2 = {D*500:g} mm and D_p/2 = {Dp*500:g} mm (seed 000 Sec. 3.2)")
+                        f"pocket depth k = {k*1e3:g} mm must lie between D/2 = {D*500:g} mm and D_p/2 = {Dp*500:g} mm (Jiang et al. 2014 Sec. 3.2)")
     st = static_friction(case)
     e, nabla = pocket_geometry(D, Dp, k)
     K = ball_cage_stiffness(D, Dp, m.ball.elastic_modulus, m.ball.poisson_ratio, m.cage.elastic_modulus, m.cage.poisson_ratio)
@@ -435,7 +435,7 @@ def _add_start_ensemble(ds, case, n: int, duration: float | None = None, **kw):
     """``ds`` with the start ensemble of ``n`` starts (``sfmc_ensemble`` ...); see :func:`simulate`.
 
     Each start runs one oscillation period, or the run's ``duration`` if shorter (``--duration`` applies to the
-    ensemble too; issue 27).  The offset-0 start of a constant-rate run of that same length is the run itself:
+    ensemble too).  The offset-0 start of a constant-rate run of that same length is the run itself:
     its SFMC is reused, not computed a second time."""
     offsets = start_offsets(n)
     period = float(case.operating.oscillation_period)
@@ -498,7 +498,7 @@ def _simulate_one(case, duration=None, progress: bool = False, *, fine_interval:
     if progress:  # say so before a first-run compilation (hsbearing.jit)
         from hsbearing.jit import compile_notice
 
-        compile_notice((_kernel,), "the gyro model", seconds=5)
+        compile_notice((kernel,), "the gyro model", seconds=5)
     model = build_model(case, **kw)
     sim = case.simulation
     T_end = float(duration if duration is not None else sim.duration)

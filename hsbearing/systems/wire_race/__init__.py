@@ -1,4 +1,4 @@
-"""The wire-race bearing (seed 001, Shan et al. 2010): starting torque against preload (``hsbearing preload``,
+"""The wire-race bearing (Shan et al. 2010): starting torque against preload (``hsbearing preload``,
 :mod:`hsbearing.systems.wire_race.model`), its figure (:mod:`hsbearing.systems.wire_race.figures`); the
 closed forms are :mod:`hsbearing.models.friction.wire_race`.  No dynamic model."""
 
@@ -12,7 +12,7 @@ __all__ = ["SYSTEM", "friction_command", "preload_command", "archive_kind"]
 
 
 def friction_command(case, args) -> int:
-    """``hsbearing friction CASE``: the seed 001 starting torque at the case preload."""
+    """``hsbearing friction CASE``: the Shan et al. 2010 starting torque at the case preload."""
     from hsbearing.errors import CaseError
     from hsbearing.results import write_netcdf
 
@@ -23,7 +23,7 @@ def friction_command(case, args) -> int:
     if delta is None:
         raise CaseError(case.source, "operating.preload", "the starting torque needs the preload")
     ds = wire_race.preload_sweep(case, np.array([delta]))
-    print(f"case {case.name}: wire-race bearing, starting torque at the case preload (seed 001 Eqs. 4, 11)")
+    print(f"case {case.name}: wire-race bearing, starting torque at the case preload (Shan et al. 2010 Eqs. 4, 11)")
     for line in wire_race._format_table(ds):
         print(line)
     print(f"note: preload sweep and target window: hsbearing preload {case.name}")
@@ -65,7 +65,7 @@ def _register_outputs():
 
 SYSTEM = System(
     name="wire_race",
-    description="wire-race bearing: preload vs starting torque (seed 001)",
+    description="wire-race bearing: preload vs starting torque (Shan et al. 2010)",
     friction=friction_command, archive_kind=archive_kind, figures={"preload": _plot_preload},
     register_outputs=_register_outputs,
 )

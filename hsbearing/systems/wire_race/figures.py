@@ -1,4 +1,4 @@
-"""Figure of an ``hsbearing preload`` archive (dim ``preload``): starting torque and contact forces (seed 001)."""
+"""Figure of an ``hsbearing preload`` archive (dim ``preload``): starting torque and contact forces (Shan et al. 2010)."""
 
 from __future__ import annotations
 
@@ -7,13 +7,13 @@ from pathlib import Path
 import numpy as np
 
 from hsbearing.plotting import common  # common.save_figure: one place to capture every figure
-from hsbearing.plotting.common import ISO76_BALL_PRESSURE, _figure, _vals
+from hsbearing.plotting.common import ISO76_BALL_PRESSURE, _figure, vals
 
 __all__ = ['plot_preload']
 
 
 def plot_preload(ds, path) -> Path:
-    """Figure of ``hsbearing preload`` (wire-race bearing, seed 001) to ``path`` (PNG).
+    """Figure of ``hsbearing preload`` (wire-race bearing, Shan et al. 2010) to ``path`` (PNG).
 
     (a) starting torque against the preload: rolling-resistance torque M_sc (Eq. 4) and M_s = M_sc + M_u
     (Eq. 11), with the target-torque band and the preload window when the archive has them;
@@ -23,11 +23,11 @@ def plot_preload(ds, path) -> Path:
     path = Path(path)
     fig = _figure((12, 4.9))
     ax1, ax2 = fig.subplots(1, 2)
-    um = _vals(ds, "preload", 1e6)
+    um = vals(ds, "preload", 1e6)
     fig.suptitle(f"{ds.attrs.get('case_name', 'wire race')}: starting torque and contact pressure against the preload "
-                 "(seed 001 model)", fontsize=11)
-    ax1.plot(um, _vals(ds, "rolling_torque"), "-", color="C0", label="$M_{sc}$ rolling resistance (Eq. 4)")
-    ax1.plot(um, _vals(ds, "torque"), "--", color="C1", label="$M_s = M_{sc} + M_u$ (Eq. 11)")
+                 "(Shan et al. 2010 model)", fontsize=11)
+    ax1.plot(um, vals(ds, "rolling_torque"), "-", color="C0", label="$M_{sc}$ rolling resistance (Eq. 4)")
+    ax1.plot(um, vals(ds, "torque"), "--", color="C1", label="$M_s = M_{sc} + M_u$ (Eq. 11)")
     tt, win = ds.attrs.get("target_torque"), ds.attrs.get("preload_window")
     if tt is not None and np.size(tt) == 2:
         ax1.axhspan(float(np.ravel(tt)[0]), float(np.ravel(tt)[1]), color="0.85", zorder=0,
@@ -44,7 +44,7 @@ def plot_preload(ds, path) -> Path:
     for j in range(1, 5):
         name = f"p_max{j}"
         if name in ds:
-            p = _vals(ds, name, 1e-9)
+            p = vals(ds, name, 1e-9)
             pmax = np.maximum(pmax, p)
             ax2.plot(um, p, lw=1.1, ls=("-", "--", "-.", ":")[j - 1], label=f"contact {j}: $P_{{0{j}}}$")
     lim = ISO76_BALL_PRESSURE * 1e-9

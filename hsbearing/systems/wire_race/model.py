@@ -1,4 +1,4 @@
-"""The wire-race bearing system (seed 001, Shan et al. 2010): contacts of a case over preloads, the preload
+"""The wire-race bearing system (Shan et al. 2010): contacts of a case over preloads, the preload
 sweep, the fit of the rolling resistance zeta and M_u, the preload window for a target starting torque,
 ``hsbearing preload`` and its figure.  The closed forms are :mod:`hsbearing.models.friction.wire_race`.
 """
@@ -53,16 +53,16 @@ DEFAULT_PRELOADS = np.linspace(10e-6, 160e-6, 31)
 
 # ----------------------------------------------------------------------------- output variables
 
-register("preload", ("preload",), "m", "preload magnitude delta (shim grinding), seed 001 Eq. 10")
+register("preload", ("preload",), "m", "preload magnitude delta (shim grinding), Shan et al. 2010 Eq. 10")
 for _j, _where in ((1, "inner wire, diagonal 1-3"), (2, "inner wire, diagonal 2-4"),
                    (3, "outer wire, diagonal 1-3"), (4, "outer wire, diagonal 2-4")):
-    register(f"F{_j}", ("preload",), "N", f"ball-wire normal contact force F_{_j} ({_where}), seed 001 Eqs. 7-10")
+    register(f"F{_j}", ("preload",), "N", f"ball-wire normal contact force F_{_j} ({_where}), Shan et al. 2010 Eqs. 7-10")
     register(f"delta{_j}", ("preload",), "m", f"ball-wire Hertz contact deformation delta_{_j} ({_where})")
     register(f"p_max{_j}", ("preload",), "Pa", f"maximum Hertz pressure P_0{_j} at contact {_j} ({_where})")
-register("torque", ("preload",), "N*m", "starting torque M_s = rolling torque + M_u (seed 001 Eqs. 4 and 11)")
-register("rolling_torque", ("preload",), "N*m", "rolling-resistance bearing torque M_sc = zeta Z sum F_j cos(alpha) (seed 001 Eq. 4)")
-register("contact_stiffness_inner", (), "N*m**-1.5", "ball-inner wire load-deflection constant K_i, F = K_i delta^1.5 (seed 001 Eq. 5)")
-register("contact_stiffness_outer", (), "N*m**-1.5", "ball-outer wire load-deflection constant K_o, F = K_o delta^1.5 (seed 001 Eq. 6)")
+register("torque", ("preload",), "N*m", "starting torque M_s = rolling torque + M_u (Shan et al. 2010 Eqs. 4 and 11)")
+register("rolling_torque", ("preload",), "N*m", "rolling-resistance bearing torque M_sc = zeta Z sum F_j cos(alpha) (Shan et al. 2010 Eq. 4)")
+register("contact_stiffness_inner", (), "N*m**-1.5", "ball-inner wire load-deflection constant K_i, F = K_i delta^1.5 (Shan et al. 2010 Eq. 5)")
+register("contact_stiffness_outer", (), "N*m**-1.5", "ball-outer wire load-deflection constant K_o, F = K_o delta^1.5 (Shan et al. 2010 Eq. 6)")
 
 
 @dataclass(frozen=True)
@@ -252,7 +252,7 @@ def preload_sweep(case, preloads=None, *, stiffness=None) -> xr.Dataset:
     data["contact_stiffness_outer"] = np.float64(c.K_o)
     n_unloaded = int(np.sum(c.F1 == 0.0))
     attrs = standard_attrs(
-        case, "ok", title="hsbearing wire-race preload sweep (seed 001)", model="shan2010_wire_race",
+        case, "ok", title="hsbearing wire-race preload sweep (Shan et al. 2010)", model="shan2010_wire_race",
         stiffness_source=c.stiffness_source, rolling_resistance=p["zeta"], unconsidered_torque=p["M_u"],
         framework_weight=p["G_o"], contact_angle=p["alpha"], ball_count=p["Z"],
         wire_geometry="round wire" if p["f_w"] is None else f"ground track, conformity {p['f_w']}",
@@ -262,8 +262,7 @@ def preload_sweep(case, preloads=None, *, stiffness=None) -> xr.Dataset:
 
 
 def _window_pressure_caveat(ds, p_all, window) -> str:
-    """The caveat on the preload-window line when the maximum contact pressure there exceeds ISO 76's 4.2 GPa
-    (issue 27: the seed 001 window lies at 10.7-11.0 GPa and the line said nothing)."""
+    """The caveat on the preload-window line when the maximum contact pressure there exceeds ISO 76's 4.2 GPa (the Shan et al. 2010 window lies at 10.7-11.0 GPa and the line said nothing)."""
     from hsbearing.display import ISO76_BALL_PRESSURE
 
     x = np.asarray(ds["preload"].values, dtype=float)
@@ -335,7 +334,7 @@ def plot_torque_vs_preload(ds: xr.Dataset, path, measured: dict | None = None, p
                    label=f"our window {window[0] * 1e6:.0f}-{window[1] * 1e6:.0f} $\\mu$m")
     ax.set_xlabel("preload magnitude $\\delta$ [$\\mu$m]")
     ax.set_ylabel("bearing torque [N m]")
-    ax.set_title(ds.attrs.get("case_name", "wire race") + ": torque vs preload (cf. seed 001 Fig. 9a)", fontsize=9)
+    ax.set_title(ds.attrs.get("case_name", "wire race") + ": torque vs preload (cf. Shan et al. 2010 Fig. 9a)", fontsize=9)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7, loc="upper left")
     fig.tight_layout()

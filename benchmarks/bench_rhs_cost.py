@@ -1,0 +1,85 @@
+"""Cost of the compiled right-hand side: best-of timings, per state, and the split by term.
+
+Usage (run it in each checkout to compare, in one sitting)::
+
+    .venv/bin/python benchmarks/bench_rhs_cost.py [--runs 200] [--calls 100] [--no-split] [--no-states]
+
+Prints, for the default case (zhang2016): the bare ``kernel.rhs_kernel`` and the Python wrapper
+``DynamicModel.rhs`` at the initial state, microseconds per call as the best of ``--runs`` runs of ``--calls``
+calls (short runs: on a loaded machine some of them run a whole time slice, so the minimum is stable where the
+mean of one long run is not); over the regression trajectory states of tests/data/regression/kernel_rhs_states.npz
+(median, min, max); and the split at the last of those states by variants of the parameter record: without the
+pocket film (``eta_film`` = 0), without friction (no traction quadrature, no pocket friction), without both.
+The load average is printed beside the numbers.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import time
+from pathlib import Path
+
+import numpy as np
+
+STATES = Path(__file__).resolve().parents[1] / "tests" / "data" / "regression" / "kernel_rhs_states.npz"
+
+
+def best_us(fn, runs: int, calls: int) -> float:
+    """Best of ``runs`` runs of ``calls`` calls of ``fn``: microseconds per call."""
+    fn()
+    best = float("inf")
+    for _ in range(runs):
+        t0 = time.perf_counter()
+        for _ in range(calls):
+            fn()
+        best = min(best, (time.perf_counter() - t0) / calls)
+    return best * 1e6
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--runs", type=int, default=200)
+    ap.add_argument("--calls", type=int, default=100)
+    ap.add_argument("--no-split", action="store_true")
+    ap.add_argument("--no-states", action="store_true")
+    a = ap.parse_args(argv)
+    import hsbearing
+    from hsbearing.models.ball_bearing import kernel as K
+    from hsbearing.models.ball_bearing import kernel_io as kio
+    from hsbearing.systems.angular_contact.dynamics import build_model
+
+    print(f"hsbearing from {Path(hsbearing.__file__).parent}; load average at start: "
+          + " ".join(f"{x:.2f}" for x in os.getloadavg()))
+    m = build_model(hsbearing.load_case("zhang2016"))
+    yd = np.empty(m.y0.size)
+
+    def kernel(y, P):
+        return lambda: K.rhs_kernel(y, P, m.qu, m.qw, yd, m._contrib, m._aux, False, m._csum, m._gaux)
+
+    y0 = m.y0.copy()
+    print(f"y0: bare kernel {best_us(kernel(y0, m.P), a.runs, a.calls):.2f} us, Python wrapper "
+          f"{best_us(lambda: m.rhs(0.0, y0, yd), a.runs, a.calls):.2f} us per call")
+    Y = np.load(STATES)["y_default"]
+    if not a.no_states:
+        ts = np.array([best_us(kernel(y, m.P), max(a.runs // 5, 1), max(a.calls // 2, 1)) for y in Y])
+        print(f"{len(Y)} regression states: median {np.median(ts):.1f} us (min {ts.min():.1f}, max {ts.max():.1f})")
+    if not a.no_split:
+        y = Y[-1].copy()
+        variants = {"full": {}, "no pocket film": {"eta_film": 0.0}, "no friction": {"friction": False},
+                    "neither": {"eta_film": 0.0, "friction": False}}
+        t = {}
+        for name, over in variants.items():
+            P = m.P.copy()
+            for k, v in over.items():
+                kio.set_value(P, k, v)
+            t[name] = best_us(kernel(y, P), a.runs, a.calls)
+        print(f"split at the last regression state: full {t['full']:.2f} us; pocket film "
+              f"{t['full'] - t['no pocket film']:.2f}, friction (traction quadrature + pocket friction) "
+              f"{t['full'] - t['no friction']:.2f}, the rest {t['neither']:.2f} us")
+    print("load average at end: " + " ".join(f"{x:.2f}" for x in os.getloadavg()))
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

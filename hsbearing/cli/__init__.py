@@ -1,0 +1,76 @@
+"""The ``hsbearing`` command: a thin layer over the library (the same functions, the same names).
+
+Exit codes: 0 success; 2 bad input (one line naming the file and the key,
+nothing written); 1 numerical failure (partial result kept, status says why).
+
+By concern: ``common`` (the case of a command line, default output names, the printed run summary),
+``commands`` (one ``cmd_*`` per subcommand), ``parser`` (the argparse tree), ``oils`` (``hsbearing oils``)
+and :func:`main` here (exit codes).
+"""
+
+from __future__ import annotations
+
+import sys
+
+from hsbearing.case import CaseError
+from hsbearing.cli.commands import cmd_thermal
+from hsbearing.cli.common import case_from_args
+from hsbearing.cli.parser import build_parser
+from hsbearing.errors import OutputWriteError, SolverError
+
+__all__ = ["main", "build_parser", "case_from_args", "cmd_thermal"]
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    if not getattr(args, "func", None):  # bare `hsbearing`: say what is missing, on one line
+        print("hsbearing: error: no command given (commands: cases, check, run, quasistatic, sweep, map, study, "
+              "friction, life, preload, plot; see 'hsbearing --help')", file=sys.stderr)
+        return 2
+    try:
+        rc = int(args.func(args) or 0)
+        sys.stdout.flush()  # a closed pipe shows here (BrokenPipeError below), not in the interpreter's exit
+        return rc
+    except CaseError as exc:
+        print(f"hsbearing: error: {exc}", file=sys.stderr)
+        return 2
+    except OutputWriteError as exc:  # computed, but the final write failed: where the result went, exit 1
+        print(f"hsbearing: error: {exc}", file=sys.stderr)
+        return 1
+    except SolverError as exc:
+        print(f"hsbearing: numerical failure: {exc}", file=sys.stderr)
+        return 1
+    except KeyboardInterrupt:
+        print("hsbearing: interrupted", file=sys.stderr)
+        return 130
+    except (ArithmeticError, _linalg_error()) as exc:  # a singular matrix / overflow deep in a model: one line, exit 1
+        print(f"hsbearing: numerical failure: {type(exc).__name__}: {str(exc).splitlines()[0] if str(exc) else ''} "
+              "(the inputs are valid but the model cannot solve them; check the geometry and loads)", file=sys.stderr)
+        return 1
+    except BrokenPipeError:
+        # the reader of stdout went away (``hsbearing check ... | head -1``): not an error of ours.
+        # Point stdout at /dev/null so that the interpreter's final flush does not complain.
+        _silence_stdout()
+        return 0
+
+
+def _linalg_error() -> type:
+    import numpy as np
+
+    return np.linalg.LinAlgError
+
+
+def _silence_stdout() -> None:
+    import os
+
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        os.close(devnull)
+    except (OSError, ValueError, AttributeError):  # no real stdout (in-process use): nothing to silence
+        pass
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

@@ -1,0 +1,359 @@
+"""What a ball bearing costs, from a case: fatigue life (ISO 281, ISO/TS 16281) and quasi-static power loss.
+
+:func:`life` -- ISO 281 basic rating life L_10 and modified life L_10m with the
+dynamic equivalent load, and the ISO/TS 16281 reference life from the actual
+quasi-static contact loads (with and without the ball inertia effects of speed).
+The formulas are in :mod:`hsbearing.models.life` (pure, cited); this module only
+reads the case and the quasi-static solution.  docs/life.md.
+
+:func:`quasi_static_power_loss` -- power loss by source at the quasi-static state,
+with the dynamic model's own contact functions (docs/life.md, "friction").
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from hsbearing.models.friction import skf2004
+from hsbearing.results import make_dataset, register, standard_attrs
+
+__all__ = ["life", "life_lines", "quasi_static_power_loss", "friction_angular_contact", "life_cli"]
+
+for _n, _d, _u, _l in [
+    ("dynamic_load_rating", (), "N", "basic dynamic radial load rating C_r (ISO 281 5.1.1, or the case's catalogue value)"),
+    ("static_load_rating", (), "N", "basic static radial load rating C_0r (ISO 76, or the case's catalogue value)"),
+    ("equivalent_load", (), "N", "dynamic equivalent radial load P_r = X F_r + Y F_a (ISO 281 5.2)"),
+    ("basic_rating_life", (), "1e6 rev", "ISO 281 basic rating life L_10 = (C_r/P_r)^3"),
+    ("viscosity_ratio", (), "1", "ISO 281 viscosity ratio kappa = nu / nu_1"),
+    ("fatigue_load_limit", (), "N", "fatigue load limit C_u ~ C_0/22 (ISO 281 Annex B)"),
+    ("life_modification_factor", (), "1", "ISO 281 life modification factor a_ISO"),
+    ("modified_rating_life", (), "1e6 rev", "ISO 281 modified rating life L_10m = a_ISO L_10"),
+    ("reference_rating_life", (), "1e6 rev", "ISO/TS 16281 basic reference rating life L_10r from the quasi-static contact loads at speed"),
+    ("reference_rating_life_static", (), "1e6 rev", "ISO/TS 16281 L_10r from the static contact loads (no centrifugal/gyroscopic effects)"),
+    ("modified_reference_rating_life", (), "1e6 rev", "ISO/TS 16281 modified reference rating life a_ISO(P_ref) L_10r"),
+    ("inner_raceway_rating", ("ball",), "N", "ISO/TS 16281 basic dynamic load rating of the inner raceway contact Q_ci at each ball's contact angle"),
+    ("outer_raceway_rating", ("ball",), "N", "ISO/TS 16281 basic dynamic load rating of the outer raceway contact Q_ce at each ball's contact angle"),
+]:
+    register(_n, _d, _u, _l)
+
+
+def rpm(w):
+    return w * 60.0 / (2.0 * math.pi)
+
+
+def _kinematic_viscosity(case):
+    """Operating kinematic viscosity nu [m^2/s]: [lubricant] kinematic_viscosity, else eta(T) / density."""
+    lub = case.lubricant
+    if lub.kinematic_viscosity is not None:
+        return lub.kinematic_viscosity, "lubricant.kinematic_viscosity"
+    from hsbearing.models import ehl
+
+    return ehl.lubricant_parameters(case)["eta"] / lub.density, "eta(T) of the oil / lubricant.density"
+
+
+def life(case, *, quasistatic: bool = True):
+    """ISO 281 and ISO/TS 16281 lives of a radial ball-bearing case (angular_contact, deep_groove).
+
+    Returns a Dataset (scalars; per-ball raceway ratings) with the registered
+    names above and attrs listing the inputs used (X, Y, e, nu, n) and any
+    range notes (kappa outside 0.1..4 clipped).
+    """
+    from hsbearing.case import CaseError
+    from hsbearing.case import as_case as _as_case
+    from hsbearing.models import geometry
+    from hsbearing.models import life as L
+
+    case = _as_case(case)
+    if case.system not in ("angular_contact", "deep_groove"):
+        raise CaseError(case.source, "case.system", f"the ISO 281 / ISO/TS 16281 life is for radial ball bearings "
+                        f"(angular_contact, deep_groove), not {case.system!r}")
+    g = geometry.derive(case)
+    b, op, lub = case.bearing, case.operating, case.lubricant
+    alpha = 0.0 if case.system == "deep_groove" else g.alpha0
+    notes = []
+    C = b.dynamic_load_rating or L.basic_dynamic_load_rating(g.Z, g.D, g.dm, alpha)
+    C0 = case.friction.static_load_rating or L.basic_static_load_rating(g.Z, g.D, g.dm, alpha)
+    Fa, Fr = abs(op.axial_load), math.hypot(op.radial_load, op.radial_load_z)
+    if Fa == 0 and Fr == 0:
+        raise CaseError(case.source, "operating.axial_load", "the rating life needs a load (axial or radial)")
+    try:
+        X, Y, e = L.equivalent_load_factors(Fr, Fa, alpha, C0r=C0, Z=g.Z, Dw=g.D, Dpw=g.dm)
+    except ValueError as exc:
+        raise CaseError(case.source, "bearing.contact_angle", str(exc)) from None
+    P = L.dynamic_equivalent_radial_load(Fr, Fa, X, Y)
+    L10 = L.basic_rating_life(C, P)
+    n_rel = abs(rpm(op.inner_speed - op.outer_speed))
+    nu, nu_src = _kinematic_viscosity(case)
+    kappa = L.viscosity_ratio(nu, n_rel, g.dm) if n_rel > 0 else float("nan")
+    if math.isfinite(kappa) and not 0.1 <= kappa <= 4.0:
+        notes.append(f"kappa = {kappa:.3g} outside ISO 281's 0.1..4: a_ISO evaluated at {min(max(kappa, 0.1), 4.0):g}")
+    Cu = L.fatigue_load_limit(C0, g.dm)
+    eC = lub.contamination_factor
+    a_iso = L.life_modification_factor(kappa, eC, Cu, P) if math.isfinite(kappa) else float("nan")
+    data = {
+        "dynamic_load_rating": C, "static_load_rating": C0, "equivalent_load": P, "basic_rating_life": L10,
+        "viscosity_ratio": kappa, "fatigue_load_limit": Cu, "life_modification_factor": a_iso,
+        "modified_rating_life": L.modified_rating_life(L10, a_iso),
+    }
+    coords = {}
+    warns = []
+    if quasistatic:
+        from hsbearing.systems.angular_contact import contact_state
+        from hsbearing.systems.angular_contact import quasistatic as qs
+
+        inner_rot = abs(op.inner_speed) >= abs(op.outer_speed)  # the load is fixed in space (shaft/housing loads)
+        out = {}
+        for key, inertia in (("reference_rating_life", True), ("reference_rating_life_static", False)):
+            ds = qs.solve_case(case, centrifugal=inertia, gyroscopic=inertia)
+            Qci, _ = L.raceway_contact_ratings(g.D, g.dm, ds["inner_contact_angle"].values, g.Z, g.fi, g.fo)
+            _, Qce = L.raceway_contact_ratings(g.D, g.dm, ds["outer_contact_angle"].values, g.Z, g.fi, g.fo)
+            out[key] = L.reference_rating_life(ds["inner_contact_load"].values, ds["outer_contact_load"].values,
+                                               Qci, Qce, inner_rotating=inner_rot)
+            if inertia:
+                data["inner_raceway_rating"], data["outer_raceway_rating"] = Qci, Qce
+                warns = contact_state.warnings_for(ds.assign(**{k: ("ball", v) for k, v in
+                                                                contact_state.quasi_static_contact_state(case, ds).items()}), case)
+        data.update(out)
+        L10r = out["reference_rating_life"]
+        P_ref = C * L10r ** (-1.0 / 3.0)  # the equivalent load that gives L_10r with the bearing's C_r
+        a_ref = L.life_modification_factor(kappa, eC, Cu, P_ref) if math.isfinite(kappa) else float("nan")
+        data["modified_reference_rating_life"] = a_ref * L10r
+        coords = {"ball": np.arange(g.Z)}
+    attrs = standard_attrs(
+        case, "ok", title="hsbearing rating life (ISO 281:2007, ISO/TS 16281:2008)",
+        load_factor_X=X, load_factor_Y=Y, load_factor_e=e, relative_speed_rpm=n_rel,
+        kinematic_viscosity_mm2_s=nu * 1e6, kinematic_viscosity_source=nu_src, contamination_factor=eC,
+        contact_angle_deg=math.degrees(alpha),
+        dynamic_load_rating_source="bearing.dynamic_load_rating" if b.dynamic_load_rating else "ISO 281 5.1.1 from the geometry",
+        static_load_rating_source="friction.static_load_rating" if case.friction.static_load_rating else "ISO 76 from the geometry",
+        notes="; ".join(notes) or "none",
+        warnings=" | ".join(warns) if warns else "none",
+    )
+    return make_dataset(data, coords=coords, attrs=attrs)
+
+
+def life_lines(ds) -> list[str]:
+    """Printed summary of :func:`life` (lives in 10^6 rev and hours at the case speed)."""
+    n = float(ds.attrs.get("relative_speed_rpm", 0.0))
+
+    def h(x):
+        from hsbearing.models.life import life_in_hours
+
+        return f"{life_in_hours(float(x), n):.4g} h" if n > 0 and math.isfinite(float(x)) else "n/a (no rotation)"
+
+    def g(x, fmt: str, why: str = "no rotation: no lubricant film, kappa is not defined") -> str:
+        x = float(x)
+        return format(x, fmt) if math.isfinite(x) else f"n/a ({why})"
+
+    a = ds.attrs
+    lines = [
+        f"rating life (ISO 281:2007; ISO/TS 16281:2008), n = {n:.6g} r/min:",
+        f"  C_r = {float(ds.dynamic_load_rating) / 1e3:.4g} kN ({a['dynamic_load_rating_source']}), "
+        f"C_0r = {float(ds.static_load_rating) / 1e3:.4g} kN ({a['static_load_rating_source']})",
+        f"  P_r = X F_r + Y F_a = {float(ds.equivalent_load):.5g} N (X = {a['load_factor_X']:.3g}, Y = {a['load_factor_Y']:.3g}, "
+        f"e = {a['load_factor_e']:.3g})",
+        f"  L_10  = {float(ds.basic_rating_life):.4g} 10^6 rev = {h(ds.basic_rating_life)}",
+        f"  kappa = {g(ds.viscosity_ratio, '.3g')} (nu = {a['kinematic_viscosity_mm2_s']:.3g} mm^2/s), e_C = {a['contamination_factor']:g}, "
+        f"C_u = {float(ds.fatigue_load_limit):.4g} N, a_ISO = {g(ds.life_modification_factor, '.3g', 'needs kappa')}",
+        f"  L_10m = {g(ds.modified_rating_life, '.4g', 'needs a_ISO')} 10^6 rev = {h(ds.modified_rating_life)}",
+    ]
+    if "reference_rating_life" in ds:
+        lines += [
+            f"  ISO/TS 16281 L_10r from the quasi-static contact loads: {float(ds.reference_rating_life):.4g} 10^6 rev "
+            f"= {h(ds.reference_rating_life)} (static loads, no ball inertia: {float(ds.reference_rating_life_static):.4g} 10^6 rev)",
+            f"  modified reference life a_ISO L_10r = {g(ds.modified_reference_rating_life, '.4g', 'needs a_ISO')} 10^6 rev "
+            f"= {h(ds.modified_reference_rating_life)}",
+        ]
+    if a.get("notes", "none") != "none":
+        lines.append(f"  note: {a['notes']}")
+    if a.get("warnings", "none") != "none":
+        lines += [f"warning: {w}" for w in str(a["warnings"]).split(" | ")]
+    return lines
+
+
+def life_cli(args) -> int:
+    """``hsbearing life CASE [--set k=v] [-o OUT.nc]``: ISO 281 and ISO/TS 16281 lives (radial ball bearings)."""
+    from hsbearing.case import load_case, parse_sets
+    from hsbearing.results import check_archive_name, write_netcdf
+
+    case = load_case(args.case, **parse_sets(getattr(args, "set", None)))
+    out = getattr(args, "output", None)
+    check_archive_name(out)
+    ds = life(case)
+    print(f"case {case.name}: Fa = {abs(case.operating.axial_load):g} N, Fr = "
+          f"{math.hypot(case.operating.radial_load, case.operating.radial_load_z):g} N")
+    print("\n".join(life_lines(ds)))
+    if out:
+        write_netcdf(ds, out)
+        print(f"archive: {out}")
+    return 0
+
+
+def quasi_static_power_loss(case, speed=None, with_state: bool = False):
+    """Power loss by source [W] at the quasi-static state, with the dynamic model's contact functions.
+
+    The dynamic model is built from the case (:func:`hsbearing.systems.angular_contact.dynamics.build_model`); its
+    initial state is the quasi-static equilibrium (race-control kinematics, all balls at the
+    cage speed, cage centred in its land, balls centred in their pockets).  The compiled
+    kernel's per-source dissipation (:mod:`hsbearing.systems.angular_contact.balances`) is evaluated at that one state:
+    race traction (rolling and transverse slip, spin, from the traction law of the oil), EHL
+    rolling couple, drag, and the guide-land film of the centred cage.  The pocket sources are
+    zero there (no ball touches its pocket in the quasi-static state) and contact damping is
+    zero (no approach rate).  Needs the dynamic model's data (outer-ring guided cage, land).
+
+    Parameters
+    ----------
+    case : Case.  speed : inner-ring speed [rad/s] (None: the case's).
+
+    Returns
+    -------
+    dict source -> W, plus ``power_loss`` [W], ``drive_torque`` [N m] and ``friction_torque`` =
+    power_loss / |omega_i - omega_o| [N m].
+    """
+    from hsbearing.systems.angular_contact.balances import SOURCES, power_variables
+    from hsbearing.systems.angular_contact.dynamics import build_model
+
+    if speed is not None:
+        case = case.with_overrides(**{"operating.inner_speed": f"{float(speed)} rad/s"})
+    m = build_model(case)
+    aux, gaux = m.outputs(m.y0)
+    pv = power_variables(aux[None], gaux[None])
+    out = {s: float(pv[f"power_loss_{s}"][0]) for s in SOURCES}
+    out["power_loss"] = float(pv["power_loss"][0])
+    out["drive_torque"] = float(pv["drive_torque"][0])
+    w = abs(case.operating.inner_speed - case.operating.outer_speed)
+    out["friction_torque"] = out["power_loss"] / w if w > 0 else float("nan")
+    for key in ("cavity_oil_fraction", "drag_reynolds_number", "drag_coefficient"):  # the drag law's inputs (build_model)
+        out[key] = float(m.info[key])
+    if with_state:  # the quasi-static Dataset the state comes from, and the case at that speed
+        out["state"], out["case"] = m.info["quasistatic"], case
+    return out
+
+
+# ----------------------------------------------------------------------------- hsbearing friction CASE (every ball bearing)
+
+NOTE_QS = ("quasi-static model: (ours) power lost at the quasi-static state with the dynamic model's contact laws: race "
+            "traction (rolling, transverse slip and spin, the oil's traction law), EHL rolling couple, the pocket film of the "
+            "centred balls (entraining shear of the turning ball in its pocket), guide-land film of the centred cage, ball "
+            "drag in the air-oil mixture (cavity oil fraction above); excludes pocket boundary friction and contact damping "
+            "(zero at that state), the cage whirl, seals (none modelled) and churning/jet-pumping of the oil beyond ball drag")
+NOTE_SKF = ("SKF 2004 model: catalogue frictional moment M = M_rr + M_sl + M_seal + M_drag (SKF General Catalogue 6000 EN, "
+             "'Friction'), an empirical fit for the bearing series at mu_EHL (friction.ehl_coefficient, default 0.05: the "
+             "catalogue's mineral-oil value, 0.04 for synthetic oils); M_seal = 0 (open "
+             "bearing), M_drag only for an oil bath (V_M from the catalogue diagram); independent of this package's traction law")
+
+#: ours -> the SKF terms: which of our sources sit with which SKF term (docs/power_loss.md, "SKF 2004 side by side")
+OURS_AS_SKF = {
+    "rolling": ("ehl_rolling", "contact_damping"),
+    "sliding": ("race_traction", "pocket_film", "pocket_boundary", "guide_land"),
+    "drag": ("drag",),
+    "seal": (),
+}
+
+#: Surrogate of the SKF speed ratings for the validity warning [mm r/min].  Read (SKF, "The SKF model for calculating
+#: the frictional moment", list of conditions at its start; scribd copy of the catalogue section): the model holds for
+#: "constant speed, below the speed ratings" and a "bearing [that] does not exceed the limits of misalignment".  The
+#: speed ratings are the per-bearing reference and limiting speeds of the product tables, which could not be read
+#: here, and a case carries none: n d_m above 1e6 is flagged as a stand-in (ASSUMED, not from the tables; single-row
+#: angular contact ball bearings are rated at a few 1e5 to ~1e6 mm r/min with oil).  The warning says so.
+SKF_NDM_LIMIT = 1.0e6
+
+
+def skf_validity_warnings(case, n_rpm) -> list[str]:
+    """Where the SKF 2004 model is used outside its stated range (speed / n d_m, lubrication, oil)."""
+    out = []
+    dm_mm = case.bearing.pitch_diameter * 1e3
+    ndm = float(np.max(np.abs(n_rpm))) * dm_mm
+    if ndm > SKF_NDM_LIMIT:
+        out.append(f"SKF 2004 model likely outside its range: n d_m = {ndm:.3g} mm r/min above {SKF_NDM_LIMIT:.0e} (the "
+                   "model is stated for 'constant speed, below the speed ratings' -- SKF, 'The SKF model for calculating "
+                   "the frictional moment'; the bearing's own reference/limiting speeds are not in the case, the 1e6 "
+                   "stand-in is assumed); its G_rr, G_sl were not fitted there: order of magnitude only")
+    lub = case.lubricant.lubrication
+    if lub not in ("oil_jet", "oil_bath", "oil_air", "grease"):
+        out.append(f"SKF 2004 model outside its range: lubrication = {lub} (the model is for grease, oil bath, oil-air "
+                   "or oil jet lubrication)")
+    return out
+
+
+#: Ball Reynolds number above which the drag warning is given: from 2e5 a smooth sphere's C_D (standard drag
+#: curve, models/ball_bearing/drag.py [4]) enters its crisis, and free-stream turbulence moves the crisis lower.
+DRAG_CRISIS_RE = 2.0e5
+
+
+def _register_qs_power():
+    register("speed", ("speed",), "rad/s", "inner-ring rotational speed n")  # as hsbearing friction of a deep-groove case
+    from hsbearing.systems.angular_contact.balances import SOURCES
+
+    register("qs_power_loss", ("speed",), "W", "power loss at the quasi-static state, sum of the qs_power_loss_<source>")
+    register("qs_friction_torque", ("speed",), "N*m", "friction torque of the quasi-static power loss, qs_power_loss / |omega_i - omega_o|")
+    register("cavity_oil_fraction", ("speed",), "1", "oil volume fraction of the air-oil mixture the ball drag uses "
+             "(lubricant.oil_volume_fraction, or Parker's correlation from lubricant.oil_flow_rate)")
+    register("drag_reynolds_number", ("speed",), "1", "Reynolds number of the ball in the air-oil mixture, "
+             "rho_e v D / mu_e at the cage orbital speed of the quasi-static state")
+    register("drag_coefficient", ("speed",), "1", "drag coefficient C_D of the ball drag: the smooth sphere's standard "
+             "drag curve (Clift, Grace & Weber 1978, Table 5.2) at drag_reynolds_number")
+    for term in ("rolling", "sliding", "drag", "seal"):
+        register(f"qs_power_as_skf_{term}", ("speed",), "W", f"our quasi-static power loss grouped as the SKF "
+                 f"{term} term (rating.OURS_AS_SKF)")
+        register(f"skf_power_{term}", ("speed",), "W", f"SKF 2004 {term} term of the frictional moment x speed")
+    for s in SOURCES:
+        register(f"qs_power_loss_{s}", ("speed",), "W", f"power loss at the quasi-static state by source {s} (hsbearing.systems.angular_contact.balances.SOURCES)")
+
+
+_register_qs_power()
+for _row in skf2004.OUTPUTS:  # the skf_* variables of friction_angular_contact
+    register(*_row)
+
+
+def friction_angular_contact(case, speeds):
+    """Quasi-static power loss by source and the SKF 2004 angular-contact moments over inner-ring speeds [rad/s].
+
+    Returns a Dataset over ``speed`` (qs_power_loss_<source>, qs_power_loss [W],
+    qs_friction_torque, skf_* [N m]).
+    """
+    from hsbearing.systems.angular_contact.balances import SOURCES
+
+    w = np.asarray(speeds, dtype=float)
+    rows = [quasi_static_power_loss(case, wi, with_state=True) for wi in w]
+    from hsbearing.systems.angular_contact import contact_state
+
+    warns = []
+    for r in rows:
+        q = r.pop("state")
+        for x in contact_state.warnings_for(q.assign(**{k: ("ball", v) for k, v in
+                                                        contact_state.quasi_static_contact_state(r.pop("case"), q).items()}), case):
+            if x not in warns:
+                warns.append(x)
+    data = {f"qs_power_loss_{s}": np.array([r[s] for r in rows]) for s in SOURCES}
+    data["qs_power_loss"] = np.array([r["power_loss"] for r in rows])
+    data["qs_friction_torque"] = np.array([r["friction_torque"] for r in rows])
+    data.update(skf2004.skf_moments(case, w))
+    for term, srcs in OURS_AS_SKF.items():
+        data[f"qs_power_as_skf_{term}"] = sum((data[f"qs_power_loss_{x}"] for x in srcs), np.zeros(len(w)))
+    wa = np.abs(w)
+    data["skf_power_rolling"] = data["skf_rolling_torque"] * wa
+    data["skf_power_sliding"] = data["skf_sliding_torque"] * wa
+    data["skf_power_drag"] = data["skf_drag_torque"] * wa
+    data["skf_power_seal"] = np.zeros(len(w))  # open bearing: no seal moment
+    from hsbearing.models.ball_bearing import drag as drag_model
+
+    lub = case.lubricant
+    # the drag law's inputs as the model used them (dynamics.build_model: one law for run and friction)
+    for key in ("cavity_oil_fraction", "drag_reynolds_number", "drag_coefficient"):
+        data[key] = np.array([r[key] for r in rows])
+    xsrc = drag_model.cavity_oil_fraction(lub.oil_volume_fraction, lub.oil_flow_rate, w[0] if len(w) else 0.0,
+                                          case.bearing.pitch_diameter, lub.lubrication)[1]
+    warns += [x for x in skf_validity_warnings(case, wa * 30.0 / math.pi) if x not in warns]
+    Re_max = float(np.max(data["drag_reynolds_number"])) if len(w) else 0.0
+    if Re_max > DRAG_CRISIS_RE:
+        warns.append(f"ball Reynolds number up to {Re_max:.3g} in the air-oil mixture: near or past the drag crisis of a "
+                     f"smooth sphere; C_D is held at its subcritical value ({float(np.min(data['drag_coefficient'])):.2g}, "
+                     "no crisis applied); if the cavity flow does reach a crisis the drag there is up to ~5x lower "
+                     "(docs/power_loss.md)")
+    attrs = standard_attrs(case, "ok", title="hsbearing friction: quasi-static power loss by source, SKF 2004 model",
+                           note_quasi_static=NOTE_QS, note_skf=NOTE_SKF, cavity_oil_fraction_source=xsrc,
+                           warnings=" | ".join(warns) if warns else "none")
+    return make_dataset(data, coords={"speed": w}, attrs=attrs)
