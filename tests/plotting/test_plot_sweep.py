@@ -232,7 +232,7 @@ def test_study_cli_writes_one_figure_per_table(tmp_path, monkeypatch, capsys):
     real = study.run_study
 
     def one_table(name, out_dir, **kw):  # the CLI with a synthetic model and one table (seconds, not minutes)
-        from test_study import fake_dynamics  # tests/ is on sys.path (pytest "prepend" import mode)
+        from study_fakes import fake_dynamics  # tests/helpers (conftest.py)
 
         kw.update(point_fn=fake_dynamics, tables=["table3"], duration="5 ms", progress=False)
         return real(name, out_dir, **kw)
