@@ -57,7 +57,6 @@ def friction_command(case, args) -> int:
     print(f"case {case.name}: Fa = {abs(case.operating.axial_load):g} N, Fr = {math.hypot(case.operating.radial_load, case.operating.radial_load_z):g} N, "
           f"oil {case.lubricant.oil} at {case.lubricant.temperature - 273.15:.4g} degC")
     from hsbearing.systems.angular_contact.balances import SOURCES
-
     from hsbearing.systems.angular_contact.rating import CAVITY_SOURCES
 
     srcs = [s for s in tuple(SOURCES) + CAVITY_SOURCES if np.any(np.abs(ds[f"qs_power_loss_{s}"].values) > 1e-9)]

@@ -258,14 +258,18 @@ def _cavity_losses(case, m, out):
     gamma = g.D * math.cos(g.alpha0) / g.dm
     w_i, w_o = op.inner_speed, op.outer_speed
     k_c = churning.couette_corotation_fraction(gamma, w_i, w_o) if (w_i or w_o) else float("nan")
-    kernel_drag = out["drag"]
-    if k > 0.0 and m.info["drag"] and rho_e > 0.0:
+    kernel_drag, C_0 = out["drag"], out["drag_coefficient"]
+    # the kernel's drag is at each ball's own orbital speed (ball centre slightly off the pitch circle): the ratio of
+    # the kernel's drag to the law at the pitch-circle speed v carries that (1 + O(1e-3)) into every variant below
+    P_0 = churning.ball_drag_power(v, 0.0, g.D, rho_e, C_0)[1] if (m.info["drag"] and rho_e > 0.0 and v != 0.0) else 0.0
+    geo = kernel_drag / (g.Z * P_0) if P_0 > 0.0 else 1.0
+    if k > 0.0 and P_0 > 0.0:
         C_D, Re = ball_drag_coefficient(rho_e, mu_e, (1.0 - k) * v, g.D)
         if m.info["options"]["drag_coefficient"] is not None:
             C_D = float(m.info["options"]["drag_coefficient"])
-        _, P, _, P_mix = churning.ball_drag_power(v, k * v, g.D, rho_e, C_D)
-        out["drag"], out["drag_coefficient"], out["drag_reynolds_number"] = g.Z * P, C_D, Re
-        out["drag_mixture_share"] = g.Z * P_mix
+        _, P, _, P_mix = churning.ball_drag_power(v, k * v, g.D, rho_e, C_D)  # mixture at k x the cage speed at each ball
+        out["drag"], out["drag_coefficient"], out["drag_reynolds_number"] = geo * g.Z * P, C_D, Re
+        out["drag_mixture_share"] = geo * g.Z * P_mix
     else:
         out["drag_mixture_share"] = 0.0
     jet = windage = 0.0
@@ -281,9 +285,9 @@ def _cavity_losses(case, m, out):
     out["jet_oil_acceleration"], out["cage_windage"] = jet, windage
     out["power_loss"] += out["drag"] - kernel_drag + jet + windage
     k_hi = k_c if math.isfinite(k_c) else 0.0
-    band = churning.drag_band(g.Z, v, g.D, rho_e, mu_e, max(min(k_hi, 1.0), 0.0)) if (m.info["drag"] and v != 0.0) \
-        else {"low": 0.0, "high": 0.0}
-    out["drag_band_low"], out["drag_band_high"], out["mixture_corotation_couette"] = band["low"], band["high"], k_c
+    band = churning.drag_band(g.Z, v, g.D, rho_e, mu_e, max(min(k_hi, 1.0), 0.0)) if P_0 > 0.0 else {"low": 0.0, "high": 0.0}
+    out["drag_band_low"], out["drag_band_high"] = geo * band["low"], geo * band["high"]
+    out["mixture_corotation_couette"] = k_c
     out["mixture_corotation"] = k
 
 

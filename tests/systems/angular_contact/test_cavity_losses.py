@@ -59,7 +59,8 @@ def test_corotation_scales_the_drag(default_case, k):
     r0 = rating.quasi_static_power_loss(default_case)
     rk = rating.quasi_static_power_loss(default_case.with_overrides(**{"friction.mixture_corotation": str(k)}))
     m = build_model(default_case)
-    v, rho, mu, D = (m.info[x] for x in ("drag_orbital_speed", "drag_density", "drag_viscosity")) + (default_case.bearing.ball_diameter,)
+    v, rho, mu = (m.info[x] for x in ("drag_orbital_speed", "drag_density", "drag_viscosity"))
+    D = default_case.bearing.ball_diameter
     C_k = ball_drag_coefficient(rho, mu, (1 - k) * v, D)[0]
     # kernel drag at k = 0 uses |v| regularised by v0 = 0.01 m/s: relative 1e-8 at these speeds
     assert rk["drag"] == pytest.approx(r0["drag"] * (1 - k) ** 2 * C_k / r0["drag_coefficient"], rel=1e-6)
