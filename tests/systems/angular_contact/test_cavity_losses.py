@@ -68,7 +68,10 @@ def test_corotation_scales_the_drag(default_case, k):
     assert rk["cage_windage"] < r0["cage_windage"]
     for s in ("race_traction", "ehl_rolling", "guide_land"):
         assert rk[s] == r0[s]
-    assert r0["drag_band_low"] <= rk["drag"] <= r0["drag_band_high"] * (1 + 1e-12)
+    if k <= r0["mixture_corotation_couette"]:  # 0.889 here: k = 0.9 lies beyond the band's co-rotation range
+        assert r0["drag_band_low"] <= rk["drag"] <= r0["drag_band_high"] * (1 + 1e-12)
+    else:
+        assert rk["drag"] < r0["drag_band_low"]
 
 
 def test_reverse_rotation_is_a_loss(default_case):
