@@ -83,7 +83,8 @@ def friction_command(case, args) -> int:
           f"ball Reynolds number {', '.join(f'{r:.3g}' for r in Re)}; C_D {', '.join(f'{c:.3g}' for c in CD)} (smooth "
           "sphere, standard drag curve of Clift, Grace & Weber 1978, Table 5.2)")
     k = ds["mixture_corotation"].values
-    print(f"drag band [W] (mixture co-rotation 0 .. Couette estimate {', '.join(f'{x:.3g}' for x in ds['mixture_corotation_couette'].values)}"
+    kc = ", ".join(f"{x:.3g}" if np.isfinite(x) else "n/a (cage at rest)" for x in ds["mixture_corotation_couette"].values)
+    print(f"drag band [W] (mixture co-rotation 0 .. Couette estimate {kc}"
           f" of the cage speed; C_D held subcritical or with the sphere's crisis): "
           + ", ".join(f"{lo:.4g}..{hi:.4g}" for lo, hi in zip(ds.qs_drag_band_low.values, ds.qs_drag_band_high.values))
           + f"; drag above at co-rotation {', '.join(f'{x:.3g}' for x in k)} (friction.mixture_corotation)")
