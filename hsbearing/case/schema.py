@@ -174,6 +174,12 @@ SCHEMA: dict[str, dict[str, Field]] = {
         "static_load_rating": _f("force", "basic static load rating C_0 (SKF model contact angle alpha_F)", positive=True),
         "skf_reading": _f("choice", "G_sl under combined load: SKF catalogue, or the dgbb_prl reading", default="catalogue", choices=("catalogue", "dgbb_prl")),
         "skf_drag_variable": _f("number", "SKF drag-loss variable V_M read from the catalogue diagram (oil bath only)", nonneg=True),
+        "mixture_corotation": _f("number", "fraction k of the cage orbital speed at which the cavity's air-oil mixture is "
+                                 "carried round; the quasi-static ball drag and cage windage act on the speed relative to "
+                                 "it (0: mixture at rest, the drag law's own assumption; the band 0..Couette estimate is "
+                                 "reported by hsbearing friction; docs/power_loss.md)", default=0.0, minimum=0.0, maximum=1.0),
+        "cavity_losses": _f("choice", "jet-oil acceleration (m_dot v^2) and cage-face windage in the quasi-static power loss: "
+                            "on, or off (drag only, as before)", default="on", choices=("on", "off")),
         "spin_torque_reading": _f("choice", "dgbb_prl spinning torque: dissipated power m_s omega_s / omega, or Tong-Hong projection sum |m_s| sin(alpha)", default="power", choices=("power", "projection")),
     },
     "thermal": {  # hsbearing thermal (docs/thermal.md); defaults are typical values, each with its origin

@@ -107,7 +107,9 @@ def main():
             print("  n [r/min]   X        Re      C_D    " + " ".join(f"{s:>13s}" for s in srcs) + "   measured")
             tot = []
             for n in rpms:
-                case = case_for(frac(n))
+                # drag only (friction.cavity_losses off), as tabled in docs/power_loss.md; the jet-oil acceleration,
+                # cage windage and drag band: tools/investigations/tp2275_heat_by_source.py
+                case = case_for(frac(n)).with_overrides(**{"friction.cavity_losses": "off"})
                 if cd is None:
                     r = quasi_static_power_loss(case, n * math.pi / 30)
                 else:  # the former constant: rebuild through the model option

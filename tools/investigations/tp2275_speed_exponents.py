@@ -34,6 +34,7 @@ def scaled_case(dm_mm, flow, override=None):
     ov["operating.axial_load"] = f"{1000.0 * s * s:.6g} N"
     ov["lubricant.oil_flow_rate"] = f"{flow} L/min"
     ov["case.name"] = f"similar_dm{dm_mm:g}"
+    ov["friction.cavity_losses"] = "off"  # drag only, as tabled in docs/power_loss.md (churning: tp2275_heat_by_source.py)
     case = base.with_overrides(**ov)
     if override is None:  # Parker: drop the explicit fraction of zhang2016
         from hsbearing.case import loads_case

@@ -57,8 +57,9 @@ def friction_command(case, args) -> int:
     print(f"case {case.name}: Fa = {abs(case.operating.axial_load):g} N, Fr = {math.hypot(case.operating.radial_load, case.operating.radial_load_z):g} N, "
           f"oil {case.lubricant.oil} at {case.lubricant.temperature - 273.15:.4g} degC")
     from hsbearing.systems.angular_contact.balances import SOURCES
+    from hsbearing.systems.angular_contact.rating import CAVITY_SOURCES
 
-    srcs = [s for s in SOURCES if np.any(np.abs(ds[f"qs_power_loss_{s}"].values) > 1e-9)]
+    srcs = [s for s in tuple(SOURCES) + CAVITY_SOURCES if np.any(np.abs(ds[f"qs_power_loss_{s}"].values) > 1e-9)]
     head = ["n [r/min]"] + [f"{s} [W]" for s in srcs] + ["total [W]", "M [N mm]", "SKF M_rr", "SKF M_sl", "SKF M [N mm]", "SKF P [W]"]
     print("quasi-static power loss by source | SKF 2004 (72xx angular contact)")
     print("  ".join(f"{h:>14s}" for h in head))
@@ -70,7 +71,7 @@ def friction_command(case, args) -> int:
                 f"{ds.skf_total_torque.values[i] * 1e3:14.4g}", f"{ds.skf_total_torque.values[i] * abs(wi):14.4g}"]
         print("  ".join(row))
     print("split of both totals into the SKF terms [W] (ours: rolling = ehl_rolling + contact_damping; sliding = "
-          "race_traction + pocket_film + pocket_boundary + guide_land; drag = ball drag; seals: none modelled)")
+          "race_traction + pocket_film + pocket_boundary + guide_land; drag = ball drag + jet_oil_acceleration + cage_windage; seals: none modelled)")
     print("  ".join(f"{h:>14s}" for h in ["n [r/min]", "model", "rolling", "sliding", "drag", "seal", "total"]))
     for i, wi in enumerate(ds["speed"].values):
         for label, pre, tot in (("ours", "qs_power_as_skf_", ds.qs_power_loss.values[i]),
@@ -81,6 +82,12 @@ def friction_command(case, args) -> int:
     print(f"drag: cavity oil fraction {', '.join(f'{x:.4g}' for x in X)} ({ds.attrs.get('cavity_oil_fraction_source', '')}); "
           f"ball Reynolds number {', '.join(f'{r:.3g}' for r in Re)}; C_D {', '.join(f'{c:.3g}' for c in CD)} (smooth "
           "sphere, standard drag curve of Clift, Grace & Weber 1978, Table 5.2)")
+    k = ds["mixture_corotation"].values
+    kc = ", ".join(f"{x:.3g}" if np.isfinite(x) else "n/a (cage at rest)" for x in ds["mixture_corotation_couette"].values)
+    print(f"drag band [W] (mixture co-rotation 0 .. Couette estimate {kc}"
+          f" of the cage speed; C_D held subcritical or with the sphere's crisis): "
+          + ", ".join(f"{lo:.4g}..{hi:.4g}" for lo, hi in zip(ds.qs_drag_band_low.values, ds.qs_drag_band_high.values))
+          + f"; drag above at co-rotation {', '.join(f'{x:.3g}' for x in k)} (friction.mixture_corotation)")
     print("note: " + NOTE_QS)
     print("note: " + NOTE_SKF)
     if case.friction.law == "coulomb":

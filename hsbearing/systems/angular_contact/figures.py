@@ -268,10 +268,13 @@ def plot_friction_angular_contact(ds, path) -> Path:
                                                                                 "temperature") if k in lab])
     fig.suptitle(f"quasi-static power loss and friction torque: {head}", fontsize=11)
     marker = "o" if len(rpm) <= 12 else None
-    for k, s in enumerate(SOURCES):
+    for k, s in enumerate(tuple(SOURCES) + ("jet_oil_acceleration", "cage_windage")):  # + rating.CAVITY_SOURCES
         name = f"qs_power_loss_{s}"
         if name in ds and np.any(np.abs(vals(ds, name)) > 1e-9):
-            ax1.plot(rpm, vals(ds, name), marker=marker, ms=4, lw=1.2, color=f"C{k}", label=s.replace("_", " "))
+            ax1.plot(rpm, vals(ds, name), marker=marker, ms=4, lw=1.2, color=f"C{k % 10}", label=s.replace("_", " "))
+    if "qs_drag_band_low" in ds and np.any(vals(ds, "qs_drag_band_high") > 0):
+        ax1.fill_between(rpm, vals(ds, "qs_drag_band_low"), vals(ds, "qs_drag_band_high"), color="0.6", alpha=0.25,
+                         lw=0, label="drag band (co-rotation, C_D)")
     ax1.plot(rpm, vals(ds, "qs_power_loss"), marker=marker, ms=4, lw=2.0, color="k", label="total")
     ax1.set_xlabel("inner-ring speed n [r/min]")
     ax1.set_ylabel("power loss [W]")

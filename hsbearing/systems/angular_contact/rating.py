@@ -223,13 +223,72 @@ def quasi_static_power_loss(case, speed=None, with_state: bool = False):
     out = {s: float(pv[f"power_loss_{s}"][0]) for s in SOURCES}
     out["power_loss"] = float(pv["power_loss"][0])
     out["drive_torque"] = float(pv["drive_torque"][0])
-    w = abs(case.operating.inner_speed - case.operating.outer_speed)
-    out["friction_torque"] = out["power_loss"] / w if w > 0 else float("nan")
     for key in ("cavity_oil_fraction", "drag_reynolds_number", "drag_coefficient"):  # the drag law's inputs (build_model)
         out[key] = float(m.info[key])
+    _cavity_losses(case, m, out)
+    w = abs(case.operating.inner_speed - case.operating.outer_speed)
+    out["friction_torque"] = out["power_loss"] / w if w > 0 else float("nan")
     if with_state:  # the quasi-static Dataset the state comes from, and the case at that speed
         out["state"], out["case"] = m.info["quasistatic"], case
     return out
+
+
+#: the quasi-static sources outside the dynamic kernel (models/ball_bearing/churning.py), after balances.SOURCES
+CAVITY_SOURCES = ("jet_oil_acceleration", "cage_windage")
+
+
+def _cavity_losses(case, m, out):
+    """Mixture co-rotation, jet-oil acceleration, cage windage and the drag band at the quasi-static state (in place).
+
+    ``friction.mixture_corotation`` k = 0 keeps the kernel's drag bit for bit; k > 0 replaces it by
+    :func:`~hsbearing.models.ball_bearing.churning.ball_drag_power` at the velocity relative to the mixture (C_D at the
+    relative Reynolds number).  ``friction.cavity_losses = "off"`` sets the two extra sources to 0.  The drag band
+    (:func:`~hsbearing.models.ball_bearing.churning.drag_band`) is reported whatever the options.
+    The dynamic kernel (hsbearing run) has none of these: its drag is that of k = 0 (docs/power_loss.md).
+    """
+    from hsbearing.models import geometry
+    from hsbearing.models.ball_bearing import churning
+    from hsbearing.models.ball_bearing.drag import ball_drag_coefficient
+
+    g = geometry.derive(case)
+    fr, lub, op = case.friction, case.lubricant, case.operating
+    k = float(fr.mixture_corotation)
+    v = float(m.info["drag_orbital_speed"])
+    rho_e, mu_e = float(m.info["drag_density"]), float(m.info["drag_viscosity"])
+    gamma = g.D * math.cos(g.alpha0) / g.dm
+    w_i, w_o = op.inner_speed, op.outer_speed
+    k_c = churning.couette_corotation_fraction(gamma, w_i, w_o) if (w_i or w_o) else float("nan")
+    kernel_drag, C_0 = out["drag"], out["drag_coefficient"]
+    # the kernel's drag is at each ball's own orbital speed (ball centre slightly off the pitch circle): the ratio of
+    # the kernel's drag to the law at the pitch-circle speed v carries that (1 + O(1e-3)) into every variant below
+    P_0 = churning.ball_drag_power(v, 0.0, g.D, rho_e, C_0)[1] if (m.info["drag"] and rho_e > 0.0 and v != 0.0) else 0.0
+    geo = kernel_drag / (g.Z * P_0) if P_0 > 0.0 else 1.0
+    if k > 0.0 and P_0 > 0.0:
+        C_D, Re = ball_drag_coefficient(rho_e, mu_e, (1.0 - k) * v, g.D)
+        if m.info["options"]["drag_coefficient"] is not None:
+            C_D = float(m.info["options"]["drag_coefficient"])
+        _, P, _, P_mix = churning.ball_drag_power(v, k * v, g.D, rho_e, C_D)  # mixture at k x the cage speed at each ball
+        out["drag"], out["drag_coefficient"], out["drag_reynolds_number"] = geo * g.Z * P, C_D, Re
+        out["drag_mixture_share"] = geo * g.Z * P_mix
+    else:
+        out["drag_mixture_share"] = 0.0
+    jet = windage = 0.0
+    if fr.cavity_losses == "on":
+        if lub.oil_flow_rate is not None and lub.lubrication in ("oil_jet", "oil_air"):
+            jet = churning.jet_oil_acceleration_power(lub.density * lub.oil_flow_rate, v)[0]
+        c = case.cage
+        w_c = 2.0 * v / g.dm  # the cage's angular velocity at the quasi-static state
+        if c.bore_diameter and c.outside_diameter and rho_e > 0.0:
+            M = churning.rotating_annulus_windage_moment((1.0 - k) * w_c, 0.5 * c.bore_diameter, 0.5 * c.outside_diameter,
+                                                         rho_e, mu_e)
+            windage = -M * w_c  # the moment resists the cage's motion relative to the mixture; the cage moves at w_c
+    out["jet_oil_acceleration"], out["cage_windage"] = jet, windage
+    out["power_loss"] += out["drag"] - kernel_drag + jet + windage
+    k_hi = k_c if math.isfinite(k_c) else 0.0
+    band = churning.drag_band(g.Z, v, g.D, rho_e, mu_e, max(min(k_hi, 1.0), 0.0)) if P_0 > 0.0 else {"low": 0.0, "high": 0.0}
+    out["drag_band_low"], out["drag_band_high"] = geo * band["low"], geo * band["high"]
+    out["mixture_corotation_couette"] = k_c
+    out["mixture_corotation"] = k
 
 
 # ----------------------------------------------------------------------------- hsbearing friction CASE (every ball bearing)
@@ -237,8 +296,10 @@ def quasi_static_power_loss(case, speed=None, with_state: bool = False):
 NOTE_QS = ("quasi-static model: (ours) power lost at the quasi-static state with the dynamic model's contact laws: race "
             "traction (rolling, transverse slip and spin, the oil's traction law), EHL rolling couple, the pocket film of the "
             "centred balls (entraining shear of the turning ball in its pocket), guide-land film of the centred cage, ball "
-            "drag in the air-oil mixture (cavity oil fraction above); excludes pocket boundary friction and contact damping "
-            "(zero at that state), the cage whirl, seals (none modelled) and churning/jet-pumping of the oil beyond ball drag")
+            "drag in the air-oil mixture (cavity oil fraction above; relative to the mixture carried round at friction.mixture_corotation "
+            "of the cage speed), the jet oil's acceleration to the cage pitch speed (m_dot v^2) and the cage-face windage "
+            "(rotating-disc estimate; friction.cavity_losses); excludes pocket boundary friction and contact damping "
+            "(zero at that state), the cage whirl, seals (none modelled) and the inner ring's shear of the mixture")
 NOTE_SKF = ("SKF 2004 model: catalogue frictional moment M = M_rr + M_sl + M_seal + M_drag (SKF General Catalogue 6000 EN, "
              "'Friction'), an empirical fit for the bearing series at mu_EHL (friction.ehl_coefficient, default 0.05: the "
              "catalogue's mineral-oil value, 0.04 for synthetic oils); M_seal = 0 (open "
@@ -248,7 +309,7 @@ NOTE_SKF = ("SKF 2004 model: catalogue frictional moment M = M_rr + M_sl + M_sea
 OURS_AS_SKF = {
     "rolling": ("ehl_rolling", "contact_damping"),
     "sliding": ("race_traction", "pocket_film", "pocket_boundary", "guide_land"),
-    "drag": ("drag",),
+    "drag": ("drag", "jet_oil_acceleration", "cage_windage"),
     "seal": (),
 }
 
@@ -301,6 +362,20 @@ def _register_qs_power():
         register(f"skf_power_{term}", ("speed",), "W", f"SKF 2004 {term} term of the frictional moment x speed")
     for s in SOURCES:
         register(f"qs_power_loss_{s}", ("speed",), "W", f"power loss at the quasi-static state by source {s} (hsbearing.systems.angular_contact.balances.SOURCES)")
+    register("qs_power_loss_jet_oil_acceleration", ("speed",), "W", "power to accelerate the supplied jet oil from rest to the "
+             "cage pitch speed v, m_dot v^2 (momentum conservation; models/ball_bearing/churning.py); 0 without "
+             "lubricant.oil_flow_rate or with friction.cavity_losses = off")
+    register("qs_power_loss_cage_windage", ("speed",), "W", "windage of the two cage side faces turning relative to the "
+             "cavity mixture, free rotating-disc estimate (von Karman; models/ball_bearing/churning.py)")
+    register("qs_drag_mixture_share", ("speed",), "W", "part of qs_power_loss_drag spent driving the co-rotating mixture "
+             "(F u summed over the balls; 0 for friction.mixture_corotation = 0)")
+    register("qs_drag_band_low", ("speed",), "W", "lowest ball drag over the unsettled choices: mixture co-rotation 0 or "
+             "the Couette estimate, C_D held subcritical or with the sphere's drag crisis (docs/power_loss.md)")
+    register("qs_drag_band_high", ("speed",), "W", "highest ball drag over the same choices as qs_drag_band_low")
+    register("mixture_corotation", ("speed",), "1", "fraction of the cage orbital speed at which the cavity mixture is "
+             "carried round in the quasi-static drag (friction.mixture_corotation)")
+    register("mixture_corotation_couette", ("speed",), "1", "upper estimate of the mixture co-rotation: circular Couette "
+             "flow between the raceways at the pitch radius over the cage's pure-rolling speed")
 
 
 _register_qs_power()
@@ -327,7 +402,11 @@ def friction_angular_contact(case, speeds):
                                                         contact_state.quasi_static_contact_state(r.pop("case"), q).items()}), case):
             if x not in warns:
                 warns.append(x)
-    data = {f"qs_power_loss_{s}": np.array([r[s] for r in rows]) for s in SOURCES}
+    data = {f"qs_power_loss_{s}": np.array([r[s] for r in rows]) for s in tuple(SOURCES) + CAVITY_SOURCES}
+    for key, name in (("drag_mixture_share", "qs_drag_mixture_share"), ("drag_band_low", "qs_drag_band_low"),
+                      ("drag_band_high", "qs_drag_band_high"), ("mixture_corotation", "mixture_corotation"),
+                      ("mixture_corotation_couette", "mixture_corotation_couette")):
+        data[name] = np.array([r[key] for r in rows])
     data["qs_power_loss"] = np.array([r["power_loss"] for r in rows])
     data["qs_friction_torque"] = np.array([r["friction_torque"] for r in rows])
     data.update(skf2004.skf_moments(case, w))

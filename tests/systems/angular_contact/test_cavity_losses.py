@@ -1,0 +1,88 @@
+"""hsbearing friction with the churning terms: off reproduces the drag-only numbers, on adds exactly the new sources,
+the mixture co-rotation scales the drag as (1 - k)^2 (C_D at the relative Reynolds number)."""
+
+import math
+
+import numpy as np
+import pytest
+import xarray as xr
+
+from hsbearing.case import load_case
+from hsbearing.models.ball_bearing.drag import ball_drag_coefficient
+from hsbearing.systems.angular_contact import rating
+from hsbearing.systems.angular_contact.balances import SOURCES
+from hsbearing.systems.angular_contact.dynamics import build_model
+
+ARCHIVE = "tests/data/regression/zhang2016_friction.nc"
+
+
+@pytest.fixture(scope="module")
+def default_case():
+    return load_case("zhang2016")
+
+
+def test_options_off_reproduce_the_drag_only_numbers(default_case):
+    """friction.cavity_losses = off and mixture_corotation = 0: every source and the total as before the churning terms
+    (the regression archive holds the new default; its kernel sources are unchanged and equal these)."""
+    off = default_case.with_overrides(**{"friction.cavity_losses": "off"})
+    r = rating.quasi_static_power_loss(off)
+    m = build_model(off)
+    from hsbearing.systems.angular_contact.balances import power_variables
+
+    aux, gaux = m.outputs(m.y0)
+    pv = power_variables(aux[None], gaux[None])
+    for s in SOURCES:
+        assert r[s] == float(pv[f"power_loss_{s}"][0])
+    assert r["power_loss"] == float(pv["power_loss"][0])
+    assert r["jet_oil_acceleration"] == 0.0 and r["cage_windage"] == 0.0 and r["drag_mixture_share"] == 0.0
+    with xr.open_dataset(ARCHIVE) as ds:
+        for s in SOURCES:
+            assert r[s] == pytest.approx(float(ds[f"qs_power_loss_{s}"].values[0]), rel=1e-12, abs=1e-12)
+        extra = float(ds["qs_power_loss_jet_oil_acceleration"].values[0] + ds["qs_power_loss_cage_windage"].values[0])
+        assert r["power_loss"] + extra == pytest.approx(float(ds["qs_power_loss"].values[0]), rel=1e-12)
+
+
+def test_on_adds_exactly_the_new_sources(default_case):
+    r = rating.quasi_static_power_loss(default_case)
+    off = rating.quasi_static_power_loss(default_case.with_overrides(**{"friction.cavity_losses": "off"}))
+    assert r["power_loss"] == pytest.approx(off["power_loss"] + r["jet_oil_acceleration"] + r["cage_windage"], rel=1e-13)
+    m = build_model(default_case)
+    v = m.info["drag_orbital_speed"]
+    lub = default_case.lubricant
+    # independent: m_dot v^2 with the case's flow and density, v = cage speed x d_m / 2 of the quasi-static state
+    assert r["jet_oil_acceleration"] == pytest.approx(lub.density * lub.oil_flow_rate * v * v, rel=1e-12)
+    assert r["cage_windage"] > 0.0 and r["jet_oil_acceleration"] > 0.0
+
+
+@pytest.mark.parametrize("k", [0.3, 0.9])
+def test_corotation_scales_the_drag(default_case, k):
+    r0 = rating.quasi_static_power_loss(default_case)
+    rk = rating.quasi_static_power_loss(default_case.with_overrides(**{"friction.mixture_corotation": str(k)}))
+    m = build_model(default_case)
+    v, rho, mu = (m.info[x] for x in ("drag_orbital_speed", "drag_density", "drag_viscosity"))
+    D = default_case.bearing.ball_diameter
+    C_k = ball_drag_coefficient(rho, mu, (1 - k) * v, D)[0]
+    # kernel drag at k = 0 uses |v| regularised by v0 = 0.01 m/s: relative 1e-8 at these speeds
+    assert rk["drag"] == pytest.approx(r0["drag"] * (1 - k) ** 2 * C_k / r0["drag_coefficient"], rel=1e-6)
+    assert rk["drag_mixture_share"] == pytest.approx(rk["drag"] * k, rel=1e-12)  # F u / F v = k
+    assert rk["cage_windage"] < r0["cage_windage"]
+    for s in ("race_traction", "ehl_rolling", "guide_land"):
+        assert rk[s] == r0[s]
+    if k <= r0["mixture_corotation_couette"]:  # 0.889 here: k = 0.9 lies beyond the band's co-rotation range
+        assert r0["drag_band_low"] <= rk["drag"] <= r0["drag_band_high"] * (1 + 1e-12)
+    else:
+        assert rk["drag"] < r0["drag_band_low"]
+
+
+def test_reverse_rotation_is_a_loss(default_case):
+    neg = default_case.with_overrides(**{"operating.inner_speed": "-14000 rpm", "friction.mixture_corotation": "0.5"})
+    r = rating.quasi_static_power_loss(neg)
+    assert r["drag"] > 0 and r["jet_oil_acceleration"] > 0 and r["cage_windage"] > 0 and r["drag_mixture_share"] > 0
+    assert math.isfinite(r["mixture_corotation_couette"]) and 0.8 < r["mixture_corotation_couette"] < 1.0
+
+
+def test_friction_dataset_has_units_and_long_names(default_case):
+    ds = rating.friction_angular_contact(default_case, np.array([14000.0]) * math.pi / 30)
+    for name in ("qs_power_loss_jet_oil_acceleration", "qs_power_loss_cage_windage", "qs_drag_mixture_share",
+                 "qs_drag_band_low", "qs_drag_band_high", "mixture_corotation", "mixture_corotation_couette"):
+        assert ds[name].attrs.get("units") and ds[name].attrs.get("long_name"), name
