@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["format_value", "format_quantity", "format_seconds", "format_solver_stats"]
+__all__ = ["format_value", "format_quantity", "format_seconds", "format_solver_stats", "format_life"]
 
 _RPM = 60.0 / (2.0 * math.pi)
 MICRO = "\u00b5"
@@ -59,6 +59,35 @@ def format_quantity(value, units: str, name: str = "", digits: int = 4) -> str:
     if u == "s":
         return format_seconds(v)
     return f"{g.format(v)} {u}"
+
+
+def format_life(million_revolutions, digits: int = 4) -> str:
+    """A rating life given in 10^6 revolutions as text: ``13630.4 -> "13 630 million rev"``.
+
+    Four significant digits, thousands grouped by a space (ISO 80000-1), no exponent between 0.001 and 10^9;
+    outside that range the exponent is written out (``"1.363 x 10^12 million rev"``).  Non-finite -> ``"nan"``.
+
+    Examples
+    --------
+    >>> format_life(13630.4)
+    '13 630 million rev'
+    >>> format_life(0.5432)
+    '0.5432 million rev'
+    >>> format_life(1.363e12)
+    '1.363 x 10^12 million rev'
+    """
+    x = float(million_revolutions)
+    if not math.isfinite(x):
+        return "nan"
+    a = abs(x)
+    if a and (a < 1e-3 or a >= 1e9):
+        e = int(math.floor(math.log10(a)))
+        return f"{x / 10**e:.{digits - 1}f} x 10^{e} million rev"
+    if a == 0:
+        return "0 million rev"
+    decimals = max(0, digits - 1 - int(math.floor(math.log10(a))))
+    text = f"{round(x, decimals):,.{decimals}f}".replace(",", " ")
+    return f"{text} million rev"
 
 
 def format_value(var, name: str = "", digits: int = 4) -> str:

@@ -59,9 +59,9 @@ def friction_command(case, args) -> int:
     from hsbearing.systems.angular_contact.balances import SOURCES
 
     srcs = [s for s in SOURCES if np.any(np.abs(ds[f"qs_power_loss_{s}"].values) > 1e-9)]
-    head = ["n [r/min]"] + [f"{s} [W]" for s in srcs] + ["total [W]", "M [N mm]", "SKF M_rr", "SKF M_sl", "SKF M [N mm]", "SKF P [W]"]
+    head = ["n [r/min]"] + [f"{s} [W]" for s in srcs] + ["total [W]", "M [N mm]", "SKF M_rr [N mm]", "SKF M_sl [N mm]", "SKF M [N mm]", "SKF P [W]"]
     print("quasi-static power loss by source | SKF 2004 (72xx angular contact)")
-    print("  ".join(f"{h:>14s}" for h in head))
+    print("  ".join(f"{h:>16s}" for h in head))
     for i, wi in enumerate(ds["speed"].values):
         row = [f"{rpm(wi):14.0f}"] + [f"{ds[f'qs_power_loss_{s}'].values[i]:14.4g}" for s in srcs]
         M = ds.qs_friction_torque.values[i]
