@@ -76,8 +76,8 @@ html_static_path: list[str] = []
 html_theme_options = {"description": "Dynamics and friction of rolling ball bearings", "page_width": "1100px"}
 
 # Header-level jumps in the long hand-written pages are not errors of the docs site; nor is a short name
-# (an attribute ``K``) that two classes share.
-suppress_warnings = ["myst.header", "ref.python"]
+# (an attribute ``K``) that two classes share; nor that sphinx-argparse's domain cannot answer "any" lookups.
+suppress_warnings = ["myst.header", "ref.python", "myst.domains"]
 
 # -n (nitpicky) checks every cross-reference between the pages (MyST links, :doc:, :ref:, figures) -- a broken
 # one fails the build -- but not the Python-domain references inside docstrings: their numpydoc types carry
