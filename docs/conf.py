@@ -23,7 +23,6 @@ extensions = [
     "sphinx.ext.autosummary",
     "sphinx.ext.napoleon",
     "sphinx.ext.mathjax",
-    "sphinx.ext.viewcode",
     "sphinxarg.ext",
     "sphinx_gallery.gen_gallery",
 ]
