@@ -15,7 +15,7 @@ from hsbearing.systems.deep_groove.friction import friction_torque
 
 def main():
     case = hsbearing.load_case("dgbb_6206")
-    ds = friction_torque(case, "500,2000,5000,10000,15000rpm")
+    ds = friction_torque(case, "500,5000,15000rpm")
     n = ds["speed"].values * 60 / (2 * 3.141592653589793)
     print("n [r/min]  M_sl [N mm]  SKF M_sl [N mm]  SKF M [N mm]")
     for i in range(n.size):

@@ -15,7 +15,7 @@ import pytest
 import xarray as xr
 
 from hsbearing import cli
-from hsbearing.display import format_life, format_quantity
+from hsbearing.display import format_grouped, format_life, format_quantity
 
 LABEL = re.compile(r"\b(seed|issue|session)s?\b\s*#?\d*", re.IGNORECASE)
 
@@ -68,7 +68,7 @@ def test_life_prints_million_revolutions(capsys, tmp_path):
     _no_labels(out, "life")
     assert "10^6 rev" not in out
     l10 = next(line for line in out.splitlines() if line.strip().startswith("L_10 "))
-    assert re.search(r"L_10  = [\d ]+(\.\d+)? million rev = [\d.e+]+ h", l10), l10
+    assert re.search(r"L_10  = [\d ]+(\.\d+)? million rev = [\d ]+(\.\d+)? h", l10), l10
 
 
 def test_thermal_and_preload_print_no_internal_label(capsys, tmp_path):
@@ -97,6 +97,8 @@ def test_format_life_and_torque_rule():
     assert format_life(0.5432) == "0.5432 million rev"
     assert format_life(1.363e12) == "1.363 x 10^12 million rev"
     assert format_life(float("nan")) == "nan"
+    assert format_grouped(16234.7, "h") == "16 230 h"
+    assert format_grouped(999.96, "h") == "1 000 h"
     assert format_quantity(0.04027, "N m") == "40.27 N mm"
     assert format_quantity(4.27e-6, "N m") == "4.27 µN m"
     assert format_quantity(17.3, "N m") == "17.3 N m"

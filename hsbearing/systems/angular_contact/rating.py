@@ -136,14 +136,14 @@ def life(case, *, quasistatic: bool = True):
 
 def life_lines(ds) -> list[str]:
     """Printed summary of :func:`life` (lives in million revolutions, :func:`hsbearing.display.format_life`, and hours at the case speed)."""
-    from hsbearing.display import format_life
+    from hsbearing.display import format_grouped, format_life
 
     n = float(ds.attrs.get("relative_speed_rpm", 0.0))
 
     def h(x):
         from hsbearing.models.life import life_in_hours
 
-        return f"{life_in_hours(float(x), n):.4g} h" if n > 0 and math.isfinite(float(x)) else "n/a (no rotation)"
+        return format_grouped(life_in_hours(float(x), n), "h") if n > 0 and math.isfinite(float(x)) else "n/a (no rotation)"
 
     def g(x, fmt: str, why: str = "no rotation: no lubricant film, kappa is not defined") -> str:
         x = float(x)
