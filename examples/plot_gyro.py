@@ -12,7 +12,7 @@ import matplotlib.pyplot as plt
 import hsbearing
 
 
-def main(duration="1 s"):
+def main(duration="0.5 s"):
     ds = hsbearing.simulate("jiang2014_gyro", duration=duration)
     print("status:", ds.attrs["status"])
     print(f"SFMC = {float(ds.sfmc) * 1e6:.3f} uN m, RFMC = {float(ds.rfmc) * 1e6:.3f} uN m")
