@@ -1,6 +1,6 @@
 """hsbearing: dynamics and friction of rolling ball bearings.
 
-Public API (docs/design.md "Contracts"):
+Public API (the contracts of docs/design.md):
 
 - :func:`load_case` -- TOML case (bundled name or path) -> frozen SI dataclasses
 - :func:`simulate` -- dynamic simulation -> ``xarray.Dataset`` over ``time`` (and ``ball``)
@@ -42,6 +42,15 @@ def simulate(case, duration=None, *, progress: bool = False, **kwargs):
     ``duration`` is seconds (float) or a unit string (``"0.2 s"``); None uses
     ``[simulation] duration``.  Raises :class:`SolverError` (with
     ``.partial``) on numerical failure.
+
+    Examples
+    --------
+    >>> import hsbearing
+    >>> ds = hsbearing.simulate("zhang2016", duration="5 ms")  # doctest: +SKIP
+    >>> ds.attrs["status"]  # doctest: +SKIP
+    'ok'
+    >>> ds.cage_speed.attrs["units"]  # doctest: +SKIP
+    'rad/s'
     """
     from hsbearing import systems  # the registry: [case] system -> its package (hsbearing/systems/)
 
@@ -49,14 +58,31 @@ def simulate(case, duration=None, *, progress: bool = False, **kwargs):
 
 
 def quasi_static(case, **kwargs):
-    """High-speed quasi-static equilibrium of the case (Jones-Harris) as a Dataset over ``ball``."""
+    """High-speed quasi-static equilibrium of the case (Jones-Harris) as a Dataset over ``ball``.
+
+    Examples
+    --------
+    The default case: 11 balls at 1 kN axial load share it equally (about 182 N at the inner contact):
+
+    >>> import hsbearing
+    >>> qs = hsbearing.quasi_static("zhang2016")  # doctest: +SKIP
+    >>> print(f"{float(qs.inner_contact_load[0]):.1f} N")  # doctest: +SKIP
+    182.0 N
+    """
     from hsbearing.systems.angular_contact import quasistatic
 
     return quasistatic.solve_case(as_case(case), **kwargs)
 
 
 def sweep(case, vary, **kwargs):
-    """Cartesian (or zipped) sweep over case keys; see :func:`hsbearing.workflows.sweeps.run_sweep`."""
+    """Cartesian (or zipped) sweep over case keys; see :func:`hsbearing.workflows.sweeps.run_sweep`.
+
+    Examples
+    --------
+    >>> import hsbearing
+    >>> sw = hsbearing.sweep("zhang2016", {"operating.axial_load": ["500 N", "1 kN"]},
+    ...                      kind="quasistatic", out_dir="runs/fa")  # doctest: +SKIP
+    """
     from hsbearing.workflows import sweeps
 
     return sweeps.run_sweep(case, vary, **kwargs)

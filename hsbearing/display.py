@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["format_value", "format_quantity", "format_seconds", "format_solver_stats"]
+__all__ = ["format_value", "format_quantity", "format_seconds", "format_solver_stats", "format_life", "format_grouped"]
 
 _RPM = 60.0 / (2.0 * math.pi)
 MICRO = "\u00b5"
@@ -59,6 +59,49 @@ def format_quantity(value, units: str, name: str = "", digits: int = 4) -> str:
     if u == "s":
         return format_seconds(v)
     return f"{g.format(v)} {u}"
+
+
+def format_life(million_revolutions, digits: int = 4) -> str:
+    """A rating life given in 10^6 revolutions as text: ``13630.4 -> "13 630 million rev"``.
+
+    Four significant digits, thousands grouped by a space (ISO 80000-1), no exponent between 0.001 and 10^9;
+    outside that range the exponent is written out (``"1.363 x 10^12 million rev"``).  Non-finite -> ``"nan"``.
+
+    Examples
+    --------
+    >>> format_life(13630.4)
+    '13 630 million rev'
+    >>> format_life(0.5432)
+    '0.5432 million rev'
+    >>> format_life(1.363e12)
+    '1.363 x 10^12 million rev'
+    """
+    return format_grouped(million_revolutions, "million rev", digits)
+
+
+def format_grouped(value, unit: str, digits: int = 4) -> str:
+    """``value`` to ``digits`` significant digits, thousands grouped by a space, then ``unit``; an exponent
+    (``"1.363 x 10^12 h"``) only below 0.001 or from 10^9 on.  Used for lives (million rev, hours).
+
+    Examples
+    --------
+    >>> format_grouped(16234.7, "h")
+    '16 230 h'
+    """
+    x = float(value)
+    if not math.isfinite(x):
+        return "nan"
+    a = abs(x)
+    if a and (a < 1e-3 or a >= 1e9):
+        e = int(math.floor(math.log10(a)))
+        return f"{x / 10**e:.{digits - 1}f} x 10^{e} {unit}"
+    if a == 0:
+        return f"0 {unit}"
+    x = float(f"{x:.{digits - 1}e}")  # rounded to the significant digits (16234.7 -> 16230, 999.96 -> 1000)
+    exponent = int(math.floor(math.log10(abs(x))))
+    decimals = max(0, digits - 1 - exponent)
+    text = f"{x:,.{decimals}f}".replace(",", " ")
+    return f"{text} {unit}"
 
 
 def format_value(var, name: str = "", digits: int = 4) -> str:

@@ -76,7 +76,7 @@ TRACTION_KEYS_BY_MODEL = {
 TRACTION_KEYS = tuple(dict.fromkeys(k for keys in TRACTION_KEYS_BY_MODEL.values() for k in keys))
 #: A measured table must be followed by its fitted seed form within max(TABLE_FIT_ABS, TABLE_FIT_REL * max mu).
 TABLE_FIT_ABS, TABLE_FIT_REL = 0.002, 0.1
-#: |T_case - T_stated| beyond which ``hsbearing check`` warns that user traction data is used outside its conditions [K].
+#: abs(T_case - T_stated) beyond which ``hsbearing check`` warns that user traction data is used outside its conditions [K].
 CONDITIONS_WARN_DT = 10.0
 
 WALTHER_OFFSET = 0.7  # [mm^2/s], ASTM D341 [1]

@@ -53,6 +53,17 @@ def theoretical_cage_speed(geom, inner_speed, outer_speed=0.0, alpha=None):
     numpy.ndarray or float
         omega_c,th = 1/2 [omega_i (1 - gamma) + omega_o (1 + gamma)] [rad/s]
         ([1], Eq. 8.21), broadcast over the inputs.
+
+    Examples
+    --------
+    The default case at 14000 r/min, with the nominal 25 deg contact angle:
+
+    >>> import math, hsbearing
+    >>> from hsbearing.analysis import theoretical_cage_speed
+    >>> case = hsbearing.load_case("zhang2016")
+    >>> w_c = theoretical_cage_speed(case, 14000 * 2 * math.pi / 60)
+    >>> print(f"{float(w_c) * 60 / (2 * math.pi):.1f} r/min")
+    5686.3 r/min
     """
     if not hasattr(geom, "dm"):
         from hsbearing.models.geometry import derive
@@ -83,6 +94,14 @@ def cage_slip_ratio(cage_speed, theoretical):
     -------
     numpy.ndarray or float
         Dimensionless slip ratio ([2], Sec. 5; definition as in Gupta 1984 Ch. 6).
+
+    Examples
+    --------
+    A cage turning at 5700 r/min where pure rolling gives 5686 r/min runs ahead of it (negative slip):
+
+    >>> from hsbearing.analysis import cage_slip_ratio
+    >>> print(f"{float(cage_slip_ratio(5700.0, 5686.3)) * 100:.2f} %")
+    -0.24 %
     """
     wc = np.asarray(cage_speed, dtype=float)
     th = np.asarray(theoretical, dtype=float)

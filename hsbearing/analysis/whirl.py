@@ -256,7 +256,8 @@ def classify_motion(t, y, z, vy=None, vz=None, cage_angle=None, *, clearance: fl
 
 #: Closed vocabulary of ``classification_detail`` (the sub-label of a class; '' when there is none).
 #: "1 period" (Zhang et al. 2016, Figs. 5a, 6a, 8b, 9b, 11a: "single circle whirl" + one Poincare point) is
-#: split into what the section alone cannot tell apart:
+#: split into what the section alone cannot tell apart::
+#:
 #:   "still cage"            the cage centre does not move (fixed point, concentric or offset);
 #:   "synchronous whirl"     a single-circle whirl at (within ratio_tol) the cage speed, either sense: the
 #:                           paper's "1 period" (Fig. 5a);

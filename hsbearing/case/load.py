@@ -117,7 +117,14 @@ def _cases_dir() -> Path:
 
 
 def list_cases() -> dict[str, str]:
-    """Bundled case names -> one-line description."""
+    """Bundled case names -> one-line description.
+
+    Examples
+    --------
+    >>> import hsbearing
+    >>> sorted(hsbearing.list_cases())
+    ['dgbb_6206', 'dgbb_6207', 'dgbb_6208', 'jiang2014_gyro', 'shan2010_wire_race', 'zhang2016']
+    """
     out = {}
     for p in sorted(_cases_dir().glob("*.toml")):
         try:
@@ -161,6 +168,20 @@ def load_case(name_or_path: str | Path | None = None, /, **overrides) -> Case:
         file, or None for the default case.
     **overrides : ``{"operating.axial_load": "2 kN"}``; a bare key such as
         ``axial_load`` is accepted when it names exactly one table's key.
+
+    Returns
+    -------
+    Case
+        Frozen dataclasses in SI units (speeds in rad/s, loads in N, lengths in m).
+
+    Examples
+    --------
+    >>> import hsbearing
+    >>> case = hsbearing.load_case("zhang2016", axial_load="2 kN")
+    >>> case.operating.axial_load, case.lubricant.oil, case.bearing.ball_count
+    (2000.0, '4109', 11)
+    >>> print(f"{case.operating.inner_speed * 60 / (2 * 3.141592653589793):.0f} r/min")
+    14000 r/min
     """
     path = case_path(name_or_path or DEFAULT_CASE)
     return _build(read_case_text(path), str(path), overrides)

@@ -8,6 +8,7 @@ References
     centres A = B D, total curvature B = f_i + f_o - 1), 2.10 (free contact
     angle cos alpha_0 = 1 - P_d / (2 A)); Ch. 2.4 curvature sums
     (Eqs. 2.27-2.31).
+
 [2] Hamrock B. J., Dowson D., *Ball Bearing Lubrication*, Wiley 1981, Ch. 2-3.
 
 All results SI.  gamma = D cos(alpha) / d_m.

@@ -25,8 +25,8 @@ References
 [2] ISO 76:2006, *Rolling bearings -- Static load ratings*: C_0r = f_0 i Z D_w^2
     cos alpha (Table 1, same f_0 as [1] Table 4), based on 4 200 MPa at the
     centre of the most heavily loaded ball contact.
-[3] ISO/TS 16281:2008, *Methods for calculating the modified reference rating
-    life for universally loaded bearings*, 4.3 (ball bearings): basic dynamic
+[3] ISO/TS 16281:2008, *Methods for calculating the modified reference rating life for universally loaded bearings*,
+    4.3 (ball bearings): basic dynamic
     load rating of the inner and outer raceway contact
     Q_ci = 98.1 (2 r_i/(2 r_i - D_w))^0.41 (1 - gamma)^1.39/(1 + gamma)^(1/3) (gamma/cos alpha)^0.3 D_w^1.8 Z^(-1/3),
     Q_ce = 98.1 (2 r_e/(2 r_e - D_w))^0.41 (1 + gamma)^1.39/(1 - gamma)^(1/3) (gamma/cos alpha)^0.3 D_w^1.8 Z^(-1/3);

@@ -98,19 +98,34 @@ def _check_temperature(T):
 def get(oil, law: str = "default"):
     """Traction law of an oil as a callable ``mu(S, W, U, T, E, R)``.
 
-    Parameters of the callable (SI, broadcastable arrays)
-    ------------------------------------------------------
-    S : signed slide-roll ratio (U_1 - U_2)/U [-]; mu has the sign of S
-    W : normal contact load [N]
-    U : rolling (entrainment) velocity (U_1 + U_2)/2 [m/s]
-    T : lubricant inlet temperature [K] (the seed's laws use degC internally)
-    E : reduced modulus E' = 2/((1-nu1^2)/E1 + (1-nu2^2)/E2) [Pa]
-        (:func:`hsbearing.models.hertz.reduced_modulus`)
-    R : effective radius of curvature in the rolling direction Rx [m]
+    Parameters
+    ----------
+    oil : str
+        A registered oil: ``"4109"``, ``"4106"`` or ``"4050"`` (Zhang et al. 2016, Table 1).
+    law : str
+        ``"default"`` (see docs/traction.md), ``"printed"`` (the paper's equation as printed) or another name
+        in :data:`KNOWN_LAWS`.  Unknown oil or law -> ValueError listing the known ones.
 
-    ``law``: "default" (see docs/traction.md), "printed" (the seed's equation
-    as printed) or another name in :data:`KNOWN_LAWS`.  Unknown oil or law ->
-    ValueError listing the known ones.
+    Returns
+    -------
+    callable
+        ``mu(S, W, U, T, E, R)`` with SI, broadcastable arguments: S the signed slide-roll ratio
+        (U_1 - U_2)/U [-] (mu has the sign of S); W the normal contact load [N]; U the rolling (entrainment)
+        velocity (U_1 + U_2)/2 [m/s]; T the lubricant inlet temperature [K] (the laws of Zhang et al. 2016
+        use degC internally); E the reduced modulus E' = 2/((1-nu1^2)/E1 + (1-nu2^2)/E2) [Pa]
+        (:func:`hsbearing.models.hertz.reduced_modulus`); R the effective radius of curvature in the rolling
+        direction Rx [m].
+
+    Examples
+    --------
+    Oil 4109 at 130 degC (403.15 K), 500 N, 16.3 m/s, 5 % slide-roll ratio; mu is odd in S:
+
+    >>> from hsbearing.models import traction
+    >>> mu = traction.get("4109")
+    >>> print(f"{float(mu(0.05, 500.0, 16.3, 403.15, 2.286e11, 3.87e-3)):.4f}")
+    0.0090
+    >>> print(f"{float(mu(-0.05, 500.0, 16.3, 403.15, 2.286e11, 3.87e-3)):.4f}")
+    -0.0090
     """
     oil, name = _resolve(oil, law)
     if not is_seed_law(name):

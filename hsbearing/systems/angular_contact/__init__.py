@@ -60,15 +60,15 @@ def friction_command(case, args) -> int:
     from hsbearing.systems.angular_contact.rating import CAVITY_SOURCES
 
     srcs = [s for s in tuple(SOURCES) + CAVITY_SOURCES if np.any(np.abs(ds[f"qs_power_loss_{s}"].values) > 1e-9)]
-    head = ["n [r/min]"] + [f"{s} [W]" for s in srcs] + ["total [W]", "M [N mm]", "SKF M_rr", "SKF M_sl", "SKF M [N mm]", "SKF P [W]"]
+    head = ["n [r/min]"] + [f"{s} [W]" for s in srcs] + ["total [W]", "M [N mm]", "SKF M_rr [N mm]", "SKF M_sl [N mm]", "SKF M [N mm]", "SKF P [W]"]
     print("quasi-static power loss by source | SKF 2004 (72xx angular contact)")
-    print("  ".join(f"{h:>14s}" for h in head))
+    print("  ".join(f"{h:>16s}" for h in head))
     for i, wi in enumerate(ds["speed"].values):
-        row = [f"{rpm(wi):14.0f}"] + [f"{ds[f'qs_power_loss_{s}'].values[i]:14.4g}" for s in srcs]
+        row = [f"{rpm(wi):16.0f}"] + [f"{ds[f'qs_power_loss_{s}'].values[i]:16.4g}" for s in srcs]
         M = ds.qs_friction_torque.values[i]
-        row += [f"{ds.qs_power_loss.values[i]:14.4g}", f"{M * 1e3:14.4g}" if np.isfinite(M) else f"{'n/a (0 r/min)':>14s}",
-                f"{ds.skf_rolling_torque.values[i] * 1e3:14.4g}", f"{ds.skf_sliding_torque.values[i] * 1e3:14.4g}",
-                f"{ds.skf_total_torque.values[i] * 1e3:14.4g}", f"{ds.skf_total_torque.values[i] * abs(wi):14.4g}"]
+        row += [f"{ds.qs_power_loss.values[i]:16.4g}", f"{M * 1e3:16.4g}" if np.isfinite(M) else f"{'n/a (0 r/min)':>16s}",
+                f"{ds.skf_rolling_torque.values[i] * 1e3:16.4g}", f"{ds.skf_sliding_torque.values[i] * 1e3:16.4g}",
+                f"{ds.skf_total_torque.values[i] * 1e3:16.4g}", f"{ds.skf_total_torque.values[i] * abs(wi):16.4g}"]
         print("  ".join(row))
     print("split of both totals into the SKF terms [W] (ours: rolling = ehl_rolling + contact_damping; sliding = "
           "race_traction + pocket_film + pocket_boundary + guide_land; drag = ball drag + jet_oil_acceleration + cage_windage; seals: none modelled)")

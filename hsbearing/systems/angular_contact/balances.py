@@ -84,12 +84,14 @@ def power_variables(aux: np.ndarray, gaux: np.ndarray, outer_guided: bool = True
 
 def power_summary_lines(ds) -> list[str]:
     """Lines of the ``hsbearing run`` summary: drive torque and power loss by source, means over the second half."""
+    from hsbearing.display import format_quantity
+
     if "drive_torque" not in ds or ds.sizes.get("time", 0) < 2:
         return []
     t = ds["time"].values
     sel = ds.isel(time=slice(int(np.searchsorted(t, 0.5 * t[-1])), None))
     lines = [f"mean over t = {float(sel.time[0]) * 1e3:.4g}..{float(t[-1]) * 1e3:.4g} ms:",
-             f"  drive_torque: {float(sel.drive_torque.mean()):.4g} N m (shaft torque, positive when driving)",
+             f"  drive_torque: {format_quantity(float(sel.drive_torque.mean()), 'N m')} (shaft torque, positive when driving)",
              f"  drive_power: {float(sel.drive_power.mean()):.4g} W",
              f"  power_loss: {float(sel.power_loss.mean()):.4g} W, by source:"]
     for s in SOURCES:

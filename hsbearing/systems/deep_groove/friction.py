@@ -198,16 +198,18 @@ def friction_command(case, args) -> int:
     print(f"case {case.name}: Fa = {abs(case.operating.axial_load):g} N, Fr = {math.hypot(case.operating.radial_load, case.operating.radial_load_z):g} N, "
           f"law = {case.friction.law}" + (f", nu = {case.lubricant.kinematic_viscosity * 1e6:g} mm^2/s"
                                           if case.lubricant.kinematic_viscosity else ""))
-    cols = [("n [r/min]", None), ("mu", "sliding_coefficient"), ("M_s", "spinning_torque"), ("M_r", "rotation_sliding_torque"),
-            ("M_d", "orbital_sliding_torque"), ("M_sl", "sliding_torque"), ("SKF M_sl", "skf_sliding_torque"),
-            ("SKF M_rr", "skf_rolling_torque"), ("SKF M_drag", "skf_drag_torque"), ("SKF M", "skf_total_torque")]
+    cols = [("n [r/min]", None), ("mu [-]", "sliding_coefficient"), ("M_s [N mm]", "spinning_torque"),
+            ("M_r [N mm]", "rotation_sliding_torque"), ("M_d [N mm]", "orbital_sliding_torque"),
+            ("M_sl [N mm]", "sliding_torque"), ("SKF M_sl [N mm]", "skf_sliding_torque"),
+            ("SKF M_rr [N mm]", "skf_rolling_torque"), ("SKF M_drag [N mm]", "skf_drag_torque"),
+            ("SKF M [N mm]", "skf_total_torque")]
     print("torques in N mm")
-    print("  ".join(f"{h:>10s}" for h, _ in cols))
+    print("  ".join(f"{h:>17s}" for h, _ in cols))
     for i, wi in enumerate(ds["speed"].values):
-        row = [f"{wi * 60 / (2 * math.pi):10.0f}"]
+        row = [f"{wi * 60 / (2 * math.pi):17.0f}"]
         for _, name in cols[1:]:
             v = float(ds[name].values[i])
-            row.append(f"{v:10.4f}" if name.endswith("coefficient") else f"{v * 1e3:10.4f}")
+            row.append(f"{v:17.4f}" if name.endswith("coefficient") else f"{v * 1e3:17.4f}")
         print("  ".join(row))
     if args.output:
         write_netcdf(ds, args.output)
