@@ -10,7 +10,7 @@ import json
 
 import numpy as np
 import pytest
-from test_analysis import cage_run  # tests/ is on sys.path (pytest "prepend" import mode)
+from synthetic_runs import cage_run  # tests/helpers (conftest.py)
 
 import hsbearing
 from hsbearing.analysis import annotate

@@ -15,14 +15,12 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from synthetic_runs import cage_run  # tests/helpers (conftest.py)
 
 import hsbearing
 from hsbearing import cli, plotting, systems
 from hsbearing.analysis import annotate
 from hsbearing.results import ATTR_UNITS, make_dataset, open_run, standard_attrs, write_netcdf
-
-sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
-from test_analysis import cage_run  # noqa: E402  (shared synthetic-run builder)
 
 _RPM = 60 / (2 * math.pi)
 

@@ -2,18 +2,14 @@
 
 from __future__ import annotations
 
-import sys
-
 import numpy as np
 import pytest
+from synthetic_runs import cage_run  # tests/helpers (conftest.py)
 
 import hsbearing
 from hsbearing import plotting, systems
 from hsbearing.analysis import annotate
 from hsbearing.results import make_dataset, standard_attrs, write_netcdf
-
-sys.path.insert(0, str(__import__("pathlib").Path(__file__).resolve().parents[1]))
-from test_analysis import cage_run  # noqa: E402  (shared synthetic-run builder)
 
 
 @pytest.fixture(scope="module")
