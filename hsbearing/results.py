@@ -192,7 +192,18 @@ def standard_attrs(case=None, status: str = "ok", **extra) -> dict[str, Any]:
         attrs["case_system"] = case.system
         attrs["case_toml"] = case.to_toml()
         attrs["case_source"] = _absolute_source(case.source)
+        if hasattr(case, "lubricant"):  # the oil by its own name and where its data come from
+            from hsbearing.lubricant import identity_attrs
+
+            attrs.update(identity_attrs(case))
     attrs.update(extra)
+    if case is not None and hasattr(case, "lubricant"):  # the sanity envelope (case.envelope_warnings): warned, kept
+        from hsbearing.case import envelope_warnings
+
+        env = envelope_warnings(case)
+        if env:
+            have = [w for w in str(attrs.get("warnings", "none")).split(" | ") if w and w != "none"]
+            attrs["warnings"] = " | ".join(have + [w for w in env if w not in have])
     return _clean_attrs(attrs)
 
 

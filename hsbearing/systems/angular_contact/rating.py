@@ -182,8 +182,13 @@ def life_cli(args) -> int:
     out = getattr(args, "output", None)
     check_archive_name(out)
     ds = life(case)
+    from hsbearing.lubricant import header_lines, oil_label
+
     print(f"case {case.name}: Fa = {abs(case.operating.axial_load):g} N, Fr = "
-          f"{math.hypot(case.operating.radial_load, case.operating.radial_load_z):g} N")
+          f"{math.hypot(case.operating.radial_load, case.operating.radial_load_z):g} N, {oil_label(case.lubricant)} at "
+          f"{case.lubricant.temperature - 273.15:.4g} degC")
+    for line in header_lines(case):
+        print(line)
     print("\n".join(life_lines(ds)))
     if out:
         write_netcdf(ds, out)
