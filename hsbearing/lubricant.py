@@ -63,7 +63,6 @@ __all__ = [
     "header_lines",
     "header_lines_of_archive",
     "TEMPLATE",
-    "write_template",
 ]
 
 #: Correlations accepted as ``pressure_viscosity_coefficient = "<name>"`` (an estimate, flagged as such).
@@ -808,12 +807,3 @@ oil = "4106"
 law = "default"
 '''
 
-
-def write_template(path) -> Path:
-    """Write :data:`TEMPLATE` to ``path`` (atomic; the caller checks the path first).  Returns the path."""
-    from hsbearing.results import atomic_write
-
-    path = Path(path)
-    with atomic_write(path) as tmp:
-        tmp.write_text(TEMPLATE, encoding="utf-8")
-    return path

@@ -107,6 +107,17 @@ class Case:
         """The case as TOML text, overrides applied (round-trips through :func:`load_case`)."""
         return dump_toml(self.raw)
 
+    def archive_attrs(self) -> dict:
+        """What every archive of this case says besides the case text (``results.standard_attrs`` asks for it):
+        the oil by its own name with its provenance and notices (:func:`hsbearing.lubricant.identity_attrs`) and
+        ``envelope_warnings`` (the lines of :func:`hsbearing.case.checks.envelope_warnings`)."""
+        from hsbearing.case.checks import envelope_warnings
+        from hsbearing.lubricant import identity_attrs
+
+        out = dict(identity_attrs(self))
+        out["envelope_warnings"] = envelope_warnings(self)
+        return out
+
 
 # ----------------------------------------------------------------------------
 # loading

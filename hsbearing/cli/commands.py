@@ -40,11 +40,10 @@ def cmd_oils(args) -> int:
     if getattr(args, "template", None):
         if args.name or args.at:
             raise CaseError("--template", None, "takes no lubricant NAME and no --at: hsbearing oils --template FILE")
-        from hsbearing import lubricant
         from hsbearing.results import check_output_path
 
         check_output_path(args.template, source="--template")
-        path = lubricant.write_template(args.template)
+        path = oils.write_template(args.template)
         print(f"lubricant template: {path} (format: docs/traction.md, 'Lubricant files'); fill in your oil's data, "
               f"check it with 'hsbearing oils {path}' and use it with --set lubricant.file={path}")
         return 0
