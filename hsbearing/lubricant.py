@@ -681,13 +681,27 @@ def oil_label(lub) -> str:
     return d.name if d is not None and d.name else f"oil {lub.oil}"
 
 
+def _resolved_law(lub) -> str:
+    """The concrete traction law of a built-in oil ("default" -> e.g. "analogue_4106_percent" for 4050)."""
+    from hsbearing.models import traction
+
+    law = str(getattr(lub, "traction_law", "default") or "default")
+    try:
+        return str(traction.law_name(str(lub.oil), law))
+    except (KeyError, ValueError):
+        return law
+
+
 def provenance(lub) -> str:
     """Where the oil's data come from, in one phrase: viscosity and alpha (measured / data sheet / estimated) and
     traction (the oil's own, or borrowed from a registered oil)."""
     d = getattr(lub, "definition", None)
     if d is None:
-        return (f"built-in oil {lub.oil}: viscosity, alpha and traction curve fits of Zhang et al. 2016 "
-                "(measured traction, Table 2)")
+        law = _resolved_law(lub)
+        if law.startswith("analogue_4106"):
+            return (f"built-in oil {lub.oil}: oil data of Zhang et al. 2016 Table 1; traction by 4106's fit form (Eq. 3) "
+                    f"with {lub.oil}'s own data, law {law} (docs/traction.md)")
+        return f"built-in oil {lub.oil}: oil data of Zhang et al. 2016 Table 1 and its traction fit (Eqs. 1-4), law {law}"
     parts = [f"lubricant file {Path(d.path).name}" + (f" ({d.source})" if d.source else "")]
     parts.append("alpha estimated (" + d.alpha_estimate + ")" if d.alpha_estimated else "alpha given")
     if d.traction_model == "zhang2016":
@@ -707,6 +721,11 @@ def notices(lub, raw_lubricant: dict | None = None) -> list[str]:
     ``raw_lubricant``: the case file's ``[lubricant]`` table (a value the case sets itself wins over the file)."""
     d = getattr(lub, "definition", None)
     if d is None:
+        law = _resolved_law(lub)
+        if law.startswith("analogue_4106"):
+            return [f"notice: the traction of oil {lub.oil} borrows the fit form of oil 4106 (Zhang et al. 2016 Eq. 3, "
+                    f"law {law}) with {lub.oil}'s own Table 1 data: its Eq. 4 as printed is no traction curve "
+                    "(docs/traction.md)"]
         return []
     raw = raw_lubricant or {}
     out = []
@@ -724,10 +743,13 @@ def notices(lub, raw_lubricant: dict | None = None) -> list[str]:
 
 def identity_attrs(case) -> dict:
     """Global attributes naming a case's oil in an archive: ``lubricant_name``, ``lubricant_provenance`` and
-    ``lubricant_notices`` (the :func:`notices` joined by ' | ', or 'none')."""
+    ``lubricant_notices`` (the :func:`notices` joined by ' | ', or 'none').  Empty where the model reads no
+    data of the named oil (wire race; deep-groove and gyro cases without a lubricant file)."""
     lub = getattr(case, "lubricant", None)
     if lub is None or getattr(case, "system", "") == "wire_race":  # the wire-race model uses no lubricant data
         return {}
+    if getattr(case, "system", "") != "angular_contact" and getattr(lub, "definition", None) is None:
+        return {}  # the deep-groove and gyro models carry the oil name as a placeholder (their own viscosity)
     ns = notices(lub, (getattr(case, "raw", None) or {}).get("lubricant", {}))
     return {"lubricant_name": oil_name(lub), "lubricant_provenance": provenance(lub),
             "lubricant_notices": " | ".join(n.removeprefix("notice: ") for n in ns) if ns else "none"}

@@ -54,6 +54,8 @@ def test_built_in_oil_keeps_its_number_and_gets_no_notice():
     assert lubricant.oil_label(case.lubricant) == "oil 4109"
     assert lubricant.notices(case.lubricant) == []
     assert lubricant.identity_attrs(case)["lubricant_notices"] == "none"
+    ns = lubricant.notices(load_case("zhang2016", oil="4050").lubricant)  # 4050's traction is 4106's fit form
+    assert len(ns) == 1 and "fit form of oil 4106" in ns[0]
 
 
 def test_figure_titles_read_the_oils_name_from_the_archived_case():
