@@ -30,6 +30,9 @@ __all__ = [
     "sweep",
     "open_run",
     "dynamic_model",
+    "friction",
+    "thermal",
+    "life",
 ]
 
 
@@ -93,3 +96,83 @@ def dynamic_model(case):
     from hsbearing.systems.angular_contact import dynamics
 
     return dynamics.build_model(as_case(case))
+
+
+def friction(case, speeds=None, **overrides):
+    """Quasi-static power loss by source and the SKF 2004 frictional moment over inner-ring speeds (what
+    ``hsbearing friction CASE`` computes for an angular-contact case).
+
+    Parameters
+    ----------
+    case : a :class:`Case`, a bundled case name or a case file path.
+    speeds : inner-ring speeds: unit strings (``"10000 rpm"``, ``"5000,14000rpm"``), a pint Quantity, SI floats
+        [rad/s] or a list of them; None = the case's ``operating.inner_speed``.
+    **overrides : case values (``axial_load="2 kN"``, ``oil="4106"``, ``temperature=373.15``): unit strings,
+        pint Quantities or SI floats, as :func:`load_case`.
+
+    Returns
+    -------
+    xr.Dataset over ``speed``: ``qs_power_loss`` and ``qs_power_loss_<source>`` [W], ``qs_friction_torque`` and the
+    ``skf_*`` moments [N m]; attrs name the oil (``lubricant_name``, ``lubricant_provenance``) and the ``warnings``.
+    """
+    import numpy as np
+
+    from hsbearing.systems.angular_contact.rating import friction_angular_contact
+
+    c = as_case(case, overrides)
+    if c.system != "angular_contact":
+        raise CaseError(c.source, "case.system", f"hsbearing.friction is the angular-contact model; {c.system} cases: "
+                                                 "the command hsbearing friction")
+    if speeds is None:
+        speeds = np.array([abs(c.operating.inner_speed)])
+    return friction_angular_contact(c, speeds)
+
+
+def thermal(case, *, lubricant_temperature_start=None, **overrides):
+    """Thermal equilibrium of the bearing (``hsbearing thermal CASE``): the fixed point of the quasi-static power
+    loss and the thermal network (docs/thermal.md).
+
+    Parameters
+    ----------
+    case : a :class:`Case`, a bundled case name or a case file path.
+    lubricant_temperature_start : temperature of the first iteration: unit string, pint Quantity or kelvin; None =
+        the oil inlet temperature.
+    **overrides : case values (``oil_flow_rate="1 L/min"``, ``inner_speed=1466.1``): unit strings, pint Quantities
+        or SI floats.
+
+    Returns
+    -------
+    xr.Dataset: node temperatures [K], heat by link [W], the power loss by source at equilibrium; its ``status``
+    says whether a steady state exists.
+    """
+    from hsbearing.systems.angular_contact.thermal import check_inputs, thermal_equilibrium
+
+    c = as_case(case, overrides)
+    check_inputs(c)
+    T0 = None
+    if lubricant_temperature_start is not None:
+        from hsbearing.case.load import _override_literal
+        from hsbearing.units import parse_quantity
+
+        lit = _override_literal("temperature", lubricant_temperature_start)
+        T0 = parse_quantity(lit, "temperature", source="lubricant_temperature_start")
+    return thermal_equilibrium(c, T_start=T0)
+
+
+def life(case, *, quasistatic: bool = True, **overrides):
+    """ISO 281 and ISO/TS 16281 rating lives of a radial ball-bearing case (``hsbearing life CASE``).
+
+    Parameters
+    ----------
+    case : a :class:`Case`, a bundled case name or a case file path (angular_contact, deep_groove).
+    quasistatic : also compute the ISO/TS 16281 reference lives from the quasi-static contact loads.
+    **overrides : case values (``axial_load="2 kN"``, ``radial_load=500.0``): unit strings, pint Quantities or SI
+        floats.
+
+    Returns
+    -------
+    xr.Dataset of scalars (L_10, L_10m [1e6 rev], a_ISO, kappa, ...) and per-ball raceway ratings.
+    """
+    from hsbearing.systems.angular_contact.rating import life as _life
+
+    return _life(as_case(case, overrides), quasistatic=quasistatic)

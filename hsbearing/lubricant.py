@@ -54,6 +54,15 @@ __all__ = [
     "resolve_lubricant",
     "so_klaus_alpha",
     "describe",
+    "oil_name",
+    "oil_label",
+    "provenance",
+    "notices",
+    "identity_attrs",
+    "name_in_case_text",
+    "header_lines",
+    "header_lines_of_archive",
+    "TEMPLATE",
 ]
 
 #: Correlations accepted as ``pressure_viscosity_coefficient = "<name>"`` (an estimate, flagged as such).
@@ -62,7 +71,7 @@ ALPHA_ESTIMATES = ("so_klaus_1980",)
 #: Top-level keys of a lubricant file.
 KEYS = ("name", "class", "description", "source", "density", "density_temperature",
         "density_temperature_coefficient", "viscosity", "viscosity_index", "pressure_viscosity_coefficient",
-        "thermal_conductivity", "traction")
+        "thermal_conductivity", "traction", "service_temperature")
 #: ``traction.model``: the registered curve fits (oil + law), the physical model, the seed form with user
 #: coefficients, a measured mu(S) table (fitted by the seed form).  docs/traction.md, "Lubricant files".
 TRACTION_MODELS = ("zhang2016", "eyring", "coefficients", "table")
@@ -127,6 +136,7 @@ class LubricantDefinition:
     traction_conditions: dict | None = None  #: stated conditions {"T": K, "W": N, "U": m/s} (None entries: not stated)
     table_fit_deviation: float | None = None  #: largest |fit - table| [-] (model "table")
     viscosity_index: float | None = None  #: VI as stated by the source (reported, not used)
+    service_range: tuple | None = None  #: (T_low, T_high) [K] the source states the oil for (envelope warning)
     text: str = field(default="", repr=False)  #: the file's TOML text
 
     @property
@@ -389,6 +399,15 @@ def loads_lubricant(text: str, source: str = "<lubricant>", *, default_name: str
         K = _q(raw["thermal_conductivity"], "thermal_conductivity", src, "thermal_conductivity")
         if not 0.01 <= K <= 1.0:
             raise CaseError(src, "thermal_conductivity", f"{K:g} W/(m K) is not an oil's (0.01-1 W/(m K); oils about 0.1-0.15)")
+    service = None
+    if "service_temperature" in raw:  # [low, high]: the range the source states the oil for (warned beyond it)
+        st = raw["service_temperature"]
+        if not isinstance(st, list) or len(st) != 2:
+            raise CaseError(src, "service_temperature", f'expected ["LOW degC", "HIGH degC"], got {st!r}')
+        lo_t, hi_t = (_q(v, "temperature", src, f"service_temperature[{i}]") for i, v in enumerate(st))
+        if not lo_t < hi_t:
+            raise CaseError(src, "service_temperature", "the low end must be below the high end")
+        service = (lo_t, hi_t)
     vi = raw.get("viscosity_index")
     if vi is not None and (isinstance(vi, bool) or not isinstance(vi, (int, float))):
         raise CaseError(src, "viscosity_index", f"expected a plain number, got {vi!r}")
@@ -449,7 +468,7 @@ def loads_lubricant(text: str, source: str = "<lubricant>", *, default_name: str
         density_coefficient=density_k, alpha_value=alpha_value, alpha_points=alpha_points,
         alpha_estimate=alpha_estimate, conductivity=K, viscosity_index=None if vi is None else float(vi), text=text,
         traction_model=model, eyring=eyring_params, coefficients=coefficients, traction_table=table,
-        traction_conditions=conditions, table_fit_deviation=fit_dev,
+        traction_conditions=conditions, table_fit_deviation=fit_dev, service_range=service,
     )
     # a Walther line must come out of the points (falling viscosity, finite coefficients)
     try:
@@ -605,6 +624,7 @@ def describe(case) -> list[str]:
     else:
         lines.append(f"lubricant: {d.name} ({d.oil_class or 'class not given'}) from {d.path}; "
                      f"traction: {traction_summary(d)}")
+    lines.append(f"  provenance: {provenance(lub)}")
     lines.append(f"  at {T - 273.15:.4g} degC: eta = {lp['eta'] * 1e3:.4g} mPa s, nu = {lp['eta'] / lub.density * 1e6:.4g} mm^2/s, "
                  f"rho = {lub.density:.4g} kg/m^3, alpha = {lp['alpha'] * 1e9:.4g} GPa^-1")
     if d is not None and d.density_ref is None and (case.raw or {}).get("lubricant", {}).get("density") is None:
@@ -643,3 +663,169 @@ def condition_warnings(d, T) -> list[str]:
         u = f"{c['U']:.4g} m/s" if c["U"] is not None else "speed not stated"
         out.append(f"  note: user traction stated at {w}, {u}; every contact uses it unscaled")
     return out
+
+
+# ----------------------------------------------------------------------------- the oil's identity and provenance
+
+
+def oil_name(lub) -> str:
+    """The name of a case's oil as users know it: a lubricant file's own ``name`` ("Mobil Jet Oil II", "ISO VG 32
+    data sheet"), else the built-in oil (``"4109"``).  ``lub`` is ``case.lubricant``."""
+    d = getattr(lub, "definition", None)
+    return d.name if d is not None and d.name else str(lub.oil)
+
+
+def oil_label(lub) -> str:
+    """``"oil 4109"`` for a built-in oil, the file's name otherwise (headers, titles)."""
+    d = getattr(lub, "definition", None)
+    return d.name if d is not None and d.name else f"oil {lub.oil}"
+
+
+def _resolved_law(lub) -> str:
+    """The concrete traction law of a built-in oil ("default" -> e.g. "analogue_4106_percent" for 4050)."""
+    from hsbearing.models import traction
+
+    law = str(getattr(lub, "traction_law", "default") or "default")
+    try:
+        return str(traction.law_name(str(lub.oil), law))
+    except (KeyError, ValueError):
+        return law
+
+
+def provenance(lub) -> str:
+    """Where the oil's data come from, in one phrase: viscosity and alpha (measured / data sheet / estimated) and
+    traction (the oil's own, or borrowed from a registered oil)."""
+    d = getattr(lub, "definition", None)
+    if d is None:
+        law = _resolved_law(lub)
+        if law.startswith("analogue_4106"):
+            return (f"built-in oil {lub.oil}: oil data of Zhang et al. 2016 Table 1; traction by 4106's fit form (Eq. 3) "
+                    f"with {lub.oil}'s own data, law {law} (docs/traction.md)")
+        return f"built-in oil {lub.oil}: oil data of Zhang et al. 2016 Table 1 and its traction fit (Eqs. 1-4), law {law}"
+    parts = [f"lubricant file {Path(d.path).name}" + (f" ({d.source})" if d.source else "")]
+    parts.append("alpha estimated (" + d.alpha_estimate + ")" if d.alpha_estimated else "alpha given")
+    if d.traction_model == "zhang2016":
+        parts.append(f"traction borrowed from oil {d.traction_oil} (law {d.traction_law})")
+    elif d.traction_model == "eyring":
+        parts.append("traction: physical model (eyring) with the file's parameters")
+    elif d.traction_model == "table":
+        parts.append("traction: the file's measured table (fitted seed form)")
+    else:
+        parts.append("traction: the file's seed-form coefficients")
+    return "; ".join(parts)
+
+
+def notices(lub, raw_lubricant: dict | None = None) -> list[str]:
+    """One line per thing a user must know before reading a result of this oil as its own: traction borrowed
+    from another oil, alpha estimated by a correlation, density taken from the case.  Empty for a built-in oil.
+    ``raw_lubricant``: the case file's ``[lubricant]`` table (a value the case sets itself wins over the file)."""
+    d = getattr(lub, "definition", None)
+    if d is None:
+        law = _resolved_law(lub)
+        if law.startswith("analogue_4106"):
+            return [f"notice: the traction of oil {lub.oil} borrows the fit form of oil 4106 (Zhang et al. 2016 Eq. 3, "
+                    f"law {law}) with {lub.oil}'s own Table 1 data: its Eq. 4 as printed is no traction curve "
+                    "(docs/traction.md)"]
+        return []
+    raw = raw_lubricant or {}
+    out = []
+    if d.traction_model == "zhang2016":
+        out.append(f"notice: the traction of {d.name} is borrowed from oil {d.traction_oil} (its {d.traction_law} "
+                   f"curve fit, Zhang et al. 2016): no traction measured on {d.name} is used, so its race traction is "
+                   f"{d.traction_oil}'s, not a result for {d.name}")
+    if d.alpha_estimated and "pressure_viscosity_coefficient" not in raw:
+        out.append(f"notice: the pressure-viscosity coefficient alpha of {d.name} is estimated ({d.alpha_estimate} "
+                   "correlation), not measured")
+    if d.density_ref is None and "density" not in raw:
+        out.append(f"notice: {d.name} gives no density: the case's lubricant.density {lub.density:g} kg/m^3 is used")
+    return out
+
+
+def identity_attrs(case) -> dict:
+    """Global attributes naming a case's oil in an archive: ``lubricant_name``, ``lubricant_provenance`` and
+    ``lubricant_notices`` (the :func:`notices` joined by ' | ', or 'none').  Empty where the model reads no
+    data of the named oil (wire race; deep-groove and gyro cases without a lubricant file)."""
+    lub = getattr(case, "lubricant", None)
+    if lub is None or getattr(case, "system", "") == "wire_race":  # the wire-race model uses no lubricant data
+        return {}
+    if getattr(case, "system", "") != "angular_contact" and getattr(lub, "definition", None) is None:
+        return {}  # the deep-groove and gyro models carry the oil name as a placeholder (their own viscosity)
+    ns = notices(lub, (getattr(case, "raw", None) or {}).get("lubricant", {}))
+    return {"lubricant_name": oil_name(lub), "lubricant_provenance": provenance(lub),
+            "lubricant_notices": " | ".join(n.removeprefix("notice: ") for n in ns) if ns else "none"}
+
+
+def name_in_case_text(lubricant_table: dict) -> str | None:
+    """The oil's name from the ``[lubricant]`` table of an archived case (its embedded ``file_text``), for
+    figures drawn from an archive; None when the table names no lubricant file."""
+    text = lubricant_table.get("file_text")
+    if not text:
+        return None
+    try:
+        name = tomllib.loads(text).get("name")
+    except tomllib.TOMLDecodeError:
+        return None
+    return str(name) if name else None
+
+
+def header_lines(case) -> list[str]:
+    """The lines every command prints about its oil: ``lubricant: NAME (provenance)`` and the :func:`notices`."""
+    a = identity_attrs(case)
+    if not a:
+        return []
+    out = [f"lubricant: {a['lubricant_name']} ({a['lubricant_provenance']})"]
+    if a["lubricant_notices"] != "none":
+        out += [f"notice: {n}" for n in a["lubricant_notices"].split(" | ")]
+    return out
+
+
+def header_lines_of_archive(attrs) -> list[str]:
+    """:func:`header_lines` from an archive's global attributes (``lubricant_name`` ...); [] for an older archive."""
+    if "lubricant_name" not in attrs:
+        return []
+    out = [f"lubricant: {attrs['lubricant_name']} ({attrs.get('lubricant_provenance', '')})"]
+    if attrs.get("lubricant_notices", "none") != "none":
+        out += [f"notice: {n}" for n in str(attrs["lubricant_notices"]).split(" | ")]
+    return out
+
+
+#: ``hsbearing oils --template FILE``: a lubricant file to fill in from a data sheet (it loads as it stands: the
+#: numbers are those of an ISO VG 32 mineral turbine oil; replace them with your oil's).  Format: docs/traction.md,
+#: "Lubricant files".
+TEMPLATE = '''# A lubricant file for hsbearing (format: docs/traction.md, "Lubricant files"; check it with
+#   hsbearing oils THIS_FILE          and use it with   hsbearing run --set lubricant.file=THIS_FILE).
+# Every quantity is a string with units; write where each number comes from in a comment.
+# The numbers below are an ISO VG 32 mineral oil's data sheet: replace them with your oil's.
+
+name = "ISO VG 32 (data sheet)"      # printed in every summary, header, figure and archive
+class = "ISO VG 32 mineral oil"      # free text
+description = "turbine / spindle oil, typical values"   # optional
+source = "supplier data sheet, typical properties"      # optional: where the numbers come from
+
+# kinematic viscosity at two temperatures or more (ASTM D341 / Walther line through them); or dynamic ("mPa*s")
+viscosity = [["40 degC", "32 mm^2/s"], ["100 degC", "5.4 mm^2/s"]]
+
+# density at a stated temperature (default 15 degC); optional: without it the case's lubricant.density is used
+density = "860 kg/m^3"
+density_temperature = "15 degC"
+# density_temperature_coefficient = "7e-4 1/K"   # rho = rho_ref (1 - k (T - T_ref)); default 0
+
+# pressure-viscosity coefficient alpha: a value ("1.8e-8 1/Pa"), [[T, alpha], ...] points, or the name of a
+# correlation when the data sheet does not give it (then every command says that alpha is estimated)
+pressure_viscosity_coefficient = "so_klaus_1980"
+
+# service_temperature = ["-10 degC", "100 degC"]   # optional: the range the data sheet states; beyond it
+#                                                 # every command warns (the data are extrapolated)
+# thermal_conductivity = "0.13 W/(m*K)"   # optional
+# viscosity_index = 100                   # optional, as the data sheet states it (reported only)
+
+# traction: a measured law of your oil if you have one (model = "table": measured mu(S) points, or
+# model = "coefficients"; model = "eyring": the physical model with its parameters).  Without measurements,
+# borrow the registered curve fit of the closest of the three oils of Zhang et al. 2016 (4109, 4106, 4050):
+# every command then says that the traction is borrowed.
+[traction]
+model = "zhang2016"
+oil = "4106"
+law = "default"
+'''
+

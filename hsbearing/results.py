@@ -177,7 +177,9 @@ def _clean_attrs(attrs: Mapping[str, Any]) -> dict[str, Any]:
 
 
 def standard_attrs(case=None, status: str = "ok", **extra) -> dict[str, Any]:
-    """Global attrs every archive carries: package version, case TOML text, status, creation time."""
+    """Global attrs every archive carries: package version, case TOML text, status, creation time; for a Case also
+    what its ``archive_attrs()`` gives (the oil's ``lubricant_name``, ``lubricant_provenance``,
+    ``lubricant_notices``) and its sanity-envelope lines merged into ``warnings``."""
     from hsbearing._version import __version__
 
     attrs: dict[str, Any] = {
@@ -192,7 +194,13 @@ def standard_attrs(case=None, status: str = "ok", **extra) -> dict[str, Any]:
         attrs["case_system"] = case.system
         attrs["case_toml"] = case.to_toml()
         attrs["case_source"] = _absolute_source(case.source)
+    more = case.archive_attrs() if hasattr(case, "archive_attrs") else {}  # (a Case; asked, not imported: no cycle)
+    env = more.pop("envelope_warnings", [])
+    attrs.update(more)  # the oil by its own name and where its data come from
     attrs.update(extra)
+    if env:  # the sanity envelope (case.envelope_warnings): warned, kept in the archive
+        have = [w for w in str(attrs.get("warnings", "none")).split(" | ") if w and w != "none"]
+        attrs["warnings"] = " | ".join(have + [w for w in env if w not in have])
     return _clean_attrs(attrs)
 
 

@@ -38,7 +38,7 @@ from hsbearing.results import VARIABLES, register
 
 _trapz = getattr(np, "trapezoid", None) or np.trapz  # numpy < 2 has only trapz
 
-__all__ = ["annotate", "summary", "CLASSIFIER_VERSION", "classified_by_older_rules", "whirl_metrics", "whirl_frequency", "whirl_ratio_note", "REQUIRED",
+__all__ = ["annotate", "summary", "contact_power_summary", "POWER_SUMMARY", "CLASSIFIER_VERSION", "classified_by_older_rules", "whirl_metrics", "whirl_frequency", "whirl_ratio_note", "REQUIRED",
            "PARKED_MOTION_FRACTION", "PARKED_OFFSET_FRACTION"]
 
 #: A cage is "parked" when its centre, after the transient, moves less than this fraction of the guide
@@ -76,8 +76,32 @@ for _n, _d, _u, _l in [
     ("poincare_time", ("section",), "s", "time of the Poincare section crossings"),
     ("poincare_y", ("section",), "m", "cage mass-centre displacement D_Y at the Poincare section"),
     ("poincare_vy", ("section",), "m/s", "cage mass-centre velocity V_Y at the Poincare section"),
+    # the other scalars of summary() (a sweep summary carries them per point); text labels have units ""
+    ("classification", (), "", "cage-motion class of the Poincare section (1 period, k periods, quasi-periodic, "
+     "chaos, undetermined; static for a quasi-static state)"),
+    ("classification_confidence", (), "1", "confidence of the classification, 0 to 1"),
+    ("classification_kind", (), "", "which test decided the class (growth, still cage, section, ...)"),
+    ("classification_alternative", (), "", "class of the same run on the other Poincare section"),
+    ("poincare_section_kind", (), "", "Poincare section of the classification (transverse or cage_revolution)"),
+    ("whirl_cage_lock", (), "", "lock of the cage whirl to the cage rotation, as text ('' when none found)"),
+    ("classifier_version", (), "", "version of the classification rules that labelled the run"),
+    ("n_poincare_points", (), "1", "number of Poincare section crossings after the transient"),
+    ("transient_discarded", (), "s", "initial span of the run left out of the summary (the transient)"),
+    ("guide_clearance_used", (), "1", "whirl_radius_max / radial guide clearance of the cage"),
+    # what users compare between points of a sweep (summary scalars; contact_power_summary)
+    ("min_film_thickness", (), "m", "smallest Hamrock-Dowson minimum film thickness h_min over the inner and outer "
+     "contacts and the balls (after the transient of a run)"),
+    ("min_film_parameter", (), "1", "smallest film parameter lambda = h_min / composite rms roughness over the inner "
+     "and outer contacts and the balls (after the transient of a run)"),
+    ("max_contact_pressure", (), "Pa", "largest maximum Hertz pressure p_max over the inner and outer contacts and the "
+     "balls (after the transient of a run)"),
 ]:
     register(_n, _d, _u, _l)
+
+#: the power accounting a summary carries (mean after the transient of a run; the value at the quasi-static state)
+POWER_SUMMARY = ("power_loss", "power_loss_race_traction", "power_loss_ehl_rolling", "power_loss_contact_damping",
+                 "power_loss_pocket_film", "power_loss_pocket_boundary", "power_loss_guide_land", "power_loss_drag",
+                 "drive_torque")
 
 
 def _var(name: str, value, dims=None) -> xr.Variable:
@@ -353,6 +377,40 @@ def _needs_annotation(ds) -> bool:
     return "classification" not in ds.attrs or classified_by_older_rules(ds)
 
 
+def _extreme(ds, names, sel, how) -> float:
+    vals = []
+    for n in names:
+        if n in ds:
+            v = np.asarray((ds[n].isel(sel) if sel else ds[n]).values, dtype=float).ravel()
+            vals.append(v[np.isfinite(v)])
+    v = np.concatenate(vals) if vals else np.zeros(0)
+    return float(how(v)) if v.size else float("nan")
+
+
+def contact_power_summary(ds: xr.Dataset, sel: dict | None = None) -> dict[str, float]:
+    """What users compare between the points of a sweep, from the variables a result carries.
+
+    ``power_loss``, ``power_loss_<source>`` [W] and ``drive_torque`` [N m] (the time mean over ``sel``, the
+    samples after the transient, for a run; the value for a quasi-static state that carries them as scalars);
+    ``min_film_thickness`` [m] and ``min_film_parameter`` [-] (the smallest over the inner and outer contacts,
+    the balls and ``sel``); ``max_contact_pressure`` [Pa] (the largest).  A quantity the result does not carry
+    is left out (not NaN), so a system without it shows no column.
+    """
+    sel = sel or {}
+    out: dict[str, float] = {}
+    for name in POWER_SUMMARY:
+        if name in ds:
+            v = ds[name].isel({k: i for k, i in sel.items() if k in ds[name].dims}) if sel else ds[name]
+            out[name] = float(np.nanmean(np.asarray(v.values, dtype=float))) if v.size else float("nan")
+    for key, names, how in (
+            ("min_film_thickness", ("inner_film_thickness_minimum", "outer_film_thickness_minimum"), np.min),
+            ("min_film_parameter", ("inner_film_parameter", "outer_film_parameter"), np.min),
+            ("max_contact_pressure", ("inner_contact_pressure", "outer_contact_pressure"), np.max)):
+        if any(n in ds for n in names):
+            out[key] = _extreme(ds, names, {k: i for k, i in sel.items() if k in ds.dims}, how)
+    return out
+
+
 def summary(ds: xr.Dataset, case=None) -> dict[str, Any]:
     """Scalars of one run for a sweep table.
 
@@ -396,6 +454,7 @@ def summary(ds: xr.Dataset, case=None) -> dict[str, Any]:
             out[f"max_{name}"] = float(q.max())
         else:
             out[f"mean_{name}"] = out[f"max_{name}"] = float("nan")
+    out.update(contact_power_summary(ds, sel))
     out["n_poincare_points"] = int(ds["poincare_y"].size) if "poincare_y" in ds else 0
     out["transient_discarded"] = float(ds.attrs.get("transient_discarded", float("nan")))
     gc = ds.attrs.get("guide_clearance")

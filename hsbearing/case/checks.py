@@ -252,8 +252,38 @@ def _oil_data_used(case) -> bool:
             and getattr(case.lubricant, "file", None) is None)
 
 
+#: Typical upper speed factor n d_m [mm r/min] of single-row angular-contact ball bearings by lubrication method,
+#: used for the speed warning when the case gives no ``bearing.limiting_speed``.  Order values of the bearing
+#: makers' lubrication guides (FAG publication WL 81 115/4 EA "Rolling Bearing Lubrication", section 2.5 "Selection
+#: of the lubrication system": speed parameter n d_m by method; Harris & Kotzalas, "Essential Concepts of Bearing
+#: Technology", 5th ed. 2007, ch. 1 and 12: aero-engine main-shaft ball bearings under jet lubrication at 2-3 million
+#: DN).  The numbers were not re-read from those tables here: they are typical values, stated as such in the
+#: warning, and a case with the catalogue's limiting speed replaces them.
+TYPICAL_NDM = {"oil_jet": 2.5e6, "oil_air": 2.0e6, "oil_bath": 0.5e6, "grease": 1.0e6, "dry": 0.1e6}
+
+
+def speed_factor(case) -> float:
+    """n d_m [mm r/min]: the relative ring speed |n_i - n_o| [r/min] times the pitch diameter [mm]."""
+    n_rpm = abs(case.operating.inner_speed - case.operating.outer_speed) * 30.0 / math.pi
+    return n_rpm * case.bearing.pitch_diameter * 1e3
+
+
+def speed_limit(case) -> tuple[float, str]:
+    """The n d_m limit [mm r/min] of the speed warning and where it comes from (the case, else the typical value)."""
+    b = case.bearing
+    if getattr(b, "limiting_speed", None):
+        n = b.limiting_speed * 30.0 / math.pi
+        return n * b.pitch_diameter * 1e3, f"bearing.limiting_speed {n:.6g} r/min x d_m {b.pitch_diameter * 1e3:.4g} mm"
+    lub = case.lubricant.lubrication
+    return TYPICAL_NDM.get(lub, TYPICAL_NDM["oil_jet"]), (
+        f"typical for {lub} lubrication of angular-contact ball bearings (FAG WL 81 115, Harris & Kotzalas; not the "
+        "bearing's own rating: give bearing.limiting_speed from its catalogue)")
+
+
 def envelope_warnings(case) -> list[str]:
-    """Values inside what is possible but outside the data behind the model (printed as warnings by the CLI)."""
+    """Values inside what is possible but outside the data behind the model (printed as warnings by the CLI and
+    stored in the archives' ``warnings``): the oil beyond its stated service range, the speed beyond a limiting
+    n d_m.  One line each; nothing is refused."""
     out = []
     oil, T = case.lubricant.oil, case.lubricant.temperature
     if T is not None and _oil_data_used(case):
@@ -262,4 +292,17 @@ def envelope_warnings(case) -> list[str]:
         if not lo <= t_c <= hi:
             out.append(f"lubricant.temperature: {t_c:g} degC is outside the service range of oil {oil} "
                        f"({lo:g}..{hi:g} degC): its viscosity and traction data are extrapolated")
+    d = getattr(case.lubricant, "definition", None)
+    if T is not None and d is not None and d.service_range is not None:
+        lo, hi = (x - 273.15 for x in d.service_range)
+        t_c = T - 273.15
+        if not lo <= t_c <= hi:
+            out.append(f"lubricant.temperature: {t_c:g} degC is outside the service range of {d.name} "
+                       f"({lo:g}..{hi:g} degC, its lubricant file): its viscosity data are extrapolated")
+    if case.system in ("angular_contact", "deep_groove") and case.bearing.pitch_diameter:
+        ndm = speed_factor(case)
+        lim, why = speed_limit(case)
+        if ndm > lim:
+            out.append(f"operating.inner_speed: n d_m = {ndm:.3g} mm r/min is above {lim:.3g} mm r/min ({why}): "
+                       "check the speed (a typing error?); the results are computed but the bearing would not run there")
     return out

@@ -107,6 +107,17 @@ class Case:
         """The case as TOML text, overrides applied (round-trips through :func:`load_case`)."""
         return dump_toml(self.raw)
 
+    def archive_attrs(self) -> dict:
+        """What every archive of this case says besides the case text (``results.standard_attrs`` asks for it):
+        the oil by its own name with its provenance and notices (:func:`hsbearing.lubricant.identity_attrs`) and
+        ``envelope_warnings`` (the lines of :func:`hsbearing.case.checks.envelope_warnings`)."""
+        from hsbearing.case.checks import envelope_warnings
+        from hsbearing.lubricant import identity_attrs
+
+        out = dict(identity_attrs(self))
+        out["envelope_warnings"] = envelope_warnings(self)
+        return out
+
 
 # ----------------------------------------------------------------------------
 # loading
@@ -353,8 +364,9 @@ def _build_checked(text: str, source: str, overrides: Mapping[str, Any]) -> Case
     override_lines = []
     for k, v in (overrides or {}).items():
         table, leaf = resolve_key(k, source=f"{source} (override)")
-        _get_table(raw, table)[leaf] = _override_literal(SCHEMA[table][leaf].kind, v)
-        override_lines.append(f"# {table}.{leaf} = {v!r}")
+        lit = _override_literal(SCHEMA[table][leaf].kind, v)
+        _get_table(raw, table)[leaf] = lit
+        override_lines.append(f"# {table}.{leaf} = {lit if hasattr(v, 'magnitude') else v!r}")
     full_text = text if not override_lines else text.rstrip("\n") + "\n# --- overrides ---\n" + "\n".join(override_lines) + "\n"
     values = _validate_tables(raw, source)
     over_lub = {resolve_key(k, source=f"{source} (override)")[1] for k in (overrides or {})
@@ -583,8 +595,17 @@ def read_override(value: Any, fld: Field, *, source: str = "<override>", key: st
 
 def _override_literal(kind: str, value: Any) -> Any:
     """An override as it goes into the case's TOML tables: str/choice keys as text, others a TOML literal
-    when the text is one (``"0.52"`` -> 0.52; ``"100 N"`` stays text)."""
-    return str(value) if kind in ("str", "choice") else _parse_override_value(value)
+    when the text is one (``"0.52"`` -> 0.52; ``"100 N"`` stays text).  A pint Quantity becomes its text
+    (``"10000 revolutions_per_minute"``) and a plain number for a key with a dimension is read in the key's SI
+    unit (``inner_speed=1047.2`` -> ``"1047.2 rad/s"``), so the API takes what users hold."""
+
+    if kind in ("str", "choice"):
+        return str(value)
+    if hasattr(value, "magnitude") and hasattr(value, "units") and not isinstance(value, str):
+        return f"{float(value.magnitude)!r} {value.units}"
+    if kind in DIMENSIONS and isinstance(value, (int, float)) and not isinstance(value, bool):
+        return f"{float(value)!r} {DIMENSIONS[kind]}"
+    return _parse_override_value(value)
 
 
 def parse_sets(items: list[str] | None, source: str = "--set") -> dict[str, str]:

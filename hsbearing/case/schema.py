@@ -92,6 +92,12 @@ SCHEMA: dict[str, dict[str, Field]] = {
         "inner_land_diameter": _f("length", "inner-ring land (shoulder) diameter", positive=True),
         "outer_land_diameter": _f("length", "outer-ring land diameter (cage guide surface)", positive=True),
         "dynamic_load_rating": _f("force", "basic dynamic load rating C_r (catalogue; default: ISO 281 from the geometry)", positive=True),
+        "limiting_speed": _f("angular_speed", "the bearing's limiting (or reference) speed from its catalogue: above "
+                             "limiting_speed x d_m the speed warning is given (default: a typical n d_m of the "
+                             "lubrication method, case.checks.TYPICAL_NDM)", positive=True),
+        "permissible_contact_pressure": _f("pressure", "contact pressure the raceway material is rated for: a larger "
+                                           "p_max is warned (default: 4.2 GPa, ISO 76:2006 6.2 for ball bearings)",
+                                           positive=True),
         "inner_ring_mass": _f("mass", "inner ring (+ shaft) mass m_i", positive=True),
         "inner_ring_axial_inertia": _f("inertia", "inner ring polar moment of inertia", positive=True),
         "inner_ring_diametral_inertia": _f("inertia", "inner ring diametral moment of inertia", positive=True),

@@ -37,6 +37,16 @@ def cmd_oils(args) -> int:
     """``hsbearing oils``: the bundled lubricants; ``hsbearing oils NAME --at CASE``: one oil at a case."""
     from hsbearing.cli import oils
 
+    if getattr(args, "template", None):
+        if args.name or args.at:
+            raise CaseError("--template", None, "takes no lubricant NAME and no --at: hsbearing oils --template FILE")
+        from hsbearing.results import check_output_path
+
+        check_output_path(args.template, source="--template")
+        path = oils.write_template(args.template)
+        print(f"lubricant template: {path} (format: docs/traction.md, 'Lubricant files'); fill in your oil's data, "
+              f"check it with 'hsbearing oils {path}' and use it with --set lubricant.file={path}")
+        return 0
     if args.name is None:
         if args.at:
             raise CaseError("--at", None, "give the lubricant: hsbearing oils NAME --at CASE")
@@ -52,6 +62,11 @@ def cmd_oils(args) -> int:
         d = lubricant.load_lubricant(path)
         print(f"{d.name} ({d.oil_class}) from {path}")
         print(d.text.rstrip())
+        if d.traction_model == "zhang2016":
+            print(f"notice: the traction of {d.name} is borrowed from oil {d.traction_oil} (law {d.traction_law})")
+        if d.alpha_estimated:
+            print(f"notice: the pressure-viscosity coefficient alpha of {d.name} is estimated ({d.alpha_estimate} "
+                  "correlation), not measured")
         return 0
     if args.output:
         from hsbearing.results import check_output_path
@@ -242,8 +257,12 @@ def cmd_quasistatic(args) -> int:
     warn = contact_pressure_warning(p_all) if p_all else None
     if warn:
         print(warn, file=sys.stderr)
-    for w in _quasistatic_warnings(case, ds):  # the limits run, friction and life print for the same state
+    qs_warns = _quasistatic_warnings(case, ds)
+    for w in qs_warns:  # the limits run, friction and life print for the same state
         print(f"warning: {w}")
+    have = [w for w in str(ds.attrs.get("warnings", "none")).split(" | ") if w and w != "none"]
+    if qs_warns or have:  # the archive carries every line printed (the case envelope is already in it)
+        ds.attrs["warnings"] = " | ".join(have + [w for w in qs_warns if w not in have])
     if args.output is not None:
         write_netcdf(ds, args.output)
         print(f"archive: {args.output}")
@@ -260,7 +279,7 @@ def _quasistatic_warnings(case, ds) -> list[str]:
         lines = contact_state.warnings_for(ds.assign(**{k: ("ball", v) for k, v in state.items()}), case)
     except (KeyError, ValueError):  # a system whose quasi-static Dataset lacks the contact variables
         return []
-    return [w for w in lines if not w.startswith("maximum contact pressure")]
+    return [w for w in lines if "ISO 76" not in w]  # the ISO 76 line is printed on stderr (display)
 
 
 def _summary_figure(nc: Path, png: Path) -> None:

@@ -53,6 +53,10 @@ def print_summary(ds, out: Path | None = None) -> None:
     from hsbearing.display import format_solver_stats, format_value
 
     print(f"status: {ds.attrs.get('status', '?')}")
+    from hsbearing.lubricant import header_lines_of_archive
+
+    for line in header_lines_of_archive(ds.attrs):  # the oil by its own name, and where its data come from
+        print(line)
     note = None
     if "whirl_frequency_ratio" in ds:
         try:

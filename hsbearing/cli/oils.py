@@ -16,7 +16,17 @@ import numpy as np
 from hsbearing import lubricant as lubmod
 from hsbearing.errors import CaseError
 
-__all__ = ["library_rows", "format_library", "at_case", "format_at_case", "plot_traction"]
+__all__ = ["library_rows", "format_library", "at_case", "format_at_case", "plot_traction", "write_template"]
+
+
+def write_template(path) -> Path:
+    """Write :data:`hsbearing.lubricant.TEMPLATE` to ``path`` (atomic; the caller checks the path first)."""
+    from hsbearing.results import atomic_write
+
+    path = Path(path)
+    with atomic_write(path) as tmp:
+        tmp.write_text(lubmod.TEMPLATE, encoding="utf-8")
+    return path
 
 T40, T100 = 313.15, 373.15
 

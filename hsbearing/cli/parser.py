@@ -192,8 +192,17 @@ def build_parser() -> argparse.ArgumentParser:
     sp.set_defaults(func=cmd_preload)
 
     sp = sub.add_parser("oils", help="list the bundled lubricants; NAME --at CASE: an oil's viscosity, alpha, film "
-                                     "thickness and mu(S) at the case's contacts (quasi-static)")
+                                     "thickness and mu(S) at the case's contacts (quasi-static); --template FILE: "
+                                     "a lubricant file to fill in",
+                        description="The bundled lubricants, one oil at a case, or a template of your own lubricant "
+                                    "file. A lubricant file (TOML) gives the oil's name, its kinematic viscosity at two "
+                                    "temperatures, density, pressure-viscosity coefficient (or 'so_klaus_1980' when "
+                                    "unknown) and a [traction] table; the format is in docs/traction.md, section "
+                                    "'Lubricant files', and 'hsbearing oils --template my_oil.toml' writes a commented "
+                                    "one. Use it with --set lubricant.file=my_oil.toml or --vary oil=4109,my_oil.toml.")
     sp.add_argument("name", nargs="?", default=None, help="bundled lubricant name or lubricant .toml file")
+    sp.add_argument("--template", metavar="FILE", help="write a commented lubricant file to FILE (the format, "
+                                                       "with an ISO VG 32 data sheet's values to replace)")
     sp.add_argument("--at", metavar="CASE", help="bundled case name or case file to evaluate the oil at")
     sp.add_argument("--set", action="append", metavar="KEY=VALUE", help="override a case value (repeatable)")
     sp.add_argument("-o", "--output", help="PNG of mu(S) (default runs/oil-NAME-CASE.png)")

@@ -63,7 +63,12 @@ def case_labels(ds) -> dict[str, str]:
         except Exception:
             return None
 
-    if "oil" in lub:
+    from hsbearing.lubricant import name_in_case_text
+
+    own = name_in_case_text(lub)  # a lubricant file: the oil by its own name, never the law it borrows
+    if own:
+        out["oil"] = own
+    elif "oil" in lub:
         out["oil"] = f"oil {lub['oil']}"
     T = q(lub, "temperature", "temperature")
     if T is not None:

@@ -47,7 +47,8 @@ _SWEEP_PANELS = (
     # raceway-control slip (epicyclic speed at the running contact angles, as `run` prints) is drawn beside it
     ("mean cage slip ratio", "slip ratio [%]", 100.0, (("mean_cage_slip_ratio", "vs nominal contact angle", "-"),
                                                        ("mean_cage_slip_ratio_raceway_control",
-                                                        "vs raceway control (running angles)", "--"))),
+                                                        "vs raceway control (running angles)", "--"),
+                                                       ("cage_slip_ratio", "quasi-static state", "-"))),
     ("cage whirl radius", "whirl radius [\u00b5m]", 1e6, (("whirl_amplitude", "RMS (whirl amplitude)", "-"),
                                                            ("whirl_radius_max", "max", ":"))),
     ("whirl frequency / cage speed", "frequency ratio [-]", 1.0, (("whirl_frequency_ratio", None, "-"),)),
@@ -57,22 +58,42 @@ _SWEEP_PANELS = (
                                                        ("max_outer_contact_load", "max over balls", "--"))),
     ("cage speed", "cage speed [r/min]", RPM, (("cage_speed", None, "-"),)),
     ("inner ring axial displacement", "displacement [\u00b5m]", 1e6, (("inner_ring_axial_displacement", None, "-"),)),
+    # what users compare (run: mean after the transient; quasi-static: at the state): power, torque, film, pressure
+    ("power loss", "power [W]", 1.0, (("power_loss", None, "-"),)),
+    ("power loss by source", "power [W]", 1.0,
+     (("power_loss_race_traction", "race traction", "-"), ("power_loss_ehl_rolling", "EHL rolling", "--"),
+      ("power_loss_contact_damping", "contact damping", ":"), ("power_loss_pocket_film", "pocket film", "-."),
+      ("power_loss_pocket_boundary", "pocket boundary", "-"), ("power_loss_guide_land", "guide land", "--"),
+      ("power_loss_drag", "ball drag", ":"))),
+    ("drive torque", "torque [N mm]", 1e3, (("drive_torque", None, "-"),)),
+    ("smallest minimum film thickness $h_{min}$", "$h_{min}$ [nm]", 1e9, (("min_film_thickness", None, "-"),)),
+    ("smallest film parameter \u03bb", "\u03bb [-]", 1.0, (("min_film_parameter", None, "-"),)),
+    ("largest contact pressure $p_{max}$", "$p_{max}$ [GPa]", 1e-9, (("max_contact_pressure", None, "-"),)),
     # thermal sweeps (kind = "thermal"): temperatures in degC (factor, offset), heats in W
     ("component temperatures", "temperature [\N{DEGREE SIGN}C]", (1.0, -273.15),
      (("inner_ring_temperature", "inner ring", "-"), ("outer_ring_temperature", "outer ring", "--"),
-      ("ball_temperature", "balls", ":"), ("oil_outlet_temperature", "oil outlet", "-."))),
+      ("ball_temperature", "balls", ":"), ("oil_outlet_temperature", "oil outlet", "-."),
+      ("cage_temperature", "cage", "-"), ("housing_temperature", "housing", "--"), ("shaft_temperature", "shaft", ":"))),
     ("lubricant temperature at equilibrium", "temperature [\N{DEGREE SIGN}C]", (1.0, -273.15),
      (("lubricant_temperature", None, "-"),)),
     ("heat generated and where it goes", "heat [W]", 1.0,
      (("heat_generated", "generated", "-"), ("heat_removed_by_oil", "removed by the oil", "--"),
       ("heat_removed_by_conduction", "conducted to the air", ":"))),
+    ("heat by path", "heat [W]", 1.0,
+     (("heat_flow_balls_to_inner_ring", "balls \u2192 inner ring", "-"),
+      ("heat_flow_balls_to_outer_ring", "balls \u2192 outer ring", "--"),
+      ("heat_flow_inner_ring_to_oil", "inner ring \u2192 oil", ":"), ("heat_flow_outer_ring_to_oil", "outer ring \u2192 oil", "-."),
+      ("heat_flow_balls_to_oil", "balls \u2192 oil", "-"), ("heat_flow_cage_to_oil", "cage \u2192 oil", "--"),
+      ("heat_flow_inner_ring_to_shaft", "inner ring \u2192 shaft", ":"),
+      ("heat_flow_outer_ring_to_housing", "outer ring \u2192 housing", "-."),
+      ("heat_flow_oil_to_oil_inlet", "carried off by the oil", "-"))),
     ("friction moments (Jiang et al. 2014)", "moment [\u00b5N m]", 1e6,
      (("sfmc", "SFMC", "-"), ("sfmc_ensemble_mean", "SFMC, start ensemble mean", "-."), ("sfmo", "SFMO", "--"),
       ("rfmc", "RFMC", ":"))),
 )
 
 # markers of the quantities of one panel when no class is drawn (mean / max, SFMC / SFMO / RFMC)
-_ITEM_MARKERS = ("o", "s", "^", "D")
+_ITEM_MARKERS = ("o", "s", "^", "D", "v", "P", "X", "*", "h")
 # error bars: quantity -> (its spread in the summary, what the legend calls it)
 _YERR = {"sfmo": ("sfmo_stderr", "standard error"), "sfmc_ensemble_mean": ("sfmc_ensemble_sd", "sd")}
 
@@ -163,6 +184,12 @@ class _SweepAxis:
         if coord is None or _is_text(coord.values):
             vals = [str(v) for v in (coord.values if coord is not None else range(n))]
             self.labels = given or vals
+            if key in ("lubricant.oil", "lubricant.file") and "lubricant_name" in ds:  # each oil by its own name
+                names = ds["lubricant_name"].transpose(dim, ...).values.reshape(n, -1)
+                self.labels = [next((str(x) for x in row if str(x) not in ("", "nan")), lab)
+                               for row, lab in zip(names, self.labels)]
+            # a lubricant file without its name in the summary (older sweeps): the file name, not its whole path
+            self.labels = [Path(lab).name if lab.endswith(".toml") else lab for lab in self.labels]
             self.x = np.arange(n, dtype=float)
             self.categorical = True
             self.title = key
@@ -192,7 +219,8 @@ class _SweepAxis:
 def _series_label(axes, idx) -> str:
     parts = []
     for ax, i in zip(axes, idx):
-        parts.append(f"{ax.dim} = {ax.labels[i]}" if ax.dim != "oil" else f"oil {ax.labels[i]}")
+        lab = ax.labels[i]
+        parts.append(f"{ax.dim} = {lab}" if ax.dim != "oil" else f"oil {lab}" if lab.isdigit() else lab)
     return ", ".join(parts)
 
 
@@ -234,7 +262,8 @@ def _prepare_sweep(ds) -> dict:
         raise CaseError(source, None, "a sweep summary without a varied dimension has nothing to plot")
     axes = {d: _SweepAxis(ds, d) for d in dims}
     numeric = [d for d in dims if not axes[d].categorical]
-    pool = numeric or list(dims)
+    # x: a numeric key with more than one value; else the categorical key (oils) with the most values
+    pool = [d for d in numeric if ds.sizes[d] > 1] or [d for d in dims if ds.sizes[d] > 1] or numeric or list(dims)
     x_dim = max(pool, key=lambda d: (ds.sizes[d], -dims.index(d)))
     series_dims = [d for d in dims if d != x_dim]
     n_x = ds.sizes[x_dim]
@@ -277,6 +306,9 @@ def _prepare_sweep(ds) -> dict:
             if name in ds and ds[name].dtype.kind in "fiu":
                 y = _grid_of(ds, name, order, shape)
                 if y is not None and np.isfinite(y[good]).any():
+                    if (len(items) > 1 and name.startswith(("power_loss_", "heat_flow_"))
+                            and not (np.abs(np.nan_to_num(y[good])) > 1e-9).any()):
+                        continue  # a source or path that is zero at every point (e.g. no pocket contact): no line
                     got.append((name, lab, ls, y * factor + offset))
         if (len(got) == 2 and got[0][0].startswith("mean_") and got[1][0].startswith("max_")
                 and np.allclose(got[0][3][good], got[1][3][good], rtol=1e-9, equal_nan=True)):
@@ -390,19 +422,26 @@ def _draw_sweep_panel(ax, prep, title, unit, items, colours, annotate_bad: bool)
     x = xa.x
     good, ok, status, cls = prep["good"], prep["ok"], prep["status"], prep["cls"]
     one = prep["layout"]["n_series"] == 1
-    for s in range(prep["layout"]["n_series"]):
+    n_ser = prep["layout"]["n_series"]
+    x0 = x
+    for s in range(n_ser):
         col = colours[s]
         for k, (name, _lab, ls, y) in enumerate(items):
+            if xa.categorical:  # categories (oils, zipped points): markers side by side in each category, no lines
+                n_pos = n_ser * len(items)
+                x = x0 + (s * len(items) + k - 0.5 * (n_pos - 1)) * min(0.7 / n_pos, 0.15)
             ys = np.where(good[s], y[s], np.nan)
             fin = np.isfinite(ys)
-            ax.plot(x, ys, ls=ls, color=col, lw=1.1, zorder=2)  # NaN (not-ok or missing points) breaks the line
+            if not xa.categorical:  # numbers: a line; NaN (not-ok or missing points) breaks it
+                ax.plot(x, ys, ls=ls, color=col, lw=1.1, zorder=2)
             if name in prep["yerr"]:
                 e = prep["yerr"][name][s]
                 fe = fin & np.isfinite(e)
                 ax.errorbar(x[fe], ys[fe], yerr=e[fe], fmt="none", ecolor=col, elinewidth=1.0, capsize=3, zorder=2)
             size = (34 if k == 0 else 20) if len(x) <= 12 and prep["layout"]["n_series"] <= 6 else (16 if k == 0 else 9)
-            if cls is None:
-                # no classes: the marker tells the quantities of a panel apart (e.g. SFMC on top of RFMC)
+            if cls is None or (xa.categorical and len(items) > 1):
+                # no classes, or categories (no line style to tell them apart): the marker tells the quantities of
+                # a panel apart (e.g. SFMC on top of RFMC, mean and max)
                 ax.scatter(x[fin], ys[fin], marker=_ITEM_MARKERS[k % len(_ITEM_MARKERS)], s=size, color=col, zorder=3)
                 continue
             fam = cls[1][s]
@@ -429,6 +468,7 @@ def _draw_sweep_panel(ax, prep, title, unit, items, colours, annotate_bad: bool)
                     ax.annotate("summary failed" if o else st, (xx, yy), xycoords=ax.get_xaxis_transform(),
                                 xytext=(5, 0), textcoords="offset points", fontsize=7, color=NOT_OK_STYLE[1],
                                 va="center")
+    x = x0
     ax.set_title(title, fontsize=10)
     ax.set_ylabel(unit)
     ax.set_xlabel(xa.title)
@@ -461,8 +501,10 @@ def _draw_sweep_panel(ax, prep, title, unit, items, colours, annotate_bad: bool)
         from matplotlib.lines import Line2D
 
         named = [(k, name, lab, ls) for k, (name, lab, ls, _) in enumerate(items) if lab]
-        handles = [Line2D([], [], color="0.3", ls=ls, ms=5,
-                          marker=_ITEM_MARKERS[k % len(_ITEM_MARKERS)] if prep["cls"] is None else None)
+        cat = xa.categorical  # categories: markers only (no lines drawn)
+        handles = [Line2D([], [], color="0.3", ls="" if cat else ls, ms=5,
+                          marker=_ITEM_MARKERS[k % len(_ITEM_MARKERS)]
+                          if prep["cls"] is None or (cat and len(items) > 1) else None)
                    for k, _, _, ls in named]
         texts = [lab + (f" \u00b1 {_YERR[name][1]}" if name in prep["yerr"] else "") for _, name, lab, _ in named]
         ax.legend(handles + [Line2D([], [], color="r", ls="--") for _ in refs], texts + [lab for _, lab in refs],
@@ -581,7 +623,15 @@ def sweep_figure(ds):
         _draw_class_map(top.subplots(1, 1), prep)
     else:
         bottom = fig
-    axs = np.atleast_1d(bottom.subplots(nrows, ncols, squeeze=False)).ravel()
+    # no empty cell: a last row with fewer panels is centred (a grid of half-width columns)
+    gs = bottom.add_gridspec(nrows, 2 * ncols)
+    axs = []
+    for k in range(n_p):
+        r, c = divmod(k, ncols)
+        in_row = min(ncols, n_p - r * ncols)
+        c0 = (ncols - in_row) + 2 * c
+        axs.append(bottom.add_subplot(gs[r, c0:c0 + 2]))
+    axs = np.array(axs, dtype=object)
     colours = _series_colours(prep)
     if not panels:  # nothing to draw: say why, point by point (status and error message)
         lines = ["no summary variable with a finite value at an ok point", ""]

@@ -47,6 +47,7 @@ def run_summary(ds) -> dict:
 
 def friction_command(case, args) -> int:
     """``hsbearing friction CASE``: quasi-static power loss by source and the SKF 2004 angular-contact model."""
+    from hsbearing.lubricant import header_lines, oil_label
     from hsbearing.results import write_netcdf
     from hsbearing.systems.angular_contact.rating import NOTE_QS, NOTE_SKF, friction_angular_contact, rpm
     from hsbearing.units import parse_speeds
@@ -55,7 +56,9 @@ def friction_command(case, args) -> int:
     speeds = parse_speeds(args.speeds) if args.speeds else np.array([abs(case.operating.inner_speed)])
     ds = friction_angular_contact(case, speeds)
     print(f"case {case.name}: Fa = {abs(case.operating.axial_load):g} N, Fr = {math.hypot(case.operating.radial_load, case.operating.radial_load_z):g} N, "
-          f"oil {case.lubricant.oil} at {case.lubricant.temperature - 273.15:.4g} degC")
+          f"{oil_label(case.lubricant)} at {case.lubricant.temperature - 273.15:.4g} degC")
+    for line in header_lines(case):  # where the oil's data come from; traction borrowed / alpha estimated
+        print(line)
     from hsbearing.systems.angular_contact.balances import SOURCES
     from hsbearing.systems.angular_contact.rating import CAVITY_SOURCES
 

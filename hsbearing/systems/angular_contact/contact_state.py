@@ -144,7 +144,11 @@ def warnings_for(ds, case) -> list[str]:
     p = [ds[n].values for n in ("inner_contact_pressure", "outer_contact_pressure") if n in ds]
     if p:
         top = max(float(np.nanmax(x)) if np.size(x) and np.isfinite(x).any() else 0.0 for x in p)
-        if top > limits.ISO76_BALL_PRESSURE:
+        rated = getattr(case.bearing, "permissible_contact_pressure", None)
+        if rated is not None and top > rated:
+            out.append(f"maximum contact pressure {top * 1e-9:.3g} GPa exceeds the {rated * 1e-9:.3g} GPa the raceway "
+                       "material is rated for (bearing.permissible_contact_pressure)")
+        elif rated is None and top > limits.ISO76_BALL_PRESSURE:
             out.append(f"maximum contact pressure {top * 1e-9:.3g} GPa exceeds the {limits.ISO76_BALL_PRESSURE * 1e-9:g} GPa "
                        "of ISO 76:2006 (static load rating of ball bearings): the raceways deform permanently")
     lam = [ds[n].values for n in ("inner_film_parameter", "outer_film_parameter") if n in ds]

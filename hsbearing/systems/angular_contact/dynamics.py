@@ -696,7 +696,8 @@ def to_dataset(model: DynamicModel, t, Y, stats, status="ok", annotate: bool = T
     )
     attrs.update(results.solver_attrs(stats))
     ds = results.make_dataset(data, coords={"time": np.asarray(t), "ball": np.arange(L.Z)}, attrs=attrs)
-    ds.attrs["warnings"] = contact_state.format_warnings(contact_state.warnings_for(ds, case))
+    env = [w for w in str(ds.attrs.get("warnings", "none")).split(" | ") if w and w != "none"]  # the case envelope
+    ds.attrs["warnings"] = contact_state.format_warnings(env + contact_state.warnings_for(ds, case))
     if annotate and n >= 8:
         try:
             from hsbearing.analysis import annotate as _annotate

@@ -188,8 +188,13 @@ def life_cli(args) -> int:
     out = getattr(args, "output", None)
     check_archive_name(out)
     ds = life(case)
+    from hsbearing.lubricant import header_lines, oil_label
+
     print(f"case {case.name}: Fa = {abs(case.operating.axial_load):g} N, Fr = "
-          f"{math.hypot(case.operating.radial_load, case.operating.radial_load_z):g} N")
+          f"{math.hypot(case.operating.radial_load, case.operating.radial_load_z):g} N, {oil_label(case.lubricant)} at "
+          f"{case.lubricant.temperature - 273.15:.4g} degC")
+    for line in header_lines(case):
+        print(line)
     print("\n".join(life_lines(ds)))
     if out:
         write_netcdf(ds, out)
@@ -392,12 +397,18 @@ for _row in skf2004.OUTPUTS:  # the skf_* variables of friction_angular_contact
 def friction_angular_contact(case, speeds):
     """Quasi-static power loss by source and the SKF 2004 angular-contact moments over inner-ring speeds [rad/s].
 
+    ``speeds``: SI floats [rad/s], unit strings (``"10000 rpm"``, ``"500,5000rpm"``), lists of them, or pint
+    Quantities (:func:`hsbearing.units.parse_speeds`).
+
     Returns a Dataset over ``speed`` (qs_power_loss_<source>, qs_power_loss [W],
     qs_friction_torque, skf_* [N m]).
     """
     from hsbearing.systems.angular_contact.balances import SOURCES
+    from hsbearing.units import parse_speeds
 
-    w = np.asarray(speeds, dtype=float)
+    if hasattr(speeds, "to") and hasattr(speeds, "magnitude"):  # a pint Quantity (scalar or array)
+        speeds = [f"{float(v)} {speeds.units:~}" for v in np.atleast_1d(speeds.magnitude)]
+    w = parse_speeds(speeds, source="speeds") if not isinstance(speeds, np.ndarray) else np.asarray(speeds, dtype=float)
     rows = [quasi_static_power_loss(case, wi, with_state=True) for wi in w]
     from hsbearing.systems.angular_contact import contact_state
 

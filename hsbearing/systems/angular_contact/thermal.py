@@ -381,6 +381,22 @@ _SRC = ("race_traction_inner", "race_traction_outer", "ehl_rolling_inner", "ehl_
         "contact_damping_outer", "pocket_film", "pocket_boundary", "guide_land", "drag")
 for _s in _SRC:
     register(f"thermal_power_loss_{_s}", (), "W", f"quasi-static power loss {_s} at the thermal equilibrium")
+#: the links of :func:`bearing_network` (and the oil's advection), as the scalars a sweep summary carries: heat by path
+HEAT_PATHS = (("inner_ring", "shaft", "conduction"), ("outer_ring", "housing", "conduction"),
+              ("balls", "inner_ring", "conduction"), ("balls", "outer_ring", "conduction"),
+              ("inner_ring", "oil", "convection oil"), ("outer_ring", "oil", "convection oil"),
+              ("balls", "oil", "convection oil"), ("cage", "oil", "convection oil"),
+              ("housing", "ambient", "convection air"), ("shaft", "ambient", "conduction + convection air"),
+              ("oil", "oil_inlet", "advection"))
+
+
+def heat_path_name(src: str, dst: str) -> str:
+    """Summary name of the heat flowing along the link src -> dst (``heat_flow_<src>_to_<dst>``)."""
+    return f"heat_flow_{src}_to_{dst}"
+
+
+for _a, _b, _k in HEAT_PATHS:
+    register(heat_path_name(_a, _b), (), "W", f"heat flowing from {_a} to {_b} at the thermal equilibrium ({_k})")
 _ATTR_UNITS = {"network_residual_W": "W", "network_G_ball_inner": "W/K", "network_G_ball_outer": "W/K",
                "network_R_inner_ring": "K/W", "network_R_outer_ring": "K/W", "network_R_housing": "K/W",
                "network_h_shaft": "W/(m^2*K)", "network_Re_shaft": "1", "network_G_shaft": "W/K", "network_G_housing": "W/K",
@@ -540,8 +556,11 @@ def thermal_cli(args) -> int:
     check_archive_name(out)  # (the path itself: cli.cmd_thermal, before this)
     ds = thermal_equilibrium(case, progress=lambda i, T, P, Tn: print(
         f"  iteration {i}: lubricant {T - 273.15:.3f} degC, power {P:.3f} W -> contacts at {Tn - 273.15:.3f} degC", flush=True))
-    print(f"case {case.name}: n = {case.operating.inner_speed * 30 / math.pi:.6g} r/min, oil flow "
-          f"{case.lubricant.oil_flow_rate * 6e4:.4g} L/min")
+    from hsbearing.lubricant import header_lines, oil_label
+
+    print(f"case {case.name}: n = {case.operating.inner_speed * 30 / math.pi:.6g} r/min, {oil_label(case.lubricant)}, "
+          f"oil flow {case.lubricant.oil_flow_rate * 6e4:.4g} L/min")
+    print("\n".join(header_lines(case)))
     print("\n".join(thermal_lines(ds)))
     if out:
         write_netcdf(ds, out)

@@ -36,25 +36,56 @@ def _parse_vary(items: Sequence[str]) -> dict[str, str]:
     return out
 
 
+#: the columns of the printed table, in order: cage answer, loads, what users compare (power, torque, film, pressure),
+#: gyro moments, thermal temperatures and heats (a column is printed when the sweep carries it)
+TABLE_KEYS = ("classification", "mean_cage_slip_ratio", "mean_cage_slip_ratio_raceway_control", "cage_slip_ratio",
+              "whirl_amplitude", "whirl_frequency_ratio", "mean_inner_contact_load", "mean_outer_contact_load",
+              "cage_speed", "power_loss", "drive_torque", "min_film_thickness", "min_film_parameter",
+              "max_contact_pressure", "sfmc", "sfmc_ensemble_mean", "sfmc_ensemble_sd", "sfmo", "sfmo_stderr", "rfmc",
+              "inner_ring_temperature", "outer_ring_temperature", "ball_temperature", "cage_temperature",
+              "housing_temperature", "shaft_temperature", "oil_outlet_temperature", "lubricant_temperature",
+              "heat_generated", "heat_removed_by_oil", "heat_removed_by_conduction")
+
+
+def _nonzero(ds, name) -> bool:
+    v = ds[name]
+    if v.dtype.kind not in "fiu":
+        return False
+    a = np.asarray(v.values, dtype=float)
+    return bool(np.any(np.isfinite(a) & (np.abs(a) > 1e-12)))
+
+
 def print_table(ds: xr.Dataset, file=None) -> None:
-    """One line per point: varied values, status, a few summary values (with their units), error."""
+    """One line per point: varied values, status, the summary values users compare (with their units), error.
+
+    The first line of a point carries the cage answer (class, slip, whirl), the contact loads, the power loss,
+    drive torque, smallest film and lambda, largest contact pressure (run and quasi-static sweeps) or the node
+    temperatures and heats (thermal sweeps); an indented second line gives the power loss by source
+    (``power_loss_<source>``, the sources that are not zero at every point) and, for a thermal sweep, the heat
+    along every path of the network (``heat_flow_<from>_to_<to>``)."""
     from hsbearing.display import format_value
 
     file = file or sys.stdout
-    keys = [v for v in ("mean_cage_slip_ratio", "mean_cage_slip_ratio_raceway_control", "whirl_amplitude", "classification", "mean_inner_contact_load",
-                        "mean_outer_contact_load", "cage_speed", "sfmc", "sfmc_ensemble_mean", "sfmc_ensemble_sd",
-                        "sfmo", "sfmo_stderr", "rfmc") if v in ds]
+    keys = [v for v in TABLE_KEYS if v in ds]
+    if "lubricant_name" in ds and any("oil" in str(c) or "lubricant" in str(c) for c in ds.coords):
+        keys.insert(0, "lubricant_name")  # the oils varied: each by its own name (a file's name, not its path)
+    by_source = [str(v) for v in ds.data_vars if str(v).startswith(("power_loss_", "thermal_power_loss_"))
+                 and _nonzero(ds, v)]
+    heat = [str(v) for v in ds.data_vars if str(v).startswith("heat_flow_")]
     dims = ds["status"].dims
     labels = [c for c in ds.coords if str(c).endswith("_label")]
     for idx in np.ndindex(*ds["status"].shape):
         pt = ds.isel(dict(zip_(dims, idx)))
         parts = [f"{str(c)[:-6]}={pt[c].values.item()}" for c in labels]
         parts.append(f"status={pt['status'].values.item()}")
-        for k in keys:  # in the units users read (hsbearing.display): um, r/min, %, uN m
+        for k in keys:  # in the units users read (hsbearing.display): um, r/min, %, uN m, degC, GPa
             parts.append(f"{k}={format_value(pt[k], k)}")
         if pt["error"].values.item():
             parts.append(f"error={pt['error'].values.item()}")
         print("  ".join(parts), file=file)
+        more = [f"{k}={format_value(pt[k], k)}" for k in by_source + heat]
+        if more:
+            print("    " + "  ".join(more), file=file)
 
 
 def cli_base_case(args) -> Case:

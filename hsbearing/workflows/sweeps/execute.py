@@ -112,9 +112,15 @@ def execute(
     return out
 
 
-def _summary_attrs(name: str) -> dict:
+#: how a sweep point's value of a time series (power_loss, drive_torque ...) was taken, by sweep kind
+_POINT_VALUE = {"run": "time mean after the transient of the ", "quasistatic": "value at the quasi-static state of the "}
+
+
+def _summary_attrs(name: str, kind: str = "") -> dict:
     if name in VARIABLES:
         v = VARIABLES[name]
+        if "time" in v.dims and kind in _POINT_VALUE:  # one value per point of a time series: say which
+            return {"units": v.units, "long_name": _POINT_VALUE[kind] + v.long_name}
         return {"units": v.units, "long_name": v.long_name}
     for prefix, what in (("mean_", "mean of "), ("max_", "maximum of "), ("rms_", "RMS of ")):
         if name.startswith(prefix) and name[len(prefix):] in VARIABLES:
@@ -145,7 +151,7 @@ def assemble(plan: SweepPlan, records: Sequence[dict], *, archive_prefix: str = 
             arr = np.array(["" if v is None or (isinstance(v, float) and math.isnan(v)) else str(v) for v in vals], dtype=object)
         else:
             arr = np.array([np.nan if v is None else float(v) for v in vals], dtype=float)
-        data_vars[name] = _grid(arr, plan, shape, dims, _summary_attrs(name))
+        data_vars[name] = _grid(arr, plan, shape, dims, _summary_attrs(name, plan.kind))
     for name in RECORD_VARS:
         if name == "wall_time":
             arr = np.array([float(r.get("wall_time", np.nan)) for r in records])
@@ -160,18 +166,18 @@ def assemble(plan: SweepPlan, records: Sequence[dict], *, archive_prefix: str = 
     for a in plan.axes:
         fld = SCHEMA[a.key.rpartition(".")[0]][a.key.rpartition(".")[2]]
         cattrs = {"long_name": fld.doc, "case_key": a.key}
-        if a.kind in DIMENSIONS:
-            cattrs["units"] = DIMENSIONS[a.kind]
+        cattrs["units"] = DIMENSIONS[a.kind] if a.kind in DIMENSIONS else "" if isinstance(a.coords[0], str) else "1"
         coord = np.array(a.coords, dtype=object if isinstance(a.coords[0], str) else None)
         labels = np.array([str(v) for v in a.values], dtype=object)
         if plan.zipped:
             ds = ds.assign_coords({a.dim: xr.Variable(("point",), coord, attrs=cattrs)})
-            ds = ds.assign_coords({f"{a.dim}_label": xr.Variable(("point",), labels, attrs={"long_name": f"{a.key} as given"})})
+            ds = ds.assign_coords({f"{a.dim}_label": xr.Variable(("point",), labels, attrs={"long_name": f"{a.key} as given", "units": ""})})
         else:
             ds = ds.assign_coords({a.dim: xr.Variable((a.dim,), coord, attrs=cattrs)})
-            ds = ds.assign_coords({f"{a.dim}_label": xr.Variable((a.dim,), labels, attrs={"long_name": f"{a.key} as given"})})
+            ds = ds.assign_coords({f"{a.dim}_label": xr.Variable((a.dim,), labels, attrs={"long_name": f"{a.key} as given", "units": ""})})
     if plan.zipped:
-        ds = ds.assign_coords(point=np.arange(len(plan.points)))
+        ds = ds.assign_coords(point=xr.Variable(("point",), np.arange(len(plan.points)),
+                                                attrs={"units": "1", "long_name": "index of the point of a --zip sweep"}))
     statuses = [r.get("status") for r in records]
     n_bad = sum(1 for s in statuses if s != STATUS_OK)
     status = STATUS_OK if n_bad == 0 else f"partial: {n_bad} of {len(records)} points not ok"

@@ -39,6 +39,9 @@ register("error", (), "1", "error message of a point that did not complete ('' i
 register("wall_time", (), "s", "wall-clock time spent computing the point")
 register("archive", (), "1", "path of the point's netCDF archive, relative to the sweep file's directory")
 register("resumed", (), "1", "1 if the point was read back from an existing archive instead of computed")
+register("lubricant_name", (), "", "the point's oil by its own name (a lubricant file's name, else the built-in oil)")
+register("lubricant_provenance", (), "", "where the point's oil data come from: measured, data sheet, estimated alpha, "
+         "traction borrowed from another oil")
 # Quasi-static point summary (kind="quasistatic"); cage_speed and
 # inner_ring_axial_displacement are the core names of results.py (scalars there).
 # (also the names hsbearing.analysis.summary uses for a dynamic run, where "over the balls" is

@@ -25,8 +25,48 @@ from hsbearing.workflows.sweeps.plan import STATUS_OK
 # ----------------------------------------------------------------------------- one point (runs in the worker)
 
 
+def with_power_and_film(case: Case, ds: xr.Dataset) -> xr.Dataset:
+    """A quasi-static Dataset with what a sweep compares added: the power loss by source and the drive torque at
+    that state (:func:`hsbearing.systems.angular_contact.rating.quasi_static_power_loss`, scalars ``power_loss``,
+    ``power_loss_<source>`` [W], ``drive_torque`` [N m]) and the minimum film and lambda per ball
+    (:func:`hsbearing.systems.angular_contact.contact_state.quasi_static_contact_state`).  Where the case cannot
+    give one (a system without the dynamic model's cage data), the attribute ``power_loss_note`` says why."""
+    from hsbearing.results import VARIABLES
+    from hsbearing.systems.angular_contact import contact_state
+    from hsbearing.systems.angular_contact.rating import quasi_static_power_loss
+
+    ds = ds.copy()
+    try:
+        state = contact_state.quasi_static_contact_state(case, ds)
+        for k, v in state.items():
+            if k not in ds and k in VARIABLES:
+                ds[k] = xr.Variable(("ball",), np.asarray(v, dtype=float),
+                                    attrs={"units": VARIABLES[k].units, "long_name": VARIABLES[k].long_name})
+    except (KeyError, ValueError, AttributeError) as exc:
+        ds.attrs["film_note"] = f"minimum film not computed: {type(exc).__name__}: {exc}"
+    try:
+        p = quasi_static_power_loss(case)
+    except (CaseError, SolverError, KeyError, ValueError, AttributeError, ArithmeticError) as exc:
+        ds.attrs["power_loss_note"] = f"power loss not computed at this state: {type(exc).__name__}: {exc}"
+        return ds
+
+    for name in ("power_loss", "drive_torque"):
+        ds[name] = xr.Variable((), p[name], attrs={"units": VARIABLES[name].units, "long_name": VARIABLES[name].long_name
+                                                    + " (at the quasi-static state)"})
+    for src, val in p.items():
+        name = f"power_loss_{src}"
+        if name in VARIABLES:
+            ds[name] = xr.Variable((), float(val), attrs={"units": VARIABLES[name].units,
+                                                          "long_name": VARIABLES[name].long_name + " (at the quasi-static state)"})
+    return ds
+
+
 def quasistatic_summary(ds: xr.Dataset) -> dict[str, Any]:
-    """Scalars of a quasi-static result: mean/max contact loads, cage speed, axial displacement."""
+    """Scalars of a quasi-static result: mean/max contact loads, cage speed and slip, axial displacement, and
+    (when the Dataset carries them, :func:`with_power_and_film`) the power loss by source, drive torque,
+    smallest film and lambda and largest contact pressure (:func:`hsbearing.analysis.orbit.contact_power_summary`)."""
+    from hsbearing.analysis.orbit import contact_power_summary
+
     out: dict[str, Any] = {}
     for side in ("inner", "outer"):
         name = f"{side}_contact_load"
@@ -34,9 +74,10 @@ def quasistatic_summary(ds: xr.Dataset) -> dict[str, Any]:
             q = np.asarray(ds[name].values, dtype=float)
             out[f"mean_{name}"] = float(np.mean(q))
             out[f"max_{name}"] = float(np.max(q))
-    for name in ("cage_speed", "inner_ring_axial_displacement"):
+    for name in ("cage_speed", "cage_slip_ratio", "inner_ring_axial_displacement"):
         if name in ds and ds[name].ndim == 0:
             out[name] = float(ds[name].values)
+    out.update(contact_power_summary(ds))
     return out
 
 
@@ -49,10 +90,17 @@ THERMAL_SUMMARY = ("inner_ring_temperature", "outer_ring_temperature", "ball_tem
 
 def thermal_summary(ds: xr.Dataset) -> dict[str, Any]:
     """Scalars of a thermal equilibrium: component, oil outlet and lubricant temperatures [K], heat generated
-    and removed by the oil and by conduction [W], the balance error and the fixed-point iterations, and the
-    power loss by source at equilibrium (``thermal_power_loss_<source>`` [W])."""
+    and removed by the oil and by conduction [W], the balance error and the fixed-point iterations, the
+    power loss by source at equilibrium (``thermal_power_loss_<source>`` [W]) and the heat along every link of
+    the network (``heat_flow_<from>_to_<to>`` [W], :data:`hsbearing.systems.angular_contact.thermal.HEAT_PATHS`)."""
     names = list(THERMAL_SUMMARY) + sorted(str(n) for n in ds.data_vars if str(n).startswith("thermal_power_loss_"))
-    return {n: float(ds[n].values) for n in names if n in ds and ds[n].ndim == 0}
+    out = {n: float(ds[n].values) for n in names if n in ds and ds[n].ndim == 0}
+    if "link_heat_flow" in ds and "link_from" in ds.coords and "link_to" in ds.coords:  # heat by path
+        from hsbearing.systems.angular_contact.thermal import heat_path_name
+
+        for a, b, q in zip(ds["link_from"].values, ds["link_to"].values, ds["link_heat_flow"].values):
+            out[heat_path_name(str(a), str(b))] = float(q)
+    return out
 
 
 def point_summary(kind: str, ds: xr.Dataset) -> dict[str, Any]:
@@ -107,7 +155,7 @@ def compute_point(case: Case, kind: str, duration, point_fn) -> tuple[dict, xr.D
         elif kind == "quasistatic":
             from hsbearing.systems.angular_contact.quasistatic import solve_case
 
-            ds = solve_case(case)
+            ds = with_power_and_film(case, solve_case(case))
         elif kind == "thermal":
             from hsbearing.systems.angular_contact.thermal import thermal_equilibrium
 
@@ -139,6 +187,9 @@ def compute_point(case: Case, kind: str, duration, point_fn) -> tuple[dict, xr.D
         try:
             summ = point_summary(kind, ds)
             rec["summary"] = {k: scalar_value(v) for k, v in summ.items()}
+            if "lubricant_name" in ds.attrs:  # the oil by its own name, and where its data come from
+                rec["summary"]["lubricant_name"] = str(ds.attrs["lubricant_name"])
+                rec["summary"]["lubricant_provenance"] = str(ds.attrs.get("lubricant_provenance", ""))
         except Exception as exc:  # summary of a partial/odd dataset: keep the archive, say why
             rec["summary_error"] = f"summary failed: {type(exc).__name__}: {exc}"
             rec["error"] = "; ".join(e for e in (rec["error"], rec["summary_error"]) if e)
