@@ -101,6 +101,7 @@ for _n, _d, _u, _l in [
 #: the power accounting a summary carries (mean after the transient of a run; the value at the quasi-static state)
 POWER_SUMMARY = ("power_loss", "power_loss_race_traction", "power_loss_ehl_rolling", "power_loss_contact_damping",
                  "power_loss_pocket_film", "power_loss_pocket_boundary", "power_loss_guide_land", "power_loss_drag",
+                 "power_loss_jet_oil_acceleration", "power_loss_cage_windage",  # quasi-static churning terms
                  "drive_torque")
 
 

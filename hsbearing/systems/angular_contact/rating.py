@@ -246,6 +246,9 @@ def quasi_static_power_loss(case, speed=None, with_state: bool = False):
 
 #: the quasi-static sources outside the dynamic kernel (models/ball_bearing/churning.py), after balances.SOURCES
 CAVITY_SOURCES = ("jet_oil_acceleration", "cage_windage")
+for _s, _d in (("jet_oil_acceleration", "the acceleration of the jet's oil to the speed it leaves with (m_dot v^2)"),
+               ("cage_windage", "the windage of the cage's side faces (rotating-disc estimate)")):
+    register(f"power_loss_{_s}", (), "W", f"power dissipated by {_d} (quasi-static; not in the dynamic model)")
 
 
 def _cavity_losses(case, m, out):
