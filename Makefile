@@ -54,7 +54,7 @@ lint: $(STAMP)
 
 # the mutation check: each plausible one-line bug of tools/investigations/mutation_check.py applied to a copy of the
 # package, the validation tests covering that file run against it (fresh numba cache each); the baseline must pass and
-# every mutation must be caught (docs/testing.md, "Mutation check"; ~1-1.5 h of CPU on 2 cores, not in CI)
+# every mutation must be caught (docs/testing.md, "Mutation check across the physics"; ~31 min on 2 cores, not in CI)
 mutation: $(STAMP)
 	$(BIN)/python tools/investigations/mutation_check.py
 

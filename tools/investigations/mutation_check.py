@@ -94,7 +94,8 @@ MUTATIONS = {
     "drag_coefficient_table": (
         K + "drag.py", "24.0 / Re * (1.0 + 0.1935 * Re**0.6305)", "24.0 / Re * (1.0 + 0.1935 * Re**0.6035)",
         "sphere drag coefficient: exponent 0.6305 -> 0.6035 (Re 20-260; transposed digits)",
-        ("tests/models/test_drag_coefficient.py::test_standard_curve_against_roos_willmarth_1971",)),
+        ("tests/models/test_drag_coefficient.py::test_standard_curve_against_roos_willmarth_1971",
+         "tests/models/test_drag_coefficient.py::test_stokes_limit_and_continuity")),
     "hertz_reduced_modulus": (
         "hsbearing/models/hertz.py", "return 2.0 / ((1.0 - np.square(nu1)) / E1 + (1.0 - np.square(nu2)) / E2)",
         "return 1.0 / ((1.0 - np.square(nu1)) / E1 + (1.0 - np.square(nu2)) / E2)",
