@@ -13,7 +13,7 @@ LATEST := .venv-latest
 RUN_DURATION ?= 0.7s
 PYTEST_ARGS ?=
 
-.PHONY: run test test-all test-latest bench lock lock-docs lint clean venv docs
+.PHONY: run test test-all test-latest bench lock lock-docs lint mutation clean venv docs
 
 $(STAMP): pyproject.toml requirements.lock
 	$(PYTHON) -m venv $(VENV)
@@ -73,6 +73,12 @@ lock-docs: $(STAMP)
 # ruff over the package, tests, tools, benchmarks and docs scripts (rules: [tool.ruff] in pyproject.toml; ruff is in the lock)
 lint: $(STAMP)
 	$(BIN)/ruff check hsbearing tests tools benchmarks docs examples
+
+# the mutation check: each plausible one-line bug of tools/investigations/mutation_check.py applied to a copy of the
+# package, the validation tests covering that file run against it (fresh numba cache each); the baseline must pass and
+# every mutation must be caught (docs/testing.md, "Mutation check across the physics"; ~31 min on 2 cores, not in CI)
+mutation: $(STAMP)
+	$(BIN)/python tools/investigations/mutation_check.py
 
 # every benchmark in benchmarks/ (one-off measurements live in tools/investigations/)
 bench: $(STAMP)

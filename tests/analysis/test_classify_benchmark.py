@@ -86,6 +86,17 @@ def test_rotation_number_of_an_arc_is_measured_about_its_curve():
     assert rotation_number(P) == pytest.approx(rho, rel=0.02)
 
 
+@pytest.mark.parametrize("rho", [0.0007, 0.13, 0.31, 0.47])
+def test_rotation_number_is_the_same_in_both_senses(rho):
+    """Known answer: points stepping rho turn per section round a circle, counter-clockwise and clockwise (a whirl
+    against the cage's sense, or the other sense of rotation of the bearing), and the same steps read as 1 - rho
+    (the other side of the circle): the rotation number is rho in every case (folded to [0, 1/2])."""
+    for step in (rho, -rho, 1.0 - rho, -(1.0 - rho)):
+        th = 0.3 + 2 * np.pi * step * np.arange(120)
+        P = np.column_stack([2.0 + np.cos(th), -1.0 + np.sin(th)])
+        assert rotation_number(P) == pytest.approx(rho, rel=1e-9), step
+
+
 def test_one_smeared_cluster_is_not_k_periods():
     """One cluster smeared over ~3 % of the orbit with an 8-step pattern of 1.5 % inside it: the 8 class medians are
     closer than their spread, so this is not "8 periods" (old: "8 periods")."""
