@@ -5,22 +5,21 @@ velocity noise s / (sqrt 2 dt): with 0.2 um on a probe sampled every 50 us that 
 speed of a 100 um whirl at 96 rev/s -- enough to smear the Poincare section into a cloud read as "chaos".
 
 :func:`smoothed_velocity` is instead the first derivative of a local polynomial fitted by least squares
-(Savitzky & Golay 1964, Anal. Chem. 36, 1627; the frequency response and cutoff as in Schafer 2011,
-IEEE Signal Process. Mag. 28(4), 111, eq. 11): degree :data:`DEGREE`, window of N = 2m + 1 samples chosen so
-that the filter's cutoff lies :data:`CUTOFF_HARMONIC` times above the orbit's dominant frequency f_d
-(the largest peak of the spectrum of D_Y + i D_Z).  Everything up to that harmonic passes (a loop of a
-k-period orbit, a torus, a chaotic flow, all slower than or near f_d, and their first harmonics); what
-lies above it (the ball-pass jitter of a cage, probe noise) is removed.
+(Savitzky & Golay 1964, Anal. Chem. 36, 1627): degree :data:`DEGREE`, a window of N = 2m + 1 samples
+spanning :data:`WINDOW_PERIODS` of the period of the orbit's dominant frequency f_d (the largest peak of the
+spectrum of D_Y + i D_Z).  Its amplitude response (measured for N = 117 at 50 us, f_d = 93 Hz) is 0.9996 at
+f_d, 0.98 at 2 f_d, 0.85 at 3 f_d and 0.50 at 4 f_d: a loop of a k-period orbit, a torus, a chaotic flow
+(all slower than or near f_d) and their first harmonics pass; what is faster (the ball-pass jitter of a
+cage, probe noise) is removed.
 
 Noise gain: for white position noise of standard deviation s the velocity noise is
 s x G with G = sqrt(sum_k c_k^2) [1/s], c_k the derivative weights (:func:`noise_gain`);
 for central differences G = 1 / (sqrt 2 dt).  At the benchmark's sampling (dt = 50 us, f_d = 93 Hz:
-N = 85) G = 221 /s against 14 142 /s for central differences: 64 times less velocity noise
-(tests/analysis/test_position_only.py measures it on white noise).  The price is a bias on fast content,
-the filter's amplitude response at 1, 2, 3 and 4 x f_d being 0.995, 0.94, 0.75 and 0.43 (measured in the
-same test at 1 and 2 x).  The window factor (:data:`CUTOFF_HARMONIC` = 4) was chosen on the classifier
-benchmark: at 3 (N = 113, 98 x less noise) and at 4 every position-only variant gets its label; 4 keeps
-more of the second and third harmonics of a real orbit.
+N = 117) G = 240 /s against 14 142 /s for central differences: 59 times less velocity noise
+(tests/analysis/test_position_only.py measures it on white noise, and the bias on a sinusoid at f_d and
+2 f_d).  Degree and window were chosen on the classifier benchmark: degree 4 with a window of half the
+period passes it too, but loses 0.5 % of the velocity at f_d (a clean orbit's section moves by more than
+the 0.2 % tests/analysis/test_analysis.py allows); degree 6 has the same noise gain and a flat passband.
 """
 
 from __future__ import annotations
@@ -29,29 +28,24 @@ import numpy as np
 
 from hsbearing.analysis.spectrum import whirl_frequency
 
-__all__ = ["smoothed_velocity", "velocity_window", "noise_gain", "DEGREE", "CUTOFF_HARMONIC", "method_text"]
+__all__ = ["smoothed_velocity", "velocity_window", "noise_gain", "DEGREE", "WINDOW_PERIODS", "method_text"]
 
 #: Degree of the local polynomial.
-DEGREE = 4
-#: The -3 dB cutoff of the filter is this many times the dominant frequency of the orbit.
-CUTOFF_HARMONIC = 4.0
+DEGREE = 6
+#: The window spans this fraction of the period of the orbit's dominant frequency.
+WINDOW_PERIODS = 0.55
 #: Smallest and largest window [samples].
-MIN_WINDOW, MAX_WINDOW = 7, 401
+MIN_WINDOW, MAX_WINDOW = 9, 401
 
 
 def velocity_window(dt: float, f_dominant: float, n: int) -> int:
-    """Odd window length N [samples] whose cutoff is CUTOFF_HARMONIC x |f_dominant|.
+    """Odd window length N [samples] spanning WINDOW_PERIODS / |f_dominant|.
 
-    Schafer (2011) eq. 11: the -3 dB cutoff of a degree-p Savitzky-Golay smoother of length N is
-    f_c / f_s ~ (p + 1) / (3.2 N - 4.6); solved for N at f_c = CUTOFF_HARMONIC |f_d|.  Bounded by
-    [MIN_WINDOW, MAX_WINDOW] and by a third of the samples; MIN_WINDOW when f_d is unknown (NaN or 0).
+    Bounded by [MIN_WINDOW, MAX_WINDOW] and by a third of the samples; MIN_WINDOW when f_d is unknown
+    (NaN or 0).
     """
     fd = abs(float(f_dominant)) if np.isfinite(f_dominant) else 0.0
-    if fd <= 0 or not (dt > 0):
-        N = MIN_WINDOW
-    else:
-        fc = CUTOFF_HARMONIC * fd * dt  # cycles per sample
-        N = int(round(((DEGREE + 1) / fc + 4.6) / 3.2))
+    N = int(round(WINDOW_PERIODS / (fd * dt))) if fd > 0 and dt > 0 else MIN_WINDOW
     N = max(MIN_WINDOW, min(N, MAX_WINDOW, max(n // 3, MIN_WINDOW)))
     return N if N % 2 else N - 1
 
@@ -119,6 +113,6 @@ def method_text(info: dict) -> str:
     if not info.get("window"):
         return "estimated from the positions: too few samples"
     return (f"estimated from the positions: {info['method']}, degree {info['degree']}, window {info['window']} samples "
-            f"({info['window'] * info['dt'] * 1e3:.3g} ms, cutoff {CUTOFF_HARMONIC:g} x the dominant "
+            f"({info['window'] * info['dt'] * 1e3:.3g} ms, {WINDOW_PERIODS:g} period of the dominant "
             f"{abs(info['dominant_frequency']):.4g} Hz); white position noise s gives velocity noise "
             f"{info['noise_gain']:.4g} s /s (central differences: {info['central_difference_gain']:.4g} s /s)")

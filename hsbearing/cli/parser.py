@@ -96,6 +96,10 @@ def build_parser() -> argparse.ArgumentParser:
                     help="what each point computes: run (dynamics), quasistatic (equilibrium), thermal (steady "
                          "thermal network at its power loss, as 'hsbearing thermal')")
     sp.add_argument("--duration", help="simulated time of each run, e.g. 0.05s")
+    sp.add_argument("--keep", choices=("answer", "full"), default="answer",
+                    help="what each point archive keeps: answer (default: summaries, label and reasons, section points, "
+                         "the cage-centre orbit, decimated histories, the final state for --continue) or full (the whole "
+                         "trajectory)")
     sp.add_argument("--stop", choices=("duration", "converged"), default=None,
                     help="stop rule: duration (run the whole duration) or converged (stop when the cage-motion label, its kind and the summaries have held over a confirming check; the duration is the upper bound; docs/sweeps.md); default: [simulation] stop of the case, duration")
     sp.add_argument("-o", "--output", required=True, help="output directory")
@@ -113,6 +117,10 @@ def build_parser() -> argparse.ArgumentParser:
     sp.add_argument("-j", "--jobs", type=int, default=None, help="worker processes (default: cores)")
     sp.add_argument("--scheduler", default=None, help="dask.distributed scheduler address tcp://host:port")
     sp.add_argument("--duration", help="simulated time of each run, e.g. 0.6s (default: [simulation] duration)")
+    sp.add_argument("--keep", choices=("answer", "full"), default="answer",
+                    help="what each point archive keeps: answer (default: summaries, label and reasons, section points, "
+                         "the cage-centre orbit, decimated histories, the final state for --continue) or full (the whole "
+                         "trajectory)")
     sp.add_argument("--stop", choices=("duration", "converged"), default='converged',
                     help="stop rule: duration (run the whole duration) or converged (stop when the cage-motion label, its kind and the summaries have held over a confirming check; the duration is the upper bound; docs/sweeps.md); default converged")
     sp.add_argument("-o", "--output", required=True, help="output directory (resumable: rerun to finish)")
@@ -141,6 +149,10 @@ def build_parser() -> argparse.ArgumentParser:
                     help="address tcp://host:port of a running dask.distributed scheduler; the points run on its "
                          "workers instead of local processes")
     sp.add_argument("--duration", help="simulated time of each run (default: the study's, e.g. 1.2 s)")
+    sp.add_argument("--keep", choices=("answer", "full"), default="answer",
+                    help="what each point archive keeps: answer (default: summaries, label and reasons, section points, "
+                         "the cage-centre orbit, decimated histories, the final state for --continue) or full (the whole "
+                         "trajectory)")
     sp.add_argument("--stop", choices=("duration", "converged"), default='converged',
                     help="stop rule: duration (run the whole duration) or converged (stop when the cage-motion label, its kind and the summaries have held over a confirming check; the duration is the upper bound; docs/sweeps.md); default converged")
     grp = sp.add_mutually_exclusive_group()

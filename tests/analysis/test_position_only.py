@@ -32,24 +32,24 @@ def test_noise_gain_measured_on_white_noise():
     dt, n = B.DT, 200_000
     t = np.arange(n) * dt
     # a slow whirl fixes the window (dominant frequency 93 Hz), noise on top
-    s = 10e-6  # the noise dominates the filter's 0.5 % bias on the whirl itself
+    s = 1e-6
     y = 100e-6 * np.cos(0.97 * W * t) + s * rng.standard_normal(n)
     z = 100e-6 * np.sin(0.97 * W * t) + s * rng.standard_normal(n)
     vy, vz, info = smoothed_velocity(t, y, z)
     inner = slice(1000, -1000)
     err = vy[inner] + 100e-6 * 0.97 * W * np.sin(0.97 * W * t[inner])
     G = noise_gain(info["window"], dt)
-    assert info["window"] == velocity_window(dt, 0.97 * W / (2 * math.pi), n) == 85
+    assert info["window"] == velocity_window(dt, 0.97 * W / (2 * math.pi), n) == 117
     assert np.std(err) == pytest.approx(G * s, rel=0.03)
     cd = np.gradient(y, t)[inner] + 100e-6 * 0.97 * W * np.sin(0.97 * W * t[inner])
     assert np.std(cd) == pytest.approx(s / (math.sqrt(2) * dt), rel=0.03)
-    assert G < (1 / (math.sqrt(2) * dt)) / 60  # 64 x less noise than central differences
+    assert G < (1 / (math.sqrt(2) * dt)) / 55  # 59 x less noise than central differences
 
 
-@pytest.mark.parametrize("harmonic,tol", [(1.0, 6e-3), (2.0, 0.09)])
+@pytest.mark.parametrize("harmonic,tol", [(1.0, 1e-3), (2.0, 0.025)])
 def test_bias_on_a_sinusoid(harmonic, tol):
-    """No noise: the derivative of a sinusoid at the dominant frequency is exact to 0.6 %, its second harmonic
-    loses at most 9 % (the filter's response 0.94, plus the 0.5 % loss on the 10 x larger fundamental)."""
+    """No noise: the derivative of a sinusoid at the dominant frequency is exact to 0.1 %, its second harmonic
+    loses at most 2.5 % (the filter's response 0.98)."""
     dt = B.DT
     t = np.arange(40_000) * dt
     f0 = 93.0
@@ -109,6 +109,23 @@ def test_benchmark_positions_only_long_noisy():
 @pytest.mark.parametrize("length,noise", [("short", 0.0), ("long", 0.0), ("long", 0.002)])
 def test_benchmark_positions_only_remaining(length, noise):
     assert _misses(length, noise) == []
+
+
+def _only_undetermined(misses):
+    assert {m[0].split(",")[0] for m in misses} <= {"epicycle period 3", "torus (golden)"}, misses
+    assert all(m[2] == "undetermined" for m in misses), misses
+
+
+def test_probe_noise_two_percent_short():
+    """At the 2 % probe noise (above the benchmark's levels), positions only, every motion gets its label but the
+    3-loop epicycle, read "undetermined" -- as it is with its stored velocities at 2 % -- and nothing is read
+    wrong; on 400 revolutions (slow test) the torus too."""
+    _only_undetermined(_misses("short", B.PROBE_NOISE))
+
+
+@pytest.mark.slow
+def test_probe_noise_two_percent_long():
+    _only_undetermined(_misses("long", B.PROBE_NOISE))
 
 
 @pytest.mark.parametrize("positions_only", [False, True])
