@@ -70,6 +70,13 @@ def build_parser() -> argparse.ArgumentParser:
     sp.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     sp.add_argument("--thermal", action="store_true", help="solve the thermal network first (hsbearing thermal) and run "
                     "at its lubricant temperature (traction and viscosity); needs lubricant.oil_flow_rate")
+    sp.add_argument("--extend", action="store_true",
+                    help="while the cage-motion label is undetermined, continue the run from its last state in steps "
+                         "(an e-folding time of a growing whirl, the classifier's estimate, or half the run) until it "
+                         "is determined or --max-duration is reached; the extensions and why they stopped are in the "
+                         "archive (attrs extensions, extension_stop_reason)")
+    sp.add_argument("--max-duration", dest="max_duration", metavar="T",
+                    help="budget of --extend: total simulated time, e.g. 3s (default: 3 x the run's duration)")
     sp.add_argument("--continue", dest="continue_from", metavar="ARCHIVE.nc",
                     help="extend the run in ARCHIVE.nc from its last state by --duration (default: to the duration "
                          "it was started with, e.g. after Ctrl-C); written back to ARCHIVE.nc unless -o")
