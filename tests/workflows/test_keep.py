@@ -141,3 +141,16 @@ def test_keep_definition_is_stated(tmp_path):
         text = ds.attrs["keep_definition"]
         rec = json.loads(ds.attrs["sweep_record"])
     assert "every one of the" in text and "--keep full" in text and rec["status"] == "ok"
+
+
+def test_run_figure_from_a_kept_archive(tmp_path):
+    """`hsbearing plot` of a kept archive: the orbit panels from the whole orbit, the slip panel from the decimated
+    history on its own time."""
+    from hsbearing import systems
+    from hsbearing.results import open_run
+
+    a = _sweep(tmp_path, "answer")
+    ds = open_run(tmp_path / "answer" / str(a["archive"].values[0]))
+    assert ds["cage_slip_ratio"].dims == ("time_decimated",)
+    png = systems.plot_run(ds, tmp_path / "kept.png")
+    assert png and png.stat().st_size > 10_000
