@@ -23,7 +23,8 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 __all__ = ["Motion", "CAGE_SPEED", "CLEARANCE", "BALLS", "circle", "epicycle", "torus", "locking_transient",
-           "spiral", "micro_vibration", "rossler", "ou_noise", "with_noise", "cases", "NOISE_LEVELS", "LENGTHS"]
+           "spiral", "micro_vibration", "rossler", "ou_noise", "with_noise", "positions_only", "cases", "NOISE_LEVELS",
+           "PROBE_NOISE", "LENGTHS", "replace"]
 
 #: Cage rotation speed [rad/s] (96 rev/s).
 CAGE_SPEED = 2 * math.pi * 96.0
@@ -37,6 +38,8 @@ DT = 50e-6
 RADIUS = 100e-6
 #: Additive noise levels: fraction of the whirl radius (positions) and of radius x cage speed (velocities).
 NOISE_LEVELS = (0.002, 0.01)
+#: Noise of a proximity-probe record (fraction of the whirl radius) for the position-only variants: 2 %.
+PROBE_NOISE = 0.02
 #: Run lengths: cage revolutions in the analysed window (short ~ a 1.2 s study run after its transient).
 LENGTHS = {"short": 80, "long": 400}
 
@@ -207,6 +210,16 @@ def with_noise(m: Motion, level: float, seed: int = 0) -> Motion:
     return replace(m, name=f"{m.name}, noise {100 * level:g} %", y=m.y + s * rng.standard_normal(n),
                    z=m.z + s * rng.standard_normal(n), vy=m.vy + sv * rng.standard_normal(n),
                    vz=m.vz + sv * rng.standard_normal(n))
+
+
+def positions_only(m: Motion) -> Motion:
+    """``m`` as a proximity probe records it: the positions (with whatever noise they carry), no velocities.
+
+    The velocities are set to NaN; :func:`hsbearing.analysis.whirl.classify_motion` is then called with
+    ``vy = vz = None`` so that it estimates them (:mod:`hsbearing.analysis.derivative`).
+    """
+    nan = np.full_like(m.y, np.nan)
+    return replace(m, name=f"{m.name}, positions only", vy=nan, vz=nan.copy(), info={**m.info, "positions_only": True})
 
 
 def cases(length: str = "short", noise: float = 0.0, seed: int = 0) -> list[Motion]:

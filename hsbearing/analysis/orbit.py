@@ -228,7 +228,10 @@ def annotate(ds: xr.Dataset, case=None, *, alpha=None, section: str = _pc.DEFAUL
     ds : xarray.Dataset
         A dynamic run with ``time`` [s], ``cage_speed`` [rad/s],
         ``cage_center_y``/``cage_center_z`` [m]; optionally
-        ``cage_velocity_y``/``cage_velocity_z`` [m/s] and ``cage_angle`` [rad].
+        ``cage_velocity_y``/``cage_velocity_z`` [m/s] and ``cage_angle`` [rad].  Without the velocities
+        (positions only: a measured orbit) they are estimated by a local-polynomial derivative
+        (:func:`hsbearing.analysis.derivative.smoothed_velocity`), recorded in
+        ``attrs["cage_velocity_source"]``.
     case : hsbearing.case.Case, optional
         The run's case (for the theoretical cage speed and the guide
         clearance); default: re-read from ``ds.attrs["case_toml"]``.
@@ -310,8 +313,8 @@ def annotate(ds: xr.Dataset, case=None, *, alpha=None, section: str = _pc.DEFAUL
     t_m = t[mask]
     y_m = np.asarray(ds["cage_center_y"].values, float)[mask]
     z_m = np.asarray(ds["cage_center_z"].values, float)[mask]
-    vy_m = _pc.cage_velocity(ds, "y")[mask]
-    vz_m = _pc.cage_velocity(ds, "z")[mask]
+    vy_all, vz_all, v_source = _pc.cage_velocities(ds)
+    vy_m, vz_m = vy_all[mask], vz_all[mask]
     phi_m = _pc.cage_rotation_angle(ds)[mask]
     gc = float(ds.attrs.get("guide_clearance", float("nan")))
     gcl = gc if math.isfinite(gc) and gc > 0 else None
@@ -353,6 +356,7 @@ def annotate(ds: xr.Dataset, case=None, *, alpha=None, section: str = _pc.DEFAUL
         poincare_section_kind=section,
         poincare_section_definition=json.dumps(_jsonable(defn)),
         whirl_cage_lock=_lock_text(lock),
+        cage_velocity_source=v_source,
         transient_discarded=float(t_discard),
         transient_rule=("auto: max(30 % of the span, end of drift of the per-revolution mean radius and cage speed), "
                         "at most 60 %" if transient == "auto" else f"fixed: first {100 * float(transient):g} % of the span"),
@@ -450,7 +454,14 @@ def summary(ds: xr.Dataset, case=None) -> dict[str, Any]:
     for side in ("inner", "outer"):
         name = f"{side}_contact_load"
         if name in ds:
-            q = ds[name].isel(sel) if sel else ds[name]
+            q = ds[name]
+            if sel and "time" in q.dims:
+                q = q.isel(sel)
+            elif "time_decimated" in q.dims:  # a kept archive (keep="answer"): the decimated history after the transient
+                td = np.asarray(ds["time_decimated"].values, float)
+                t_all = np.asarray(ds["time"].values, float) if "time" in ds.dims else td
+                cut = t_all[0] + float(ds.attrs.get("transient_discarded", 0.0)) if t_all.size else 0.0
+                q = q.isel(time_decimated=np.nonzero(td >= cut)[0])
             out[f"mean_{name}"] = float(q.mean())
             out[f"max_{name}"] = float(q.max())
         else:

@@ -41,9 +41,11 @@ interval (20 us, ~500 samples per cage revolution at 14000 r/min) the
 interpolation error is O((2 pi / 500)^2) of the orbit size; the bundled
 zhang2016 case stores every 50 us (~210 samples per revolution, error
 ~(2 pi / 210)^2 = 9e-4), both far below the classifier tolerance (0.02).  If ``cage_angle`` is absent it is the time integral of
-``cage_speed`` (trapezoidal rule); if ``cage_velocity_y`` is absent V_Y is
-the time derivative of D_Y (second-order central differences,
-``numpy.gradient``).
+``cage_speed`` (trapezoidal rule); if ``cage_velocity_y``/``cage_velocity_z`` are absent (a measured
+orbit, positions only) V_Y and V_Z are the derivative of a local polynomial fitted to D_Y, D_Z
+(:func:`hsbearing.analysis.derivative.smoothed_velocity`: a Savitzky-Golay derivative whose window follows
+the orbit's dominant frequency, noise gain stated there), not central differences, which amplify
+position noise into a cloud of section points.
 
 Transient (``transient="auto"``, the default of :func:`hsbearing.analysis.annotate`):
 the discarded start is the later of 30 % of the simulated span and the end of
@@ -73,6 +75,7 @@ __all__ = [
     "section_description",
     "cage_rotation_angle",
     "cage_velocity",
+    "cage_velocities",
     "steady_mask",
     "transient_cut",
     "after_transient",
@@ -123,16 +126,26 @@ def cage_rotation_angle(ds) -> np.ndarray:
     return ang
 
 
+def cage_velocities(ds) -> tuple[np.ndarray, np.ndarray, str]:
+    """Cage-centre velocities V_Y, V_Z [m/s] and where they come from ("stored" or the estimator's line).
+
+    Stored ``cage_velocity_y``/``cage_velocity_z`` when both are present; otherwise both are estimated from
+    the positions by :func:`hsbearing.analysis.derivative.smoothed_velocity` (never one stored and one
+    estimated: their noise would differ).
+    """
+    from hsbearing.analysis.derivative import method_text, smoothed_velocity
+
+    if "cage_velocity_y" in ds and "cage_velocity_z" in ds:
+        return (np.asarray(ds["cage_velocity_y"].values, dtype=float),
+                np.asarray(ds["cage_velocity_z"].values, dtype=float), "stored")
+    vy, vz, info = smoothed_velocity(_time(ds), ds["cage_center_y"].values, ds["cage_center_z"].values)
+    return vy, vz, method_text(info)
+
+
 def cage_velocity(ds, axis: str = "y") -> np.ndarray:
-    """Cage-centre velocity V_Y or V_Z [m/s]: stored ``cage_velocity_<axis>`` or dD/dt."""
-    name = f"cage_velocity_{axis}"
-    if name in ds:
-        return np.asarray(ds[name].values, dtype=float)
-    t = _time(ds)
-    d = np.asarray(ds[f"cage_center_{axis}"].values, dtype=float)
-    if len(t) < 3:
-        return np.full_like(d, np.nan)
-    return np.gradient(d, t, edge_order=2)
+    """Cage-centre velocity V_Y or V_Z [m/s]: stored ``cage_velocity_<axis>`` or estimated (:func:`cage_velocities`)."""
+    vy, vz, _ = cage_velocities(ds)
+    return vy if axis == "y" else vz
 
 
 def steady_mask(t, transient_fraction: float = DEFAULT_TRANSIENT_FRACTION) -> tuple[np.ndarray, float]:
@@ -270,7 +283,9 @@ def transverse_crossings(t, y, z, vy=None, vz=None, hysteresis: float = 0.05):
     yc, zc = float(np.mean(y)), float(np.mean(z))
     dy, dz = y - yc, z - zc
     if vy is None or vz is None:
-        vy_, vz_ = np.gradient(y, t), np.gradient(z, t)
+        from hsbearing.analysis.derivative import smoothed_velocity
+
+        vy_, vz_, _ = smoothed_velocity(t, y, z)
     else:
         vy_, vz_ = np.asarray(vy, float)[ok], np.asarray(vz, float)[ok]
     L = float(np.nanmean(dy * vz_ - dz * vy_))  # mean angular momentum about the orbit centre: sense of the whirl

@@ -148,7 +148,8 @@ def classify_motion(t, y, z, vy=None, vz=None, cage_angle=None, *, clearance: fl
     t, y, z : (n,) array_like
         Time [s] and cage-centre displacements D_Y, D_Z [m].
     vy, vz : (n,) array_like, optional
-        Cage-centre velocities [m/s] (central differences of y, z without them).
+        Cage-centre velocities [m/s]; without them (either one None) both are estimated from y, z by
+        :func:`hsbearing.analysis.derivative.smoothed_velocity` (local-polynomial derivative).
     cage_angle : (n,) array_like, optional
         Cage rotation angle about X [rad]; needed for ``section="cage_revolution"`` and the lock report.
     clearance : float, optional
@@ -176,8 +177,12 @@ def classify_motion(t, y, z, vy=None, vz=None, cage_angle=None, *, clearance: fl
     y = np.asarray(y, float)
     z = np.asarray(z, float)
     ok = np.isfinite(t) & np.isfinite(y) & np.isfinite(z)
-    vy = np.gradient(y, t) if vy is None and t.size >= 3 else np.asarray(vy if vy is not None else y * np.nan, float)
-    vz = np.gradient(z, t) if vz is None and t.size >= 3 else np.asarray(vz if vz is not None else z * np.nan, float)
+    if vy is None or vz is None:  # positions only: a derivative that does not amplify noise (analysis.derivative)
+        from hsbearing.analysis.derivative import smoothed_velocity
+
+        vy, vz, _ = smoothed_velocity(t, y, z)
+    vy = np.asarray(vy, float)
+    vz = np.asarray(vz, float)
     ok &= np.isfinite(vy) & np.isfinite(vz)
     t, y, z, vy, vz = t[ok], y[ok], z[ok], vy[ok], vz[ok]
     phi = None if cage_angle is None else np.asarray(cage_angle, float)[ok]

@@ -138,15 +138,43 @@ def cmd_run(args) -> int:
     duration = _duration_arg(args.duration)
     if duration is not None:
         check_output_samples(case, duration, source="--duration", key="duration")
+    budget = _extend_budget(args, case, duration)
     out = Path(args.output) if args.output is not None else default_output(case, ".nc", f"duration={duration}")
     check_output_path(out, source="-o" if args.output is not None else "output", derived=_run_figures(out, args))
     try:
         ds = simulate(case, duration=duration, progress=not args.quiet)
+        if budget is not None:
+            from hsbearing.systems.angular_contact.extend import extend_until_determined
+
+            ds = extend_until_determined(ds, budget, progress=not args.quiet)
+            print(f"extension: {ds.attrs['extension_stop_reason']}")
     except Interrupted as exc:
         return _keep_interrupted(exc.partial, out)
     except SolverError as exc:
         return _run_failed(exc, out)
     return _finish_run(ds, out, args)
+
+
+def _extend_budget(args, case, duration) -> float | None:
+    """The --max-duration of ``hsbearing run --extend`` [s] (None without --extend); bad input exits 2 before any run."""
+    from hsbearing.case import check_output_samples
+    from hsbearing.systems.angular_contact.extend import DEFAULT_BUDGET_FACTOR
+
+    extend, text = bool(getattr(args, "extend", False)), getattr(args, "max_duration", None)
+    if not extend:
+        if text:
+            raise CaseError("--max-duration", "max_duration", "only with --extend")
+        return None
+    if case.system != "angular_contact":
+        raise CaseError("--extend", "system", f"runs of system {case.system!r} cannot be extended")
+    d = duration if duration is not None else float(case.simulation.duration)
+    if not text:
+        return DEFAULT_BUDGET_FACTOR * d
+    budget = parse_quantity(text, "time", source="--max-duration", key="max_duration")
+    if not budget >= d:
+        raise CaseError("--max-duration", "max_duration", f"must be at least the run's duration {d:g} s, got {text!r}")
+    check_output_samples(case, budget, source="--max-duration", key="max_duration")
+    return budget
 
 
 def _run_figures(out: Path, args) -> list[Path]:
@@ -215,6 +243,8 @@ def _cmd_continue(args) -> int:
     src = Path(args.continue_from)
     if args.case or args.set:
         raise CaseError("--continue", None, "takes no CASE and no --set: the run goes on with the case stored in the archive")
+    if getattr(args, "extend", False) or getattr(args, "max_duration", None):
+        raise CaseError("--continue", None, "takes no --extend / --max-duration: give --duration to extend by")
     if not src.is_file():
         raise CaseError(str(src), None, "no such archive" if not src.exists() else "not a file")
     try:

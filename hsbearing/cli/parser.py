@@ -70,6 +70,13 @@ def build_parser() -> argparse.ArgumentParser:
     sp.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     sp.add_argument("--thermal", action="store_true", help="solve the thermal network first (hsbearing thermal) and run "
                     "at its lubricant temperature (traction and viscosity); needs lubricant.oil_flow_rate")
+    sp.add_argument("--extend", action="store_true",
+                    help="while the cage-motion label is undetermined, continue the run from its last state in steps "
+                         "(an e-folding time of a growing whirl, the classifier's estimate, or half the run) until it "
+                         "is determined or --max-duration is reached; the extensions and why they stopped are in the "
+                         "archive (attrs extensions, extension_stop_reason)")
+    sp.add_argument("--max-duration", dest="max_duration", metavar="T",
+                    help="budget of --extend: total simulated time, e.g. 3s (default: 3 x the run's duration)")
     sp.add_argument("--continue", dest="continue_from", metavar="ARCHIVE.nc",
                     help="extend the run in ARCHIVE.nc from its last state by --duration (default: to the duration "
                          "it was started with, e.g. after Ctrl-C); written back to ARCHIVE.nc unless -o")
@@ -96,6 +103,10 @@ def build_parser() -> argparse.ArgumentParser:
                     help="what each point computes: run (dynamics), quasistatic (equilibrium), thermal (steady "
                          "thermal network at its power loss, as 'hsbearing thermal')")
     sp.add_argument("--duration", help="simulated time of each run, e.g. 0.05s")
+    sp.add_argument("--keep", choices=("answer", "full"), default="answer",
+                    help="what each point archive keeps: answer (default: summaries, label and reasons, section points, "
+                         "the cage-centre orbit, decimated histories, the final state for --continue) or full (the whole "
+                         "trajectory)")
     sp.add_argument("--stop", choices=("duration", "converged"), default=None,
                     help="stop rule: duration (run the whole duration) or converged (stop when the cage-motion label, its kind and the summaries have held over a confirming check; the duration is the upper bound; docs/sweeps.md); default: [simulation] stop of the case, duration")
     sp.add_argument("-o", "--output", required=True, help="output directory")
@@ -113,6 +124,10 @@ def build_parser() -> argparse.ArgumentParser:
     sp.add_argument("-j", "--jobs", type=int, default=None, help="worker processes (default: cores)")
     sp.add_argument("--scheduler", default=None, help="dask.distributed scheduler address tcp://host:port")
     sp.add_argument("--duration", help="simulated time of each run, e.g. 0.6s (default: [simulation] duration)")
+    sp.add_argument("--keep", choices=("answer", "full"), default="answer",
+                    help="what each point archive keeps: answer (default: summaries, label and reasons, section points, "
+                         "the cage-centre orbit, decimated histories, the final state for --continue) or full (the whole "
+                         "trajectory)")
     sp.add_argument("--stop", choices=("duration", "converged"), default='converged',
                     help="stop rule: duration (run the whole duration) or converged (stop when the cage-motion label, its kind and the summaries have held over a confirming check; the duration is the upper bound; docs/sweeps.md); default converged")
     sp.add_argument("-o", "--output", required=True, help="output directory (resumable: rerun to finish)")
@@ -141,6 +156,10 @@ def build_parser() -> argparse.ArgumentParser:
                     help="address tcp://host:port of a running dask.distributed scheduler; the points run on its "
                          "workers instead of local processes")
     sp.add_argument("--duration", help="simulated time of each run (default: the study's, e.g. 1.2 s)")
+    sp.add_argument("--keep", choices=("answer", "full"), default="answer",
+                    help="what each point archive keeps: answer (default: summaries, label and reasons, section points, "
+                         "the cage-centre orbit, decimated histories, the final state for --continue) or full (the whole "
+                         "trajectory)")
     sp.add_argument("--stop", choices=("duration", "converged"), default='converged',
                     help="stop rule: duration (run the whole duration) or converged (stop when the cage-motion label, its kind and the summaries have held over a confirming check; the duration is the upper bound; docs/sweeps.md); default converged")
     grp = sp.add_mutually_exclusive_group()

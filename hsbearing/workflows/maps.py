@@ -69,7 +69,7 @@ def _plan_vary(x, y) -> dict:
 def run_map(case, x, y, *, out_dir, jobs: int | None = None, scheduler: str | None = None, duration=None,
             progress: bool = True, point_fn: Callable | None = None, retry_failed: bool = False,
             figure: bool = True, warm_start: bool = False, cold_sample: int = 4,
-            stop: str | None = "converged") -> xr.Dataset:
+            stop: str | None = "converged", keep: str = "answer") -> xr.Dataset:
     """Run a two-key cage-stability map and write ``out_dir/map.nc`` (and ``map.png``).
 
     Parameters
@@ -81,6 +81,7 @@ def run_map(case, x, y, *, out_dir, jobs: int | None = None, scheduler: str | No
     figure : draw ``map.png``.
     stop : stop rule of every point, "converged" (default, as ``hsbearing map``; docs/sweeps.md "Stop rule") or
         "duration"; None = the case's ``[simulation] stop``.  Set in the case only when it changes it.
+    keep : what each point archive keeps, "answer" (default) or "full" (:func:`hsbearing.workflows.sweeps.execute`).
     warm_start : experimental (docs/sweeps.md "Warm starts"): the seed points (every other value of each axis,
         and the last) run cold, every other point starts from the final state of its nearest seed
         (:class:`hsbearing.workflows.warmstart.WarmNearest`); ``cold_sample`` of the warm points are also run cold (in
@@ -104,7 +105,7 @@ def run_map(case, x, y, *, out_dir, jobs: int | None = None, scheduler: str | No
         point_fn, warm_attrs = _warm_waves(base, vary, out_dir=out_dir, jobs=jobs, scheduler=scheduler,
                                            duration=duration, progress=progress, retry_failed=retry_failed)
     ds = run_sweep(base, vary, jobs=jobs, scheduler=scheduler, out_dir=out_dir, kind="run", duration=duration,
-                   progress=progress, point_fn=point_fn, retry_failed=retry_failed)
+                   progress=progress, point_fn=point_fn, retry_failed=retry_failed, keep=keep)
     if warm_start:
         warm_attrs.update(_cold_sample(base, vary, ds, point_fn, out_dir=out_dir, jobs=jobs, scheduler=scheduler,
                                        duration=duration, progress=progress, n=cold_sample))
@@ -242,7 +243,8 @@ def cli_main(args) -> int:
     ds = run_map(case, args.x, args.y, out_dir=out, jobs=args.jobs, scheduler=args.scheduler,
                  duration=args.duration, progress=not getattr(args, "quiet", False),
                  figure=not getattr(args, "no_figure", False), warm_start=bool(getattr(args, "warm_start", False)),
-                 cold_sample=int(getattr(args, "cold_sample", 4)), stop=None)  # --stop is already in the case
+                 cold_sample=int(getattr(args, "cold_sample", 4)), stop=None,
+                 keep=getattr(args, "keep", "answer"))  # --stop is already in the case
     for line in wall_time_lines(ds):
         print(line)
     for k in ("warm_start", "warm_start_agreement", "warm_start_differences"):

@@ -1,7 +1,9 @@
 """Run the synthetic classifier benchmark (hsbearing.analysis.benchmark) and print expected vs obtained labels.
 
-Usage: python tools/investigations/classifier_benchmark.py [--markdown] [--clock]
+Usage: python tools/investigations/classifier_benchmark.py [--markdown] [--clock] [--positions-only]
 --clock adds the labels under the cage-revolution (stroboscopic) section for comparison.
+--positions-only drops the velocities (a probe record; hsbearing.analysis.derivative estimates them) and adds the
+2 % probe noise level.
 """
 from __future__ import annotations
 
@@ -12,8 +14,9 @@ from hsbearing.analysis import benchmark as B
 from hsbearing.analysis.whirl import classify_motion
 
 
-def run(m, section):
-    lab, conf, det = classify_motion(m.t, m.y, m.z, m.vy, m.vz, m.phi, clearance=B.CLEARANCE, section=section)
+def run(m, section, positions_only=False):
+    vy, vz = (None, None) if positions_only else (m.vy, m.vz)
+    lab, conf, det = classify_motion(m.t, m.y, m.z, vy, vz, m.phi, clearance=B.CLEARANCE, section=section)
     return lab, conf, det
 
 
@@ -21,15 +24,16 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--markdown", action="store_true")
     ap.add_argument("--clock", action="store_true")
+    ap.add_argument("--positions-only", action="store_true")
     a = ap.parse_args()
     rows = []
     t0 = time.perf_counter()
     for length in ("short", "long"):
-        for noise in (0.0,) + B.NOISE_LEVELS:
+        for noise in (0.0,) + B.NOISE_LEVELS + ((B.PROBE_NOISE,) if a.positions_only else ()):
             for m in B.cases(length, noise):
-                lab, conf, det = run(m, "transverse")
+                lab, conf, det = run(m, "transverse", a.positions_only)
                 ok = m.accepts(lab) and (not m.kind or det.get("kind") == m.kind or lab != "undetermined" or m.kind == "irregular")
-                clock = run(m, "cage_revolution")[0] if a.clock else ""
+                clock = run(m, "cage_revolution", a.positions_only)[0] if a.clock else ""
                 rows.append((length, noise, m.name.split(", noise")[0], m.expected + (" / " + "/".join(m.also) if m.also else ""),
                              lab, det.get("kind", ""), det.get("n_points", 0), "ok" if ok else "MISS", clock))
     if a.markdown:

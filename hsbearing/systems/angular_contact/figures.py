@@ -186,7 +186,9 @@ def _plot_dynamic(ds, path: Path) -> Path:
     ax = axs[1, 1]
     if "cage_slip_ratio" in ds:
         s = np.asarray(ds["cage_slip_ratio"].values, float) * 100
-        ax.plot(t_ms, s, color="C3", lw=0.8, label="cage slip ratio")
+        ts = ds["cage_slip_ratio"].dims[0] if ds["cage_slip_ratio"].dims else "time"
+        t_s = t_ms if ts == "time" else (np.asarray(ds[ts].values, float) - t[0]) * 1e3  # a kept (decimated) history
+        ax.plot(t_s, s, color="C3", lw=0.8, label="cage slip ratio")
         if "mean_cage_slip_ratio" in ds and np.isfinite(float(ds["mean_cage_slip_ratio"])):
             ms = 100 * float(ds["mean_cage_slip_ratio"])
             ax.axhline(ms, color="k", ls=":", lw=0.9, label=f"mean after transient {ms:.2f} %")

@@ -24,7 +24,8 @@ __all__ = ["has_power", "power_figure_path", "plot_power"]
 
 def has_power(ds) -> bool:
     """True for a dynamic run archive carrying the power accounting (``power_loss`` and ``drive_torque`` over time)."""
-    return all(v in ds.variables for v in ("power_loss", "drive_torque", "drive_power")) and ds.sizes.get("time", 0) >= 2
+    return (all(v in ds.variables for v in ("power_loss", "drive_torque", "drive_power"))
+            and ds.sizes.get(ds["power_loss"].dims[0] if ds["power_loss"].dims else "time", 0) >= 2)
 
 
 def power_figure_path(run_png) -> Path:
@@ -55,7 +56,8 @@ def plot_power(ds, path, smooth_ms: float = 0.5) -> Path:
     from hsbearing.plotting import save_figure, title_lines
     from hsbearing.systems.angular_contact.balances import SOURCES
 
-    t = np.asarray(ds["time"].values, float)
+    # the histories' own time: "time", or "time_decimated" in an archive kept reduced (--keep answer)
+    t = np.asarray(ds[ds["power_loss"].dims[0]].values, float)
     t_ms = (t - t[0]) * 1e3
     w = smooth_ms * 1e-3
     fig = Figure(figsize=(12.5, 8.5), layout="constrained")

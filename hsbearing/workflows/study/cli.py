@@ -31,7 +31,7 @@ def cli_main(args, run_study: Callable | None = None) -> int:
                                     progress=True, bands=bands, band_samples_limit=limit,
                                     tables=getattr(args, "tables", None),
                                     report_only=bool(getattr(args, "report_only", False)),
-                                    stop=getattr(args, "stop", None))
+                                    stop=getattr(args, "stop", None), keep=getattr(args, "keep", "answer"))
     n_bad = sum(int(((ds["status"] != sweeps.STATUS_OK) & (ds["status"] != STATUS_MISSING)).sum())
                 for ds in res["tables"].values())
     print(f"study {args.name}{' (bands)' if bands else ''}: {res['n_unique_points']} distinct points, "

@@ -55,6 +55,7 @@ def run_study(
     band_samples_limit: int | None = None,
     report_only: bool = False,
     stop: str | None = "converged",
+    keep: str = "answer",
 ) -> dict[str, Any]:
     """Run a study; returns ``{"tables": {id: Dataset}, "report": Path, "wall_time": s, ...}``.
 
@@ -73,7 +74,8 @@ def run_study(
     "converged", :mod:`hsbearing.analysis.stoprule`) sets ``simulation.stop`` of every
     point (default converged, as ``hsbearing study``; "duration" or None: the
     study case's, i.e. the whole duration).  It is part of each point's case,
-    hence of its archive hash: stopped and full-length runs never alias.
+    hence of its archive hash: stopped and full-length runs never alias.  ``keep``: what each point archive
+    keeps, "answer" (default) or "full" (:func:`hsbearing.workflows.sweeps.execute`).
     """
     study = load_study(name)
     # only "converged" is written into the cases: the study case stops at its duration, and a default left out of
@@ -91,11 +93,12 @@ def run_study(
         raise CaseError(study.source_path, "table", f"no table selected (have: {', '.join(t['id'] for t in study.tables)})")
     if bands:
         return run_banded(study, chosen, out, dur, jobs=jobs, scheduler=scheduler, progress=progress,
-                           point_fn=point_fn, limit=band_samples_limit, report_only=report_only, stop_set=stop_set)
+                           point_fn=point_fn, limit=band_samples_limit, report_only=report_only, stop_set=stop_set,
+                           keep=keep)
     plans = [_table_plan(study, t, _table_case(study, t, {}, stop_set), dur, point_fn,
                          f"{study.source_path} [{t['id']}]") for t in chosen]
     with _computed(plans, out, jobs=jobs, scheduler=scheduler, progress=progress,
-                   report_only=report_only) as (records, wall, backend_label):
+                   report_only=report_only, keep=keep) as (records, wall, backend_label):
         datasets = {}
         for t, plan, recs in zip(chosen, plans, records):
             ds = _assemble(study, t, plan, recs, backend_label)
@@ -111,7 +114,8 @@ def run_study(
 
 
 def run_banded(study: Study, chosen: list[dict], out: Path, dur, *, jobs, scheduler, progress, point_fn,
-                limit: int | None = None, report_only: bool = False, stop_set: dict | None = None) -> dict[str, Any]:
+                limit: int | None = None, report_only: bool = False, stop_set: dict | None = None,
+               keep: str = "answer") -> dict[str, Any]:
     """cells x band samples in one pass (one progress bar over all points); see :func:`run_study`."""
     from hsbearing.models.geometry import GuideLandError, guide_lands
 
@@ -137,7 +141,7 @@ def run_banded(study: Study, chosen: list[dict], out: Path, dur, *, jobs, schedu
             plans[(t["id"], smp.index)] = plan
     keys = list(plans)
     with _computed([plans[k] for k in keys], out, jobs=jobs, scheduler=scheduler, progress=progress,
-                   report_only=report_only) as (records, wall, backend_label):
+                   report_only=report_only, keep=keep) as (records, wall, backend_label):
         recs = dict(zip(keys, records))
         datasets = {}
         for t in chosen:
@@ -178,21 +182,23 @@ def _backend_label(jobs, scheduler, report_only: bool) -> str:
 
 
 @contextlib.contextmanager
-def _computed(plans, out: Path, *, jobs, scheduler, progress, report_only: bool):
+def _computed(plans, out: Path, *, jobs, scheduler, progress, report_only: bool, keep: str = "answer"):
     """Lock ``out``, compute the points of ``plans`` into ``out/runs`` (or, report only, read back the archives
     there) and yield ``(records per plan, wall time [s], backend label)``; the lock is held until the block
     ends, so the tables and the report are written under it."""
     t0 = time.perf_counter()
     with backend_or_none(jobs, scheduler, report_only) as backend, sweeps.dir_lock(out):
-        records = execute_or_collect(plans, out / RUNS, progress=progress, backend=backend, report_only=report_only)
+        records = execute_or_collect(plans, out / RUNS, progress=progress, backend=backend, report_only=report_only,
+                                     keep=keep)
         yield records, time.perf_counter() - t0, _backend_label(jobs, scheduler, report_only)
 
 
-def execute_or_collect(plans, archive_dir: Path, *, progress, backend, report_only: bool) -> list[list[dict]]:
+def execute_or_collect(plans, archive_dir: Path, *, progress, backend, report_only: bool,
+                       keep: str = "answer") -> list[list[dict]]:
     """:func:`hsbearing.workflows.sweeps.execute`, or with ``report_only`` the records of the archives already on disk
     (status "missing" for the others; nothing is computed or written in ``archive_dir``)."""
     if not report_only:
-        return sweeps.execute(plans, archive_dir, progress=progress, backend=backend)
+        return sweeps.execute(plans, archive_dir, progress=progress, backend=backend, keep=keep)
     cache: dict[str, dict] = {}
     out = []
     for plan in plans:

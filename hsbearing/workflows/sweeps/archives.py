@@ -56,6 +56,7 @@ def read_record(path: Path, expected_hash: str | None = None) -> dict | None:
             if rec is None:  # an archive written by something else
                 rec = {"status": str(ds.attrs["status"]), "error": str(ds.attrs.get("error", "")),
                        "wall_time": float("nan"), "summary_error": "no summary stored"}
+            rec["kept"] = str(ds.attrs.get("keep", "full"))  # what the archive keeps (points.keep_answer)
             from hsbearing.analysis.orbit import classified_by_older_rules
 
             stale = ds.attrs.get("sweep_kind", "run") == "run" and "time" in ds.dims and classified_by_older_rules(ds)

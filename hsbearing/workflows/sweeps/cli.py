@@ -128,7 +128,8 @@ def cli_main(args) -> int:
             raise CaseError("--vary", None, f"point {where} is not a valid case: {bad[0].error}{more}")
     try:
         ds = run_sweep(case, vary, zip=args.zip, jobs=args.jobs, scheduler=args.scheduler, out_dir=out,
-                       kind=args.kind, duration=args.duration, progress=True)
+                       kind=args.kind, duration=args.duration, progress=True,
+                       keep=getattr(args, "keep", "answer"))
     except SolverError as exc:
         if exc.partial is None:
             raise

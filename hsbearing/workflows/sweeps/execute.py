@@ -36,12 +36,19 @@ def execute(
     progress: bool = True,
     retry_failed: bool = False,
     backend=None,
+    keep: str = "answer",
 ) -> list[list[dict]]:
     """Compute every point of ``plans`` (deduplicated by archive name) -> one record list per plan.
 
     A record: ``status``, ``error``, ``wall_time``, ``archive`` (file name or
     ''), ``resumed`` (bool) and ``summary`` (dict of scalars).
+
+    ``keep``: what each point archive of a dynamic run keeps, "answer" (default: summaries, label and reasons,
+    section points, the cage orbit, decimated histories, final state; :func:`points.keep_answer`) or "full".
     """
+    from hsbearing.workflows.sweeps.points import check_keep
+
+    check_keep(keep, "keep")
     archive_dir = Path(archive_dir)
     archive_dir.mkdir(parents=True, exist_ok=True)
     results: dict[str, dict] = {}  # archive name -> record
@@ -56,6 +63,8 @@ def execute(
                 continue
             path = archive_dir / pt.archive
             rec = read_record(path, pt.hash) if path.exists() else None
+            if rec is not None and keep == "full" and rec.get("kept") == "answer":
+                rec = None  # the whole trajectory was asked for: a reduced archive is computed again
             if rec is not None and not (retry_failed and rec.get("status") != STATUS_OK):
                 rec = dict(rec, archive=pt.archive, resumed=True)
                 results[pt.archive] = rec
@@ -87,7 +96,7 @@ def execute(
             dup = sum(1 for p in plans for q in p.points if q.archive == name)
             bar.update(dup)
 
-    tasks = [(name, (pt.case, plan.kind, plan.duration, plan.point_fn)) for name, (plan, pt) in todo.items()]
+    tasks = [(name, (pt.case, plan.kind, plan.duration, plan.point_fn, keep)) for name, (plan, pt) in todo.items()]
     owned = backend is None
     if owned:
         backend = make_backend(jobs, scheduler)
@@ -216,6 +225,7 @@ def run_sweep(
     progress: bool = True,
     point_fn: Callable | None = None,
     retry_failed: bool = False,
+    keep: str = "answer",
 ) -> xr.Dataset:
     """Run a sweep and return (and write to ``out_dir/sweep.nc``) its Dataset.
 
@@ -237,6 +247,7 @@ def run_sweep(
     point_fn : ``f(case, duration) -> xr.Dataset`` replacing the computation
         (module-level, picklable); part of the archive hash.
     retry_failed : recompute points whose archive records a status other than ok.
+    keep : "answer" (default) or "full": what a dynamic point's archive keeps (:func:`execute`).
     """
     out_dir = Path(out_dir)
     check_output_path(out_dir, source="output directory", directory=True)
@@ -245,7 +256,8 @@ def run_sweep(
     # bad -j / unreachable scheduler are reported before anything is written
     with make_backend(jobs, scheduler) as backend, dir_lock(out_dir):
         clean_temporaries(out_dir, ["sweep.nc"])  # an interrupted write of the summary (we hold the lock)
-        (records,) = execute([plan], out_dir, progress=progress, retry_failed=retry_failed, backend=backend)
+        (records,) = execute([plan], out_dir, progress=progress, retry_failed=retry_failed, backend=backend,
+                             keep=keep)
         ds = assemble(plan, records, attrs={"sweep_wall_time": time.perf_counter() - t0,
                                             "sweep_backend": f"dask {scheduler}" if scheduler else f"jobs={jobs or os.cpu_count()}"})
         write_netcdf(ds, out_dir / "sweep.nc")

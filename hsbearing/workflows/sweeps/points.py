@@ -144,8 +144,57 @@ def scalar_value(v: Any) -> Any:
     return str(v)
 
 
-def compute_point(case: Case, kind: str, duration, point_fn) -> tuple[dict, xr.Dataset | None]:
-    """Compute one point; never raises for a point's own failure.  Returns (record, dataset)."""
+#: What a point archive keeps: "answer" (default) or "full" (the whole trajectory).
+KEEP_CHOICES = ("answer", "full")
+#: Variables kept at the full output rate by keep="answer": the cage-centre orbit the classifier re-reads.
+ORBIT_VARIABLES = ("cage_center_y", "cage_center_z", "cage_velocity_y", "cage_velocity_z", "cage_angle", "cage_speed")
+#: Samples of every other time history kept by keep="answer" (decimated, on dim ``time_decimated``).
+DECIMATED_SAMPLES = 400
+
+
+def check_keep(keep: str, source: str = "--keep") -> str:
+    if keep not in KEEP_CHOICES:
+        raise CaseError(source, "keep", f"must be one of {', '.join(KEEP_CHOICES)}, got {keep!r}")
+    return keep
+
+
+def keep_answer(ds: xr.Dataset) -> xr.Dataset:
+    """What a map or sweep point's answer and figures need, out of a whole dynamic run.
+
+    Kept: every variable without a ``time`` dim (the summaries, the Poincare section points, ``final_state``
+    for ``hsbearing run --continue``), all attributes (label, its reasons, the case), the cage-centre orbit
+    (:data:`ORBIT_VARIABLES`) at the full output rate -- so that the classifier re-reads a kept archive
+    exactly as the whole run -- and every other time history (slip ratio, ball and contact variables)
+    decimated to about :data:`DECIMATED_SAMPLES` samples on the dim ``time_decimated``.  A Dataset
+    without ``time`` (quasi-static, thermal) is returned unchanged.
+    """
+    if "time" not in ds.dims:
+        return ds
+    n = ds.sizes["time"]
+    step = max(1, -(-n // DECIMATED_SAMPLES))
+    timed = [k for k, v in ds.data_vars.items() if "time" in v.dims]
+    other = [k for k in timed if k not in ORBIT_VARIABLES]
+    out = ds.drop_vars(other)
+    if other and step > 1:
+        dec = ds[other].isel(time=slice(None, None, step)).rename({"time": "time_decimated"})
+        dec = dec.drop_vars([c for c in dec.coords if c != "time_decimated" and "time_decimated" not in dec[c].dims])
+        out = out.assign(dec.data_vars).assign_coords(time_decimated=dec["time_decimated"])
+        out["time_decimated"].attrs.update(units="s", long_name=f"time of the decimated histories (every {step}th output)")
+    elif other:
+        out = out.assign(ds[other].data_vars)
+    out.attrs["keep"] = "answer"
+    out.attrs["keep_definition"] = (
+        f"cage-centre orbit ({', '.join(v for v in ORBIT_VARIABLES if v in ds)}) at every one of the {n} outputs; "
+        f"the other {len(other)} time histories every {step}th output (dim time_decimated); summaries, section points, "
+        "final_state and attrs whole (--keep full for the whole trajectory)")
+    return out
+
+
+def compute_point(case: Case, kind: str, duration, point_fn, keep: str = "full") -> tuple[dict, xr.Dataset | None]:
+    """Compute one point; never raises for a point's own failure.  Returns (record, dataset).
+
+    ``keep="answer"``: the dataset is reduced by :func:`keep_answer` after its summary is computed (in the
+    worker, so only what is kept travels to the client)."""
     t0 = time.perf_counter()
     ds = None
     rec: dict[str, Any] = {"status": STATUS_OK, "error": "", "summary": {}}
@@ -193,6 +242,11 @@ def compute_point(case: Case, kind: str, duration, point_fn) -> tuple[dict, xr.D
         except Exception as exc:  # summary of a partial/odd dataset: keep the archive, say why
             rec["summary_error"] = f"summary failed: {type(exc).__name__}: {exc}"
             rec["error"] = "; ".join(e for e in (rec["error"], rec["summary_error"]) if e)
+    if keep == "answer" and ds is not None and kind == "run":
+        try:
+            ds = keep_answer(ds)
+        except Exception as exc:  # noqa: BLE001 - keep the whole run rather than lose it
+            rec["keep_error"] = f"kept whole: {type(exc).__name__}: {exc}"
     rec["wall_time"] = time.perf_counter() - t0
     return rec, ds
 
