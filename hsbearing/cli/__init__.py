@@ -41,8 +41,9 @@ def main(argv: list[str] | None = None) -> int:
     except SolverError as exc:
         print(f"hsbearing: numerical failure: {exc}", file=sys.stderr)
         return 1
-    except KeyboardInterrupt:
-        print("hsbearing: interrupted", file=sys.stderr)
+    except KeyboardInterrupt as exc:
+        what = str(exc) if type(exc) is not KeyboardInterrupt and str(exc) not in ("", "interrupted") else ""
+        print(f"hsbearing: interrupted{': ' + what if what else ''}", file=sys.stderr)
         return 130
     except (ArithmeticError, _linalg_error()) as exc:  # a singular matrix / overflow deep in a model: one line, exit 1
         print(f"hsbearing: numerical failure: {type(exc).__name__}: {str(exc).splitlines()[0] if str(exc) else ''} "

@@ -49,7 +49,7 @@ class LocalPoolBackend:
         self.ex: ProcessPoolExecutor | None = None
 
     def _new(self, n):
-        return ProcessPoolExecutor(max_workers=n, mp_context=self.ctx, initializer=worker_init)
+        return ProcessPoolExecutor(max_workers=n, mp_context=self.ctx, initializer=worker_init, initargs=(os.getpid(),))
 
     def __enter__(self):
         return self
@@ -217,15 +217,29 @@ def _is_main_guard(test) -> bool:
     return len(names) == 1 and len(consts) == 1
 
 
-def _terminate(ex: ProcessPoolExecutor) -> None:
-    fn = getattr(ex, "terminate_workers", None)  # Python >= 3.14
-    if fn is not None:
-        with contextlib.suppress(Exception):
-            fn()
+#: Seconds a terminated worker gets to go before it is killed (SIGKILL); the sweep waits for every worker.
+_REAP_GRACE = 3.0
+
+
+def _terminate(ex: ProcessPoolExecutor | None) -> None:
+    """Stop every worker of ``ex`` and wait until each is gone: SIGTERM, up to :data:`_REAP_GRACE` s, then
+    SIGKILL.  A sweep, a map or a study that ends (error, Ctrl-C, a write that fails) leaves no process behind,
+    also when the executor is not joined afterwards (shutdown(wait=False)) or a worker is slow to stop."""
+    if ex is None:
         return
-    for p in list((getattr(ex, "_processes", None) or {}).values()):
+    procs = list((getattr(ex, "_processes", None) or {}).values())
+    for p in procs:
         with contextlib.suppress(Exception):
             p.terminate()
+    deadline = time.monotonic() + _REAP_GRACE
+    for p in procs:
+        with contextlib.suppress(Exception):
+            p.join(max(0.0, deadline - time.monotonic()))
+    for p in procs:
+        with contextlib.suppress(Exception):
+            if p.is_alive():
+                p.kill()
+                p.join(5.0)
 
 
 _SCHEDULER_ADDRESS = re.compile(
