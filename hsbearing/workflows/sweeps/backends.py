@@ -17,6 +17,7 @@ from pathlib import Path
 from hsbearing.case import (
     CaseError,
 )
+from hsbearing.errors import ClusterLost
 from hsbearing.workflows.sweeps.points import compute_point, worker_init
 
 # ----------------------------------------------------------------------------- execution backends
@@ -309,9 +310,25 @@ class DaskBackend:
 
     def __exit__(self, exc_type, *exc):
         if self.client is not None:
-            self.client.close()
+            with contextlib.suppress(Exception):  # a lost scheduler must not hold the exit (nor hide the error)
+                self.client.close(timeout=10)
             self.client = None
         return False
+
+    def _check_scheduler(self, force: bool = False) -> None:
+        """ClusterLost when the client has lost its scheduler (its futures are gone with it); ``force``: a
+        future was cancelled by no one here, so the scheduler is taken as lost unless it answers at once."""
+        status = str(getattr(self.client, "status", "running"))
+        if status == "running" and force:
+            try:
+                self.client.scheduler_info()  # cached; a dead comm shows in the status right after
+                status = str(self.client.status)
+                if status == "running":
+                    return
+            except Exception:  # noqa: BLE001 - any failure to reach it is the same news
+                status = "unreachable"
+        if status != "running":
+            raise ClusterLost(f"lost the dask scheduler at {self.address} (client {status})")
 
     def run(self, tasks, on_done):
         tasks = list(tasks)
@@ -338,7 +355,7 @@ class DaskBackend:
         try:
             with self.client.as_current():
                 finished = as_completed(list(futs))
-            for f in _poll_iter(finished):
+            for f in _poll_iter(finished, self._check_scheduler):
                 key, args = futs[f]
                 try:
                     rec, ds = f.result()
@@ -346,6 +363,9 @@ class DaskBackend:
                     if type(exc).__name__ == "KilledWorker":
                         killed.append((key, args, exc))
                         continue
+                    if f.cancelled() or "Cancelled" in type(exc).__name__:
+                        # not the point's doing: the scheduler forgot it (lost, restarted) -- never a record
+                        self._check_scheduler(force=True)
                     rec, ds = {"status": "error", "error": f"{type(exc).__name__}: {exc}", "summary": {},
                                "wall_time": float("nan")}, None
                 on_done(key, rec, ds)
@@ -357,8 +377,9 @@ class DaskBackend:
         return killed
 
 
-def _poll_iter(ac):
-    """Iterate a distributed.as_completed, checking for a deferred Ctrl-C between results."""
+def _poll_iter(ac, check=None):
+    """Iterate a distributed.as_completed, checking for a deferred Ctrl-C (and ``check()``: the scheduler is
+    still there) between results."""
     while True:
         batch = ac.next_batch(block=False) if hasattr(ac, "next_batch") else None
         if batch:
@@ -367,6 +388,8 @@ def _poll_iter(ac):
         if ac.is_empty():
             return
         _check_interrupt()
+        if check is not None:
+            check()
         time.sleep(_POLL / 4)
 
 
