@@ -310,8 +310,19 @@ class DaskBackend:
 
     def __exit__(self, exc_type, *exc):
         if self.client is not None:
-            with contextlib.suppress(Exception):  # a lost scheduler must not hold the exit (nor hide the error)
-                self.client.close(timeout=10)
+            lost = str(getattr(self.client, "status", "running")) != "running"
+            # a lost scheduler must not hold the exit, nor bury the one line that says so under the tracebacks
+            # distributed logs while its reconnection attempt is cancelled
+            if lost:
+                import logging
+
+                logging.disable(logging.CRITICAL)
+            try:
+                with contextlib.suppress(Exception):
+                    self.client.close(timeout=10)
+            finally:
+                if lost:
+                    logging.disable(logging.NOTSET)
             self.client = None
         return False
 
