@@ -28,6 +28,10 @@ def is_command() -> bool:
 
 
 def _exit_130(signum, frame):  # pragma: no cover - ends the process
+    try:
+        os.write(2, b"hsbearing: interrupted (nothing computed yet, nothing written)\n")
+    except OSError:
+        pass
     os._exit(130)
 
 
