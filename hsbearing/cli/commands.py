@@ -123,9 +123,9 @@ def cmd_run(args) -> int:
     duration = _duration_arg(args.duration)
     if duration is not None:
         check_output_samples(case, duration, source="--duration", key="duration")
-    check_archive_name(args.output)  # one suffix rule for every command's -o archive
     out = Path(args.output) if args.output is not None else default_output(case, ".nc", f"duration={duration}")
     check_output_path(out, source="-o" if args.output is not None else "output", derived=_run_figures(out, args))
+    check_archive_name(args.output)  # one suffix rule for every command's -o archive
     try:
         ds = simulate(case, duration=duration, progress=not args.quiet)
     except Interrupted as exc:
@@ -203,10 +203,10 @@ def _cmd_continue(args) -> int:
         raise CaseError("--continue", None, "takes no CASE and no --set: the run goes on with the case stored in the archive")
     if not src.is_file():
         raise CaseError(str(src), None, "no such archive" if not src.exists() else "not a file")
-    check_archive_name(args.output)
     prev = open_run(src)  # CaseError naming the file for anything that is not an hsbearing archive
     out = Path(args.output) if args.output is not None else src
     check_output_path(out, source="-o" if args.output is not None else "--continue", derived=_run_figures(out, args))
+    check_archive_name(args.output)
     try:
         ds = dynamics.continue_run(prev, _duration_arg(args.duration), progress=not args.quiet, source=str(src))
     except Interrupted as exc:
@@ -220,10 +220,10 @@ def cmd_quasistatic(args) -> int:
     from hsbearing import quasi_static
     from hsbearing.results import check_archive_name, check_output_path, write_netcdf
 
-    check_archive_name(args.output)  # one suffix rule for every command's -o archive
     case = case_from_args(args)
     if args.output is not None:
         check_output_path(args.output)
+    check_archive_name(args.output)  # one suffix rule for every command's -o archive
     try:
         ds = quasi_static(case)
     except SolverError as exc:
