@@ -12,7 +12,11 @@ Public API (the contracts of docs/design.md):
 
 from __future__ import annotations
 
-from hsbearing import _moved
+from hsbearing import _interrupt
+
+_interrupt.guard_command_start()  # the hsbearing command: a Ctrl-C while it imports ends it with 130, nothing written
+
+from hsbearing import _moved  # noqa: E402
 from hsbearing._version import __version__
 from hsbearing.case import Case, CaseError, as_case, list_cases, load_case
 from hsbearing.errors import SolverError

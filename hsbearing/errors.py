@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-__all__ = ["CaseError", "SolverError", "Interrupted", "OutputWriteError"]
+__all__ = ["CaseError", "SolverError", "Interrupted", "OutputWriteError", "ClusterLost"]
 
 
 class CaseError(ValueError):
@@ -60,3 +60,8 @@ class OutputWriteError(OSError):
             note = (f"the result was saved to {self.saved_to} instead" if self.saved_to else
                     "no fallback place could take the result either (nothing written)")
         super().__init__(f"cannot write {self.path}: {reason}; {note}")
+
+
+class ClusterLost(RuntimeError):
+    """The dask scheduler of a sweep went away (killed, its machine lost): the points computed so far are kept
+    and the same command resumes from them.  The CLI prints one line and exits 1."""

@@ -480,6 +480,31 @@ def deferred_sigint():
 
 
 def open_run(path: str | os.PathLike) -> xr.Dataset:
-    """Open an archive written by hsbearing, loaded into memory (the file is closed)."""
-    with xr.open_dataset(path, engine="netcdf4") as ds:
-        return ds.load()
+    """Open an archive written by hsbearing, loaded into memory (the file is closed).
+
+    Raises :class:`hsbearing.case.CaseError` naming the file for anything that is not an hsbearing archive:
+    a missing or unreadable file, a file that is not netCDF, and a netCDF file that some other program wrote
+    (every hsbearing archive carries the attributes of :func:`standard_attrs`: ``hsbearing_version`` and a
+    ``title`` beginning with "hsbearing") or that holds no variable (an empty file is never a result).
+    """
+    from hsbearing.case import CaseError
+
+    name = str(path)
+    if not Path(path).is_file():
+        raise CaseError(name, None, "no such archive" if not Path(path).exists() else "not a file")
+    try:
+        with xr.open_dataset(path, engine="netcdf4") as ds:
+            ds = ds.load()
+    except Exception as exc:  # noqa: BLE001 - any netCDF/HDF failure means: not an archive we can read
+        raise CaseError(name, None, f"not a readable netCDF archive ({type(exc).__name__})") from None
+    if not is_hsbearing_archive(ds):
+        raise CaseError(name, None, "not an hsbearing archive: a netCDF file without the attributes every hsbearing "
+                                    "archive carries (hsbearing_version, title 'hsbearing ...')")
+    if not ds.data_vars:
+        raise CaseError(name, None, "an hsbearing archive with no variables: nothing to read")
+    return ds
+
+
+def is_hsbearing_archive(ds: xr.Dataset) -> bool:
+    """True if ``ds`` carries the global attributes :func:`standard_attrs` gives every hsbearing archive."""
+    return "hsbearing_version" in ds.attrs and str(ds.attrs.get("title", "")).startswith("hsbearing")

@@ -128,7 +128,9 @@ def parse_quantity(value: Any, kind: str, *, source: str = "<value>", key: str |
     try:
         q = ureg.Quantity(value.strip())
     except Exception as exc:  # pint raises several kinds
-        raise CaseError(source, key, f"cannot parse quantity {value!r} ({type(exc).__name__})") from None
+        hint = suggest_spelling(value, kind)
+        hint = f"; did you mean {hint!r}?" if hint else ""
+        raise CaseError(source, key, f"cannot parse quantity {value!r} ({type(exc).__name__}){hint}") from None
     if not isinstance(q, ureg.Quantity):  # plain number in a string
         q = ureg.Quantity(float(q), "")
     try:
@@ -158,6 +160,41 @@ def parse_quantity(value: Any, kind: str, *, source: str = "<value>", key: str |
         raise CaseError(source, key, f"{value!r} is an absurd magnitude for a {kind.replace('_', ' ')} "
                                      f"(more than {limit:g} {DIMENSIONS[kind]})")
     return out
+
+
+#: Unit spellings of the trade that pint does not read, and what they mean (case-insensitive whole words).
+_SPELLINGS = {
+    "cst": "mm^2/s",  # centistokes: 1 cSt = 1 mm^2/s
+    "kgf": "kgf", "kp": "kgf", "kgp": "kgf",  # kilogram-force (kilopond)
+    "lbf": "lbf", "lbs": "lb", "gf": "gf",
+    "cc": "cm^3", "ccm": "cm^3",
+    "rpm": "rpm", "u/min": "rpm", "1/min": "rpm", "upm": "rpm",
+}
+_WORD = re.compile(r"[A-Za-z_]+(?:/[A-Za-z_]+)?")
+_TRAILING_POWER = re.compile(r"\b([A-Za-z]+)([23])\b")
+
+
+def suggest_spelling(value: str, kind: str) -> str | None:
+    """A spelling pint reads for a common way of writing a unit, if one parses as ``kind``: ``"0.86 g/cm3"`` ->
+    ``"0.86 g/cm^3"``, ``"20 mm2/s"`` -> ``"20 mm^2/s"``, ``"10 KGF"`` / ``"10 kp"`` -> ``"10 kgf"``,
+    ``"20 cst"`` -> ``"20 mm^2/s"``; None when no such rewriting gives a quantity of that kind."""
+    number, unit = split_number(str(value))
+    if not number or not unit:
+        return None
+    candidates = [_TRAILING_POWER.sub(r"\1^\2", unit)]  # cm3 -> cm^3, mm2 -> mm^2
+    spelled = _WORD.sub(lambda m: _SPELLINGS.get(m.group(0).lower(), m.group(0)), unit)
+    candidates += [spelled, _TRAILING_POWER.sub(r"\1^\2", spelled)]
+    candidates += [_WORD.sub(lambda m: _SPELLINGS.get(m.group(0).lower(), m.group(0)), unit.lower())]
+    for cand in candidates:
+        if cand == unit:
+            continue
+        text = f"{number} {cand}"
+        try:
+            parse_quantity(text, kind)
+        except Exception:  # noqa: BLE001 - not this one
+            continue
+        return text
+    return None
 
 
 def split_number(text: str) -> tuple[str, str]:

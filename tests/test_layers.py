@@ -36,7 +36,8 @@ LAYER_RULES = {
 
 #: the layers, lowest first; a module belongs to the first prefix it matches (``hsbearing`` alone: the package API)
 LAYERS = (
-    ("foundations", ("hsbearing._version", "hsbearing._moved", "hsbearing.errors", "hsbearing.jit", "hsbearing.compile_cache")),
+    ("foundations", ("hsbearing._version", "hsbearing._moved", "hsbearing._interrupt", "hsbearing.errors", "hsbearing.jit",
+                     "hsbearing.compile_cache")),
     ("physics", ("hsbearing.models", "hsbearing.solvers")),
     ("inputs and outputs", ("hsbearing.units", "hsbearing.lubricant", "hsbearing.case", "hsbearing.results",
                             "hsbearing.display")),

@@ -32,6 +32,9 @@ from hsbearing.results import open_run, write_netcdf
 
 ROOT = Path(__file__).resolve().parents[1]
 
+#: the attributes every hsbearing archive carries (results.standard_attrs): open_run reads only such files
+OURS = {"title": "hsbearing result", "hsbearing_version": "test"}
+
 
 def _files(d: Path) -> set[str]:
     return {str(p.relative_to(d)) for p in d.rglob("*")}
@@ -233,7 +236,7 @@ def test_read_only_directory_after_compute_keeps_result(tmp_path, monkeypatch):
         import tempfile
 
         monkeypatch.setattr(tempfile, "tempdir", None)  # re-read TMPDIR
-        ds = xr.Dataset({"a": ("t", np.arange(5.0))}, attrs={"status": "ok"})
+        ds = xr.Dataset({"a": ("t", np.arange(5.0))}, attrs={"status": "ok", **OURS})
         with pytest.raises(OutputWriteError) as ei:
             write_netcdf(ds, d / "x.nc")
         assert "Read-only file system" in str(ei.value)
@@ -255,7 +258,7 @@ def test_second_ctrl_c_during_the_save_keeps_the_partial_run(tmp_path, monkeypat
 
     t = np.linspace(0.0, 1e-3, 11)
     partial = xr.Dataset({"cage_speed": ("time", np.full(11, 600.0))}, coords={"time": t},
-                         attrs={"status": "failed at t = 0.001 s: interrupted"})
+                         attrs={"status": "failed at t = 0.001 s: interrupted", **OURS})
 
     def interrupted(*a, **k):
         raise Interrupted(partial=partial)

@@ -16,12 +16,40 @@ from hsbearing.case import CaseError
 from hsbearing.cli.commands import cmd_thermal
 from hsbearing.cli.common import case_from_args
 from hsbearing.cli.parser import build_parser
-from hsbearing.errors import OutputWriteError, SolverError
+from hsbearing.errors import ClusterLost, OutputWriteError, SolverError
 
 __all__ = ["main", "build_parser", "case_from_args", "cmd_thermal"]
 
 
 def main(argv: list[str] | None = None) -> int:
+    """The hsbearing command: its exit status (0, 1, 2, 130 on Ctrl-C at any moment)."""
+    from hsbearing import _interrupt
+
+    program = argv is None and _interrupt.is_command()
+    if program:
+        _interrupt.take_over()
+    try:
+        try:
+            return _main(argv)
+        finally:
+            if program:  # the status is decided: a Ctrl-C from here to the interpreter's exit changes nothing
+                _interrupt.ignore_after_exit()
+    except KeyboardInterrupt as exc:  # one that arrived outside the command's own handler (e.g. in a message)
+        if program:
+            _interrupt.ignore_after_exit()
+        return _interrupted(exc)
+
+
+def _interrupted(exc: KeyboardInterrupt) -> int:
+    what = str(exc) if type(exc) is not KeyboardInterrupt and str(exc) not in ("", "interrupted") else ""
+    try:
+        print(f"hsbearing: interrupted{': ' + what if what else ''}", file=sys.stderr)
+    except (KeyboardInterrupt, OSError, ValueError):
+        pass
+    return 130
+
+
+def _main(argv: list[str] | None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
     if not getattr(args, "func", None):  # bare `hsbearing`: say what is missing, on one line
@@ -35,15 +63,17 @@ def main(argv: list[str] | None = None) -> int:
     except CaseError as exc:
         print(f"hsbearing: error: {exc}", file=sys.stderr)
         return 2
+    except ClusterLost as exc:  # the dask scheduler went away: what is kept and how to go on, exit 1
+        print(f"hsbearing: error: {exc}", file=sys.stderr)
+        return 1
     except OutputWriteError as exc:  # computed, but the final write failed: where the result went, exit 1
         print(f"hsbearing: error: {exc}", file=sys.stderr)
         return 1
     except SolverError as exc:
         print(f"hsbearing: numerical failure: {exc}", file=sys.stderr)
         return 1
-    except KeyboardInterrupt:
-        print("hsbearing: interrupted", file=sys.stderr)
-        return 130
+    except KeyboardInterrupt as exc:
+        return _interrupted(exc)
     except (ArithmeticError, _linalg_error()) as exc:  # a singular matrix / overflow deep in a model: one line, exit 1
         print(f"hsbearing: numerical failure: {type(exc).__name__}: {str(exc).splitlines()[0] if str(exc) else ''} "
               "(the inputs are valid but the model cannot solve them; check the geometry and loads)", file=sys.stderr)

@@ -116,7 +116,7 @@ def cmd_run(args) -> int:
     from hsbearing import simulate
     from hsbearing.case import check_output_samples
     from hsbearing.errors import Interrupted
-    from hsbearing.results import check_output_path
+    from hsbearing.results import check_archive_name, check_output_path
 
     if getattr(args, "continue_from", None):
         return _cmd_continue(args)
@@ -141,6 +141,7 @@ def cmd_run(args) -> int:
     budget = _extend_budget(args, case, duration)
     out = Path(args.output) if args.output is not None else default_output(case, ".nc", f"duration={duration}")
     check_output_path(out, source="-o" if args.output is not None else "output", derived=_run_figures(out, args))
+    check_archive_name(args.output)  # one suffix rule for every command's -o archive
     try:
         ds = simulate(case, duration=duration, progress=not args.quiet)
         if budget is not None:
@@ -237,7 +238,7 @@ def _power_figure(ds, run_png: Path) -> None:
 def _cmd_continue(args) -> int:
     """``hsbearing run --continue ARCHIVE.nc [--duration T] [-o OUT.nc]``: extend a run from its last state."""
     from hsbearing.errors import Interrupted
-    from hsbearing.results import check_output_path, open_run
+    from hsbearing.results import check_archive_name, check_output_path, open_run
     from hsbearing.systems.angular_contact import dynamics
 
     src = Path(args.continue_from)
@@ -247,12 +248,10 @@ def _cmd_continue(args) -> int:
         raise CaseError("--continue", None, "takes no --extend / --max-duration: give --duration to extend by")
     if not src.is_file():
         raise CaseError(str(src), None, "no such archive" if not src.exists() else "not a file")
-    try:
-        prev = open_run(src)
-    except Exception as exc:  # noqa: BLE001 - any netCDF/HDF failure is bad input here
-        raise CaseError(str(src), None, f"not a readable netCDF archive ({type(exc).__name__})") from None
+    prev = open_run(src)  # CaseError naming the file for anything that is not an hsbearing archive
     out = Path(args.output) if args.output is not None else src
     check_output_path(out, source="-o" if args.output is not None else "--continue", derived=_run_figures(out, args))
+    check_archive_name(args.output)
     try:
         ds = dynamics.continue_run(prev, _duration_arg(args.duration), progress=not args.quiet, source=str(src))
     except Interrupted as exc:
@@ -264,11 +263,12 @@ def _cmd_continue(args) -> int:
 
 def cmd_quasistatic(args) -> int:
     from hsbearing import quasi_static
-    from hsbearing.results import check_output_path, write_netcdf
+    from hsbearing.results import check_archive_name, check_output_path, write_netcdf
 
     case = case_from_args(args)
     if args.output is not None:
         check_output_path(args.output)
+    check_archive_name(args.output)  # one suffix rule for every command's -o archive
     try:
         ds = quasi_static(case)
     except SolverError as exc:
@@ -433,8 +433,10 @@ def cmd_plot(args) -> int:
         _check_figure_format(args.output)
     try:
         ds = open_run(path)
-    except Exception as exc:
-        raise CaseError(str(path), None, f"not a readable netCDF archive ({type(exc).__name__})") from None
+    except CaseError as exc:  # not ours: the plot command's own words (the file is named either way)
+        if exc.message.startswith(("not an hsbearing archive", "an hsbearing archive with no variables")):
+            raise CaseError(str(path), None, systems.NOT_OURS) from None
+        raise
     try:  # a sweep/study summary (one dimension per varied key) gets the sweep figure (plotting.plot_sweep)
         png = systems.plot_run(ds, Path(args.output) if args.output else path.with_suffix(".png"))
     except CaseError as exc:  # e.g. a summary with too many lines for one figure: name the archive

@@ -102,5 +102,16 @@ def archive_kind(ds) -> str:
         if kind is not None:
             return kind
     source = str(ds.encoding.get("source", "dataset"))
-    raise CaseError(source, None, "not an hsbearing result this command can draw (no run, quasi-static, friction, "
-                                  "preload, gyro or sweep variables)")
+    from hsbearing.results import is_hsbearing_archive
+
+    if is_hsbearing_archive(ds) and ds.data_vars:  # ours (life, thermal, map ...), only without a figure
+        what = str(ds.attrs.get("title", "hsbearing result"))
+        raise CaseError(source, None, f"an hsbearing archive ({what}) that has no figure: `hsbearing plot` draws "
+                                      "run, quasi-static, friction, preload, gyro and sweep archives; read this one "
+                                      "with hsbearing.open_run(PATH) (an xarray Dataset) or print it with ncdump -h")
+    raise CaseError(source, None, NOT_OURS)
+
+
+#: The CLI's message for a file that holds no hsbearing result it can draw (kept as it was).
+NOT_OURS = ("not an hsbearing result this command can draw (no run, quasi-static, friction, preload, gyro or "
+            "sweep variables)")

@@ -412,7 +412,8 @@ def test_ctrl_c_keeps_partial_run_and_continue_extends_it(tmp_path, capsys):
 
 
 def test_continue_refuses_what_it_cannot_continue(work, capsys):
-    xr.Dataset({"x": ("t", np.arange(3.0))}, attrs={"case_toml": BASE}).to_netcdf(work / "q.nc")
+    xr.Dataset({"x": ("t", np.arange(3.0))}, attrs={"case_toml": BASE, "title": "hsbearing result",
+                                                  "hsbearing_version": "test"}).to_netcdf(work / "q.nc")  # ours, not a run
     rc = cli.main(["run", "--continue", "q.nc", "--duration", "1ms"])
     _one_error_line(capsys, rc, r"q.nc: final_state: not a dynamic run")
     rc = cli.main(["run", "--continue", "missing.nc"])

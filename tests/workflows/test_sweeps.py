@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -496,6 +497,9 @@ def test_ctrl_c_on_the_cli(tmp_path):
             proc.wait()
     done = sorted(out.glob("zhang2016-*.nc"))
     assert proc.returncode == 130 and "interrupted" in err, (proc.returncode, err[-500:])
+    # the newcomer's questions answered on that line: how many points were kept, and how to go on
+    m = re.search(r"hsbearing: interrupted: (\d+) of 30 points kept in .*; the same command resumes from them", err)
+    assert m and int(m.group(1)) == len(list(out.glob("zhang2016-*.nc"))), err[-500:]
     assert len(done) < 30 and not (out / "sweep.nc").exists()
     assert all(sweeps.archive_is_complete(p) for p in done)
     assert not [p for p in out.iterdir() if p.name.endswith(".tmp")]

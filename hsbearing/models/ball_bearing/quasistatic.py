@@ -63,6 +63,7 @@ __all__ = [
     "contact_geometry",
     "hertz_load",
     "centrifugal_force",
+    "unloaded_force_scale",
     "gyroscopic_moment",
     "gyroscopic_friction",
     "race_control_kinematics",
@@ -223,6 +224,28 @@ def centrifugal_force(m, R_b, omega_m):
     omega_m : ball orbital speed [rad/s].
     """
     return m * R_b * np.square(omega_m)  # [1], Eq. 3.1
+
+
+#: Standard gravity [m/s^2] (the ball weight of :func:`unloaded_force_scale`).
+STANDARD_GRAVITY = 9.80665
+
+
+def unloaded_force_scale(Z, m, D, dm, alpha0, omega_i, omega_o, centrifugal=True):
+    """Force scale [N] of a bearing carrying no applied load: Z (m g + F_c), the weight of the balls plus
+    their centrifugal force at the pure-rolling cage speed.
+
+    The quasi-static equations neglect the ball weight, so a ring residual far below Z m g says nothing
+    about the bearing; and the round-off of the ball force balances, which carry F_c at the outer contact
+    whatever the applied load, sets the smallest ring residual the solver can reach.  It is therefore the
+    absolute floor of the residual tolerance (a load below ``tol`` times it is answered by the unloaded
+    limit).  F_c = m (d_m/2) omega_m^2 ([1] Eq. 3.1) with the cage (orbital) speed of pure rolling
+    omega_m = [omega_i (1 - gamma) + omega_o (1 + gamma)]/2, gamma = D cos(alpha_0)/d_m ([3] Eq. 8.21 with
+    beta = 0 and the free contact angle).
+    """
+    gamma = D * np.cos(alpha0) / dm
+    omega_m = 0.5 * (omega_i * (1.0 - gamma) + omega_o * (1.0 + gamma))  # [3], Eq. 8.21
+    Fc = centrifugal_force(m, 0.5 * dm, omega_m) if centrifugal else 0.0  # [1], Eq. 3.1
+    return float(Z * (m * STANDARD_GRAVITY + Fc))
 
 
 def gyroscopic_moment(J, omega_m, omega_y):

@@ -17,6 +17,7 @@ from pathlib import Path
 from hsbearing.case import (
     CaseError,
 )
+from hsbearing.errors import ClusterLost
 from hsbearing.workflows.sweeps.points import compute_point, worker_init
 
 # ----------------------------------------------------------------------------- execution backends
@@ -49,7 +50,7 @@ class LocalPoolBackend:
         self.ex: ProcessPoolExecutor | None = None
 
     def _new(self, n):
-        return ProcessPoolExecutor(max_workers=n, mp_context=self.ctx, initializer=worker_init)
+        return ProcessPoolExecutor(max_workers=n, mp_context=self.ctx, initializer=worker_init, initargs=(os.getpid(),))
 
     def __enter__(self):
         return self
@@ -217,15 +218,29 @@ def _is_main_guard(test) -> bool:
     return len(names) == 1 and len(consts) == 1
 
 
-def _terminate(ex: ProcessPoolExecutor) -> None:
-    fn = getattr(ex, "terminate_workers", None)  # Python >= 3.14
-    if fn is not None:
-        with contextlib.suppress(Exception):
-            fn()
+#: Seconds a terminated worker gets to go before it is killed (SIGKILL); the sweep waits for every worker.
+_REAP_GRACE = 3.0
+
+
+def _terminate(ex: ProcessPoolExecutor | None) -> None:
+    """Stop every worker of ``ex`` and wait until each is gone: SIGTERM, up to :data:`_REAP_GRACE` s, then
+    SIGKILL.  A sweep, a map or a study that ends (error, Ctrl-C, a write that fails) leaves no process behind,
+    also when the executor is not joined afterwards (shutdown(wait=False)) or a worker is slow to stop."""
+    if ex is None:
         return
-    for p in list((getattr(ex, "_processes", None) or {}).values()):
+    procs = list((getattr(ex, "_processes", None) or {}).values())
+    for p in procs:
         with contextlib.suppress(Exception):
             p.terminate()
+    deadline = time.monotonic() + _REAP_GRACE
+    for p in procs:
+        with contextlib.suppress(Exception):
+            p.join(max(0.0, deadline - time.monotonic()))
+    for p in procs:
+        with contextlib.suppress(Exception):
+            if p.is_alive():
+                p.kill()
+                p.join(5.0)
 
 
 _SCHEDULER_ADDRESS = re.compile(
@@ -295,9 +310,36 @@ class DaskBackend:
 
     def __exit__(self, exc_type, *exc):
         if self.client is not None:
-            self.client.close()
+            lost = str(getattr(self.client, "status", "running")) != "running"
+            # a lost scheduler must not hold the exit, nor bury the one line that says so under the tracebacks
+            # distributed logs while its reconnection attempt is cancelled
+            if lost:
+                import logging
+
+                logging.disable(logging.CRITICAL)
+            try:
+                with contextlib.suppress(Exception):
+                    self.client.close(timeout=10)
+            finally:
+                if lost:
+                    logging.disable(logging.NOTSET)
             self.client = None
         return False
+
+    def _check_scheduler(self, force: bool = False) -> None:
+        """ClusterLost when the client has lost its scheduler (its futures are gone with it); ``force``: a
+        future was cancelled by no one here, so the scheduler is taken as lost unless it answers at once."""
+        status = str(getattr(self.client, "status", "running"))
+        if status == "running" and force:
+            try:
+                self.client.scheduler_info()  # cached; a dead comm shows in the status right after
+                status = str(self.client.status)
+                if status == "running":
+                    return
+            except Exception:  # noqa: BLE001 - any failure to reach it is the same news
+                status = "unreachable"
+        if status != "running":
+            raise ClusterLost(f"lost the dask scheduler at {self.address} (client {status})")
 
     def run(self, tasks, on_done):
         tasks = list(tasks)
@@ -324,7 +366,7 @@ class DaskBackend:
         try:
             with self.client.as_current():
                 finished = as_completed(list(futs))
-            for f in _poll_iter(finished):
+            for f in _poll_iter(finished, self._check_scheduler):
                 key, args = futs[f]
                 try:
                     rec, ds = f.result()
@@ -332,6 +374,9 @@ class DaskBackend:
                     if type(exc).__name__ == "KilledWorker":
                         killed.append((key, args, exc))
                         continue
+                    if f.cancelled() or "Cancelled" in type(exc).__name__:
+                        # not the point's doing: the scheduler forgot it (lost, restarted) -- never a record
+                        self._check_scheduler(force=True)
                     rec, ds = {"status": "error", "error": f"{type(exc).__name__}: {exc}", "summary": {},
                                "wall_time": float("nan")}, None
                 on_done(key, rec, ds)
@@ -343,8 +388,9 @@ class DaskBackend:
         return killed
 
 
-def _poll_iter(ac):
-    """Iterate a distributed.as_completed, checking for a deferred Ctrl-C between results."""
+def _poll_iter(ac, check=None):
+    """Iterate a distributed.as_completed, checking for a deferred Ctrl-C (and ``check()``: the scheduler is
+    still there) between results."""
     while True:
         batch = ac.next_batch(block=False) if hasattr(ac, "next_batch") else None
         if batch:
@@ -353,6 +399,8 @@ def _poll_iter(ac):
         if ac.is_empty():
             return
         _check_interrupt()
+        if check is not None:
+            check()
         time.sleep(_POLL / 4)
 
 

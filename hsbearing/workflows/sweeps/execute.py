@@ -18,7 +18,7 @@ from hsbearing.case import (
     DIMENSIONS,
     SCHEMA,
 )
-from hsbearing.errors import SolverError
+from hsbearing.errors import ClusterLost, Interrupted, SolverError
 from hsbearing.results import VARIABLES, check_output_path, standard_attrs, write_netcdf
 from hsbearing.workflows.sweeps.archives import clean_temporaries, dir_lock, read_record, write_point_archive
 from hsbearing.workflows.sweeps.backends import SerialBackend, deferred_sweep_sigint, make_backend
@@ -105,6 +105,23 @@ def execute(
         with (deferred_sweep_sigint() if not isinstance(backend, SerialBackend) else contextlib.nullcontext()), \
                 (backend if owned else contextlib.nullcontext()):
             backend.run(tasks, on_done)
+    except ClusterLost as exc:  # the scheduler went away: the same words, with what is kept
+        if getattr(exc, "sweep_kept", None) is not None:
+            raise
+        n_points = sum(1 for plan in plans for pt in plan.points if pt.case is not None)
+        kept = sum(1 for r in results.values() if r.get("archive"))
+        err = ClusterLost(f"{exc}; {kept} of {n_points} points kept in {archive_dir}; the same command resumes "
+                          "from them")
+        err.sweep_kept = kept
+        raise err from None
+    except KeyboardInterrupt as exc:  # say what is kept and how to go on (every kept archive is complete)
+        if isinstance(exc, Interrupted) and getattr(exc, "sweep_kept", None) is not None:
+            raise
+        n_points = sum(1 for plan in plans for pt in plan.points if pt.case is not None)
+        kept = sum(1 for r in results.values() if r.get("archive"))
+        err = Interrupted(f"{kept} of {n_points} points kept in {archive_dir}; the same command resumes from them")
+        err.sweep_kept = kept
+        raise err from None
     finally:
         if bar is not None:
             bar.close()

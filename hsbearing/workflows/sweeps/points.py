@@ -251,8 +251,9 @@ def compute_point(case: Case, kind: str, duration, point_fn, keep: str = "full")
     return rec, ds
 
 
-def worker_init() -> None:  # pragma: no cover - runs in the worker processes
-    """Die with the parent (Linux): an interrupted sweep leaves no orphan computing."""
+def worker_init(parent: int | None = None) -> None:  # pragma: no cover - runs in the worker processes
+    """Die with the parent (Linux): an interrupted sweep leaves no orphan computing.  ``parent``: the pid of
+    the sweep process (a worker that finds another parent was orphaned while it started, and exits)."""
     with contextlib.suppress(Exception):
         signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent handles Ctrl-C and shuts us down
     if sys.platform.startswith("linux"):
@@ -261,5 +262,7 @@ def worker_init() -> None:  # pragma: no cover - runs in the worker processes
 
             libc = ctypes.CDLL("libc.so.6", use_errno=True)
             libc.prctl(1, signal.SIGTERM)  # PR_SET_PDEATHSIG
-            if os.getppid() == 1:
+            # the parent died before the line above (a worker still starting up): we were re-parented, to init
+            # or to a subreaper (a container's init, a process supervisor), so compare with the parent we had
+            if os.getppid() == 1 or (parent is not None and os.getppid() != parent):
                 os._exit(1)
