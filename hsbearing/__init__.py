@@ -121,12 +121,11 @@ def friction(case, speeds=None, **overrides):
     """
     import numpy as np
 
-    from hsbearing.systems.angular_contact.rating import friction_angular_contact
+    from hsbearing.systems.angular_contact.rating import friction_angular_contact, require_angular_contact
 
     c = as_case(case, overrides)
-    if c.system != "angular_contact":
-        raise CaseError(c.source, "case.system", f"hsbearing.friction is the angular-contact model; {c.system} cases: "
-                                                 "the command hsbearing friction")
+    require_angular_contact(c, "hsbearing.friction is the angular-contact model; other systems: the command "
+                               "hsbearing friction")
     if speeds is None:
         speeds = np.array([abs(c.operating.inner_speed)])
     return friction_angular_contact(c, speeds)

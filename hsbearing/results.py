@@ -485,7 +485,8 @@ def open_run(path: str | os.PathLike) -> xr.Dataset:
     Raises :class:`hsbearing.case.CaseError` naming the file for anything that is not an hsbearing archive:
     a missing or unreadable file, a file that is not netCDF, and a netCDF file that some other program wrote
     (every hsbearing archive carries the attributes of :func:`standard_attrs`: ``hsbearing_version`` and a
-    ``title`` beginning with "hsbearing") or that holds no variable (an empty file is never a result).
+    ``title`` beginning with "hsbearing") or that holds no variable although its status is ``ok`` (the archive of a
+    sweep point that failed before producing data keeps its failure status and message only, and is read).
     """
     from hsbearing.case import CaseError
 
@@ -500,7 +501,7 @@ def open_run(path: str | os.PathLike) -> xr.Dataset:
     if not is_hsbearing_archive(ds):
         raise CaseError(name, None, "not an hsbearing archive: a netCDF file without the attributes every hsbearing "
                                     "archive carries (hsbearing_version, title 'hsbearing ...')")
-    if not ds.data_vars:
+    if not ds.data_vars and str(ds.attrs.get("status", "ok")) == "ok":  # a failed point keeps its status only
         raise CaseError(name, None, "an hsbearing archive with no variables: nothing to read")
     return ds
 

@@ -160,14 +160,15 @@ def _extend_budget(args, case, duration) -> float | None:
     """The --max-duration of ``hsbearing run --extend`` [s] (None without --extend); bad input exits 2 before any run."""
     from hsbearing.case import check_output_samples
     from hsbearing.systems.angular_contact.extend import DEFAULT_BUDGET_FACTOR
+    from hsbearing.systems.angular_contact.rating import require_angular_contact
 
     extend, text = bool(getattr(args, "extend", False)), getattr(args, "max_duration", None)
     if not extend:
         if text:
             raise CaseError("--max-duration", "max_duration", "only with --extend")
         return None
-    if case.system != "angular_contact":
-        raise CaseError("--extend", "system", f"runs of system {case.system!r} cannot be extended")
+    require_angular_contact(case, "only runs of the angular-contact model can be extended", source="--extend",
+                            key="system")
     d = duration if duration is not None else float(case.simulation.duration)
     if not text:
         return DEFAULT_BUDGET_FACTOR * d

@@ -52,7 +52,7 @@ def test_plot_of_a_sweep_summary_writes_the_sweep_figure(tmp_path, capsys):
     # TypeError traceback, then a refusal (exit 2); now it gets the sweep figure (plotting.plot_sweep)
     ds = xr.Dataset({"mean_cage_slip_ratio": ("axial_load", np.array([0.01, 0.02]))},
                     coords={"axial_load": [100.0, 500.0]},
-                    attrs={"sweep_vary": "axial_load", "title": "hsbearing sweep"})
+                    attrs={"sweep_vary": "axial_load", "title": "hsbearing sweep", "hsbearing_version": "0.1.0"})
     path = tmp_path / "sweep.nc"
     ds.to_netcdf(path)
     rc = main(["plot", str(path)])

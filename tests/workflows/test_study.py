@@ -73,7 +73,7 @@ def test_study_end_to_end_with_synthetic_runs(tmp_path):
     assert disk.attrs["study_table"] == "table4" and disk["archive"].values[0, 0].startswith("runs/")
 
     text = (tmp_path / "report.md").read_text()
-    assert "Not the dynamic model" in text and "test_study.fake_dynamics" in text
+    assert "Not the dynamic model" in text and "study_fakes.fake_dynamics" in text
     # agreement count, computed independently from the CSV
     agree = sum(study.normalise_label(r["response"]) == FAKE_LABEL[r["oil"]] for r in _csv_rows())
     assert f"**{agree} of 39** cells that completed and were classified; 0 completed cells are *undetermined*" in text

@@ -16,6 +16,7 @@ import math
 
 import numpy as np
 
+from hsbearing.errors import CaseError
 from hsbearing.models.friction import skf2004
 from hsbearing.results import make_dataset, register, standard_attrs
 
@@ -395,6 +396,14 @@ def _register_qs_power():
 _register_qs_power()
 for _row in skf2004.OUTPUTS:  # the skf_* variables of friction_angular_contact
     register(*_row)
+
+
+def require_angular_contact(case, what: str, *, source: str | None = None, key: str = "case.system") -> None:
+    """CaseError (naming ``source`` -- the case file by default -- and ``key``) unless the case is an angular-contact
+    bearing: for what only this system's engine does (``what`` says what was asked), so that the front ends need
+    not compare system names."""
+    if case.system != "angular_contact":
+        raise CaseError(source or case.source, key, f"{what} (got a {case.system} case)")
 
 
 def friction_angular_contact(case, speeds):
