@@ -8,19 +8,6 @@ import re
 
 from hsbearing.case.schema import MAX_CONFORMITY
 from hsbearing.errors import CaseError  # defined in errors (below models/); case.CaseError is the same class
-from hsbearing.units import (  # noqa: E402,F401,I001 - the public names of the case module
-    ANGULAR_KINDS,
-    DIMENSIONS,  # noqa: E402,F401 - dimension name -> SI unit string (public here)
-    MAX_MAGNITUDE,
-    MAX_QUANTITY_CHARS,
-    _a,
-    _ureg,
-    angular_si,
-    check_quantity_text,
-    example_unit,
-    has_angle_unit,
-    parse_quantity,
-)
 
 
 def check_physical(case, source: str) -> None:

@@ -17,19 +17,7 @@ from hsbearing.case.checks import check_physical, check_possible
 from hsbearing.case.schema import ALL, SCHEMA, SYSTEMS, TABLES, Field
 from hsbearing.case.toml import dump_toml
 from hsbearing.errors import CaseError  # defined in errors (below models/); case.CaseError is the same class
-from hsbearing.units import (  # noqa: E402,F401,I001 - the public names of the case module
-    ANGULAR_KINDS,
-    DIMENSIONS,  # noqa: E402,F401 - dimension name -> SI unit string (public here)
-    MAX_MAGNITUDE,
-    MAX_QUANTITY_CHARS,
-    _a,
-    _ureg,
-    angular_si,
-    check_quantity_text,
-    example_unit,
-    has_angle_unit,
-    parse_quantity,
-)
+from hsbearing.units import DIMENSIONS, parse_quantity
 
 # ----------------------------------------------------------------------------
 # dataclasses generated from the schema

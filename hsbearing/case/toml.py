@@ -5,20 +5,6 @@ from __future__ import annotations
 import re
 from typing import Any, Mapping
 
-from hsbearing.units import (  # noqa: E402,F401,I001 - the public names of the case module
-    ANGULAR_KINDS,
-    DIMENSIONS,  # noqa: E402,F401 - dimension name -> SI unit string (public here)
-    MAX_MAGNITUDE,
-    MAX_QUANTITY_CHARS,
-    _a,
-    _ureg,
-    angular_si,
-    check_quantity_text,
-    example_unit,
-    has_angle_unit,
-    parse_quantity,
-)
-
 # ----------------------------------------------------------------------------
 # tiny TOML writer for the raw dict (strings, numbers, bools, nested tables)
 
