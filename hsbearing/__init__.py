@@ -154,10 +154,10 @@ def thermal(case, *, lubricant_temperature_start=None, **overrides):
     check_inputs(c)
     T0 = None
     if lubricant_temperature_start is not None:
-        from hsbearing.case.load import _override_literal
+        from hsbearing.case.load import override_literal
         from hsbearing.units import parse_quantity
 
-        lit = _override_literal("temperature", lubricant_temperature_start)
+        lit = override_literal("temperature", lubricant_temperature_start)
         T0 = parse_quantity(lit, "temperature", source="lubricant_temperature_start")
     return thermal_equilibrium(c, T_start=T0)
 

@@ -352,7 +352,7 @@ def _build_checked(text: str, source: str, overrides: Mapping[str, Any]) -> Case
     override_lines = []
     for k, v in (overrides or {}).items():
         table, leaf = resolve_key(k, source=f"{source} (override)")
-        lit = _override_literal(SCHEMA[table][leaf].kind, v)
+        lit = override_literal(SCHEMA[table][leaf].kind, v)
         _get_table(raw, table)[leaf] = lit
         override_lines.append(f"# {table}.{leaf} = {lit if hasattr(v, 'magnitude') else v!r}")
     full_text = text if not override_lines else text.rstrip("\n") + "\n# --- overrides ---\n" + "\n".join(override_lines) + "\n"
@@ -578,10 +578,10 @@ def read_override(value: Any, fld: Field, *, source: str = "<override>", key: st
     dimension, a quantity (``"100 N"``; a bare number other than 0 is refused); str and choice keys keep the
     text.  Returns the value in the key's type, a quantity in SI.  The key's range checks (positive, bounds,
     choices) are left to the case: a value out of range makes an invalid case, not a bad value list."""
-    return _coerce(_override_literal(fld.kind, value), fld, source, key or "<override>")
+    return _coerce(override_literal(fld.kind, value), fld, source, key or "<override>")
 
 
-def _override_literal(kind: str, value: Any) -> Any:
+def override_literal(kind: str, value: Any) -> Any:
     """An override as it goes into the case's TOML tables: str/choice keys as text, others a TOML literal
     when the text is one (``"0.52"`` -> 0.52; ``"100 N"`` stays text).  A pint Quantity becomes its text
     (``"10000 revolutions_per_minute"``) and a plain number for a key with a dimension is read in the key's SI
