@@ -818,7 +818,8 @@ density_temperature = "15 degC"
 # density_temperature_coefficient = "7e-4 1/K"   # rho = rho_ref (1 - k (T - T_ref)); default 0
 
 # pressure-viscosity coefficient alpha: a value ("1.8e-8 1/Pa"), [[T, alpha], ...] points, or the name of a
-# correlation when the data sheet does not give it (then every command says that alpha is estimated)
+# correlation when the data sheet does not give it (then every command says that alpha is estimated); left out,
+# it is estimated by so_klaus_1980 (with the same notice)
 pressure_viscosity_coefficient = "so_klaus_1980"
 
 # service_temperature = ["-10 degC", "100 degC"]   # optional: the range the data sheet states; beyond it
@@ -829,7 +830,9 @@ pressure_viscosity_coefficient = "so_klaus_1980"
 # traction: a measured law of your oil if you have one (model = "table": measured mu(S) points, or
 # model = "coefficients"; model = "eyring": the physical model with its parameters).  Without measurements,
 # borrow the registered curve fit of the closest of the three oils of Zhang et al. 2016 (4109, 4106, 4050):
-# every command then says that the traction is borrowed.
+# every command then says that the traction is borrowed.  Or leave the [traction] table out (data-sheet values
+# only): the recommended law (hsbearing.models.traction.RECOMMENDED_LAW) with its default constants is used, fed
+# by this oil's own viscosity and alpha, and every command says so.
 [traction]
 model = "zhang2016"
 oil = "4106"

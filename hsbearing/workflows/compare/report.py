@@ -140,7 +140,7 @@ def best_table(ds, sel: dict) -> tuple[list[str], list[list[str]]]:
     rows = []
     if "criterion" not in ds.dims:
         return header, rows
-    for i, crit in enumerate(ds["criterion"].values):
+    for i in range(ds.sizes["criterion"]):
         pt = {**sel, "criterion": i}
         units = str(ds["criterion_units"].values[i])
         var = str(ds["criterion_variable"].values[i])
@@ -246,7 +246,7 @@ def power_figure(ds, path: Path) -> Path | None:
         stacked = [(s[len(prefix):].replace("_", " "), (lambda sel, i, s=s: _val(ds, s, sel, i))) for s in srcs]
         err = None
         if band and f"{band}_low" in ds:
-            err = (lambda sel, i: (_val(ds, f"{band}_low", sel, i), _val(ds, f"{band}_high", sel, i)))
+            err = (lambda sel, i, b=band: (_val(ds, f"{b}_low", sel, i), _val(ds, f"{b}_high", sel, i)))
         _grouped_bars(ax, ds, pts, oils, None, stacked=stacked, err=err)
         ax.set_title(title + ("\n(bar: the drag band)" if err else ""), fontsize=9)
         ax.grid(axis="y", alpha=0.3)
