@@ -26,15 +26,14 @@ import numpy as np
 import xarray as xr
 
 from hsbearing.case import CaseError, as_case
-from hsbearing.results import VARIABLES, check_output_path, register, standard_attrs, write_netcdf
+from hsbearing.results import VARIABLES, check_output_path, register, standard_attrs
+from hsbearing.workflows.compare.report import HTML_NAME, MD_NAME, NC_NAME
 
 #: the dynamic run's upper bound when none is given: the study's 1.2 s, with the stop rule on (runs of the
 #: default case stop at 0.5-0.7 s once the cage answer holds; docs/sweeps.md "Stop rule")
 DEFAULT_DURATION = 1.2
 #: where the point archives go, inside the output directory
 POINTS_DIR = "points"
-#: file names inside the output directory (the fourth-round contract: index.html, compare.md, a netCDF over ``oil``)
-NC_NAME, MD_NAME, HTML_NAME = "compare.nc", "compare.md", "index.html"
 #: a relative difference below this is reported as "no difference" (the numbers still given)
 TIE = 1e-3
 
@@ -212,10 +211,11 @@ def combine(sweeps: Mapping[str, xr.Dataset], *, skipped: str = "", dynamics: bo
                 out_name = name if name not in seen else f"{_PREFIX[kind]}_{name}"
             var = sw[name].copy()
             if out_name != name and name not in _RECORDS:
-                var.attrs["long_name"] = f"{kind} run: " + var.attrs.get("long_name", name) if kind == "run" else \
-                    f"{kind}: " + var.attrs.get("long_name", name)
+                var.attrs["long_name"] = f"{_PREFIX[kind]}: " + var.attrs.get("long_name", name)
             if name in _RECORDS:
                 var.attrs = {"units": "", "long_name": f"{_PREFIX[kind]} point: " + VARIABLES[name].long_name}
+            var.attrs.setdefault("units", "")
+            var.attrs.setdefault("long_name", out_name.replace("_", " "))
             data[out_name] = var
             seen.add(name)
     ds = xr.Dataset(data)
@@ -370,7 +370,3 @@ def add_best(ds: xr.Dataset) -> xr.Dataset:
                                                                          "units": ""}),
     )
     return ds
-
-
-def write_dataset(ds: xr.Dataset, out: Path) -> Path:
-    return write_netcdf(ds, Path(out) / NC_NAME)

@@ -14,7 +14,14 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from hsbearing.workflows.compare.compute import HTML_NAME, MD_NAME, NC_NAME, write_dataset
+#: file names inside the output directory (the fourth-round contract: index.html, compare.md, a netCDF over ``oil``)
+NC_NAME, MD_NAME, HTML_NAME = "compare.nc", "compare.md", "index.html"
+
+
+def write_dataset(ds: xr.Dataset, out: Path) -> Path:
+    from hsbearing.results import write_netcdf
+
+    return write_netcdf(ds, Path(out) / NC_NAME)
 
 #: the rows of the numbers table, in order (each shown when compare.nc carries it); power_loss_<source> rows are
 #: inserted after ``power_loss`` / ``dynamic_power_loss`` for the sources that are not zero for every oil
