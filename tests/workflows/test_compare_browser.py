@@ -10,6 +10,7 @@ only when that cannot install one.  Slow tier: starting the browser and a compar
 
 from __future__ import annotations
 
+import fcntl
 import json
 import os
 import shutil
@@ -46,24 +47,34 @@ class DevTools:
     def __init__(self, exe: str, profile: Path):
         to_chrome_r, self._w = os.pipe()
         self._r, from_chrome_w = os.pipe()
-        os.set_inheritable(to_chrome_r, True)
-        os.set_inheritable(from_chrome_w, True)
+        # the browser's ends above 9, so that dup2 onto 3 and 4 cannot overwrite one with the other
+        to_chrome_r, from_chrome_w = (self._high(fd) for fd in (to_chrome_r, from_chrome_w))
+
+        profile.mkdir(parents=True, exist_ok=True)
+        self._log = open(profile / "stderr.log", "wb")  # noqa: SIM115 - closed in close()
 
         def fds():  # the browser reads commands on fd 3 and writes answers on fd 4
             os.dup2(to_chrome_r, 3)
             os.dup2(from_chrome_w, 4)
 
+        # close_fds=False: subprocess would close fds 3 and 4 after preexec_fn otherwise; Python's own descriptors
+        # are not inheritable (O_CLOEXEC), so the browser gets only these two besides stdio
         self.proc = subprocess.Popen(
             [exe, "--headless", "--no-sandbox", "--disable-gpu", "--no-first-run", "--disable-extensions",
              "--disable-background-networking", "--remote-debugging-pipe", f"--user-data-dir={profile}",
              "about:blank"],
-            preexec_fn=fds, pass_fds=(to_chrome_r, from_chrome_w), stdout=subprocess.DEVNULL,
-            stderr=subprocess.DEVNULL)
+            preexec_fn=fds, close_fds=False, stdout=subprocess.DEVNULL, stderr=self._log)
         os.close(to_chrome_r)
         os.close(from_chrome_w)
         self._buf = b""
         self._id = 0
         self.events: list[dict] = []
+
+    @staticmethod
+    def _high(fd: int) -> int:
+        new = fcntl.fcntl(fd, fcntl.F_DUPFD_CLOEXEC, 10)
+        os.close(fd)
+        return new
 
     def close(self):
         for fd in (self._w, self._r):
@@ -77,6 +88,7 @@ class DevTools:
         except subprocess.TimeoutExpired:
             self.proc.kill()
             self.proc.wait()
+        self._log.close()
 
     def _read(self, deadline: float) -> dict:
         while b"\0" not in self._buf:
@@ -84,7 +96,9 @@ class DevTools:
                 raise TimeoutError("no answer from chromium")
             chunk = os.read(self._r, 1 << 16)
             if not chunk:
-                raise RuntimeError("chromium closed the pipe")
+                self._log.flush()
+                err = Path(self._log.name).read_text(errors="replace")
+                raise RuntimeError(f"chromium closed the pipe (exit {self.proc.returncode}): {err[-2000:]}")
             self._buf += chunk
         msg, _, self._buf = self._buf.partition(b"\0")
         return json.loads(msg)
