@@ -211,3 +211,30 @@ def test_dynamic_columns_equal_the_single_run(tmp_path):
     assert "dynamic run of at most 0.005 s" in ds.attrs["compare_dynamics"]
     assert not (Path(tmp_path / "dyn") / "criteria.png").exists()  # figures=False
     assert (Path(tmp_path / "dyn") / "index.html").is_file()
+
+
+def test_vary_and_thermal_skipped_without_oil_flow(tmp_path):
+    """Every oil at each value of a varied key; a case without an oil flow skips the thermal equilibrium and says why."""
+    import hsbearing
+    from hsbearing.systems.angular_contact.rating import quasi_static_power_loss
+
+    text = (Path(hsbearing.__file__).parent / "cases" / "zhang2016.toml").read_text()
+    text = "\n".join(line for line in text.splitlines() if not line.startswith("oil_flow_rate"))
+    case_file = tmp_path / "no_flow.toml"
+    case_file.write_text(text)
+    out = tmp_path / "vary"
+    ds = hsbearing.compare(str(case_file), "4109,4106", vary={"axial_load": "500,1000N"}, out_dir=out,
+                           dynamics=False, jobs=1)
+    assert dict(ds["power_loss"].sizes) == {"oil": 2, "axial_load": 2}
+    assert "lubricant.oil_flow_rate" in ds.attrs["thermal_skipped"]
+    assert "thermal_status" not in ds and "inner_ring_temperature" not in ds
+    assert ds["best_oil"].dims == ("criterion", "axial_load")
+    case = load_case(str(case_file), **{"lubricant.oil": "4106", "operating.axial_load": "500 N"})
+    assert float(ds["power_loss"].sel(oil="4106", axial_load=500.0)) == pytest.approx(
+        quasi_static_power_loss(case)["power_loss"], rel=RTOL)
+    md = (out / "compare.md").read_text()
+    assert md.count("## Best oil per criterion (axial_load = ") == 2
+    assert "thermal equilibrium skipped" in md and "lubricant.oil_flow_rate" in md
+    for name in ("criteria.png", "power_by_source.png", "quasistatic.png"):
+        assert (out / name).is_file(), name
+    assert not (out / "thermal.png").exists()

@@ -127,12 +127,14 @@ def plan_compare(case, oils, vary: Mapping[str, Any] | None = None, *, dynamics:
         if k.rpartition(".")[2] in ("oil", "file"):
             raise CaseError("--vary", k, "the oils are given by --oils")
     full = {"lubricant.oil": oils, **vary}
-    plans = {"quasistatic": plan_sweep(case, full, kind="quasistatic", point_fn=quasistatic_point)}
-    bad = [pt for pt in plans["quasistatic"].points if pt.case is None]
-    if bad:
-        where = ", ".join(f"{k}={v}" for k, v in bad[0].overrides.items())
-        raise CaseError("--oils" if "oil" in where.split("=")[0] else "--vary", None,
-                        f"point {where} is not a valid case: {bad[0].error}")
+    # an oil that is no oil is the fault of --oils, a value that makes an invalid case with a good oil of --vary
+    for source, spec in (("--oils", {"lubricant.oil": oils}), ("--vary", full)):
+        plan = plan_sweep(case, spec, kind="quasistatic", point_fn=quasistatic_point)
+        bad = [pt for pt in plan.points if pt.case is None]
+        if bad:
+            where = ", ".join(f"{k}={v}" for k, v in bad[0].overrides.items())
+            raise CaseError(source, None, f"point {where} is not a valid case: {bad[0].error}")
+    plans = {"quasistatic": plan}
     if dynamics:
         run_case = case if case.simulation.stop == stop else case.with_overrides(**{"simulation.stop": stop})
         dur = DEFAULT_DURATION if duration is None else duration
