@@ -124,7 +124,8 @@ def build_parser() -> argparse.ArgumentParser:
     sp.add_argument("--vary", action="append", metavar="KEY=V1,V2,...",
                     help="also vary a case key, every oil at each value, e.g. --vary axial_load=500,1000N (repeatable)")
     sp.add_argument("--no-dynamics", action="store_true",
-                    help="quasi-static comparison only (seconds per oil): no dynamic run, so no cage class or whirl")
+                    help="quasi-static comparison only (tens of seconds per oil with the thermal equilibrium): no dynamic "
+                         "run, so no cage class or whirl")
     sp.add_argument("--duration", help="upper bound of each oil's dynamic run, e.g. 0.6s (default 1.2 s, stopped "
                                        "earlier by the stop rule once the cage answer holds)")
     sp.add_argument("--stop", choices=("duration", "converged"), default="converged",
