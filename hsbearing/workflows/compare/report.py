@@ -51,6 +51,8 @@ LABELS = {
     "modified_rating_life": "L_10m", "reference_rating_life": "L_10r (ISO/TS 16281)",
     "modified_reference_rating_life": "a_ISO L_10r",
 }
+#: criteria read from the dynamic run (their ranking is flagged when a run's class is undetermined)
+_DYNAMIC = ("dynamic_power_loss", "mean_cage_slip_ratio", "whirl_amplitude")
 _LIVES = ("basic_rating_life", "modified_rating_life", "reference_rating_life", "modified_reference_rating_life")
 
 
@@ -164,6 +166,13 @@ def best_table(ds, sel: dict) -> tuple[list[str], list[list[str]]]:
             unc = (f"drag band: best at both ends, by {fmt(mlo, units, var, difference=True)} .. "
                    f"{fmt(mhi, units, var, difference=True)}" if same else
                    f"drag band: best is {lo} at the low end, {hi} at the high end: the ranking is not settled")
+        if var in _DYNAMIC and "classification" in ds:  # a run whose class is undetermined has no final answer yet
+            names = [str(n) for n in ds["oil_name"].values]
+            cls = ds["classification"].isel(sel) if sel else ds["classification"]
+            open_ = [n for k, n in enumerate(names) if n in (best, str(ds["runner_up_oil"].isel(pt).values.item()))
+                     and str(cls.isel(oil=k).values.item()).startswith("undetermined")]
+            if open_:
+                unc = (unc + "; " if unc else "") + f"class undetermined for {', '.join(open_)}: not a final answer"
         rows.append([str(ds["criterion_description"].values[i]), best,
                      fmt(float(ds["best_value"].isel(pt).values), units, var),
                      str(ds["runner_up_oil"].isel(pt).values.item()) or "-",
