@@ -13,7 +13,7 @@ LATEST := .venv-latest
 RUN_DURATION ?= 0.7s
 PYTEST_ARGS ?=
 
-.PHONY: run test test-all test-latest bench lock lock-docs lint mutation clean venv docs
+.PHONY: run test test-all test-latest bench lock lock-docs lint mutation clean venv docs browser
 
 $(STAMP): pyproject.toml requirements.lock
 	$(PYTHON) -m venv $(VENV)
@@ -83,6 +83,13 @@ mutation: $(STAMP)
 # every benchmark in benchmarks/ (one-off measurements live in tools/investigations/)
 bench: $(STAMP)
 	@for f in benchmarks/bench_*.py; do echo "== $$f"; $(BIN)/python $$f || exit 1; done
+
+# Debian's headless chromium for the slow-tier browser test of the compare page (tests/workflows/test_compare_browser.py,
+# which runs this target when no chromium is found); needs root and apt (CI and the developers' machines are root)
+browser:
+	@command -v chromium >/dev/null 2>&1 || { apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends chromium >/dev/null; }
+	@command -v chromium
 
 clean:
 	rm -rf $(VENV) $(LATEST) build *.egg-info runs docs/_build docs/reference/generated docs/auto_examples

@@ -8,6 +8,7 @@ Public API (the contracts of docs/design.md):
 - :func:`sweep` -- many runs over varied case keys -> one Dataset with a dim per key
 - :func:`open_run` -- read an archive back
 - :func:`dynamic_model` -- the model object (``y0``, ``rhs``, ``state_names``)
+- :func:`compare` -- lubricants at the same conditions -> Dataset over ``oil`` and a page (``hsbearing compare``)
 """
 
 from __future__ import annotations
@@ -37,6 +38,7 @@ __all__ = [
     "friction",
     "thermal",
     "life",
+    "compare",
 ]
 
 
@@ -179,3 +181,43 @@ def life(case, *, quasistatic: bool = True, **overrides):
     from hsbearing.systems.angular_contact.rating import life as _life
 
     return _life(as_case(case, overrides), quasistatic=quasistatic)
+
+
+def compare(case, oils, *, out_dir, vary=None, dynamics: bool = True, duration=None, stop: str = "converged",
+            jobs: int | None = None, scheduler: str | None = None, progress: bool = False, figures: bool = True,
+            **overrides):
+    """Lubricants at the same conditions (``hsbearing compare``): a Dataset over ``oil`` and a page in ``out_dir``.
+
+    Parameters
+    ----------
+    case : a :class:`Case`, a bundled case name or a case file path (angular_contact).
+    oils : ``"4109,4106,my_oil.toml"`` or a list: built-in oils, bundled lubricants, lubricant files (a file path
+        relative to the case file, then the working directory, as ``lubricant.file``).
+    out_dir : directory of ``index.html``, ``compare.md``, ``compare.nc`` and the point archives (``points/``);
+        the same call again reuses the point archives.
+    vary : ``{key: values}`` of other case keys, every oil at each value (as :func:`sweep`).
+    dynamics : run the dynamic model for each oil (cage class, slip, whirl, the run's power); False: quasi-static only.
+    duration : upper bound of each dynamic run [s] or a unit string (default 1.2 s).
+    stop : ``"converged"`` (default: stop once the cage answer holds, docs/sweeps.md) or ``"duration"``.
+    jobs, scheduler : local worker processes or a dask.distributed scheduler address (as :func:`sweep`).
+    progress : a progress bar on stderr.  figures : draw the page's figures.
+    **overrides : case values (``axial_load="2 kN"``): unit strings, pint Quantities or SI floats.
+
+    Returns
+    -------
+    xr.Dataset over ``oil`` (and the varied keys): each oil's quasi-static power by source, drive torque, film,
+    pressure, lives; the dynamic run's class, slip, whirl and power (``dynamic_*``); the thermal temperatures when
+    the case has an oil flow; ``best_oil`` / ``best_margin`` per ``criterion``; ``lubricant_name``,
+    ``lubricant_provenance`` and ``lubricant_notices`` per oil.
+
+    Examples
+    --------
+    >>> import hsbearing
+    >>> ds = hsbearing.compare("zhang2016", "4109,4106", out_dir="runs/oils", dynamics=False)  # doctest: +SKIP
+    >>> ds["best_oil"].sel(criterion="power_loss").item()  # doctest: +SKIP
+    '4109'
+    """
+    from hsbearing.workflows.compare import compare as _compare
+
+    return _compare(as_case(case, overrides), oils, vary=vary, out_dir=out_dir, dynamics=dynamics, duration=duration,
+                    stop=stop, jobs=jobs, scheduler=scheduler, progress=progress, figures=figures)

@@ -137,6 +137,7 @@ class LubricantDefinition:
     table_fit_deviation: float | None = None  #: largest |fit - table| [-] (model "table")
     viscosity_index: float | None = None  #: VI as stated by the source (reported, not used)
     service_range: tuple | None = None  #: (T_low, T_high) [K] the source states the oil for (envelope warning)
+    traction_recommended: bool = False  #: no [traction] table: models.traction.RECOMMENDED_LAW with its defaults
     text: str = field(default="", repr=False)  #: the file's TOML text
 
     @property
@@ -369,10 +370,9 @@ def loads_lubricant(text: str, source: str = "<lubricant>", *, default_name: str
     # --- pressure-viscosity coefficient
     alpha_value = alpha_points = alpha_estimate = None
     key = "pressure_viscosity_coefficient"
-    if key not in raw:
-        raise CaseError(src, key, 'missing required key: a value ("1.8e-8 1/Pa"), [temperature, value] points, '
-                                  f'or the name of a correlation ({", ".join(ALPHA_ESTIMATES)}; flagged as estimated)')
-    a = raw[key]
+    # a data sheet rarely gives alpha: absent, it is estimated by the first correlation (flagged as estimated,
+    # a notice wherever the oil is used)
+    a = raw.get(key, ALPHA_ESTIMATES[0])
     if isinstance(a, list):
         if not a:
             raise CaseError(src, key, "empty list")
@@ -414,10 +414,9 @@ def loads_lubricant(text: str, source: str = "<lubricant>", *, default_name: str
 
     # --- traction
     tr = raw.get("traction")
-    if tr is None:
-        raise CaseError(src, "traction", "missing required table [traction]: model = one of "
-                                         f"{', '.join(TRACTION_MODELS)} (zhang2016: with oil = one of {', '.join(traction.OILS)} "
-                                         "whose registered laws the oil uses, and law)")
+    recommended = tr is None
+    if recommended:  # data-sheet values only: the recommended law, fed by the oil's own viscosity and alpha
+        tr = {"model": traction.RECOMMENDED_LAW}
     if not isinstance(tr, dict):
         raise CaseError(src, "traction", f"expected a table [traction], got {tr!r}")
     model = tr.get("model", "zhang2016")
@@ -469,6 +468,7 @@ def loads_lubricant(text: str, source: str = "<lubricant>", *, default_name: str
         alpha_estimate=alpha_estimate, conductivity=K, viscosity_index=None if vi is None else float(vi), text=text,
         traction_model=model, eyring=eyring_params, coefficients=coefficients, traction_table=table,
         traction_conditions=conditions, table_fit_deviation=fit_dev, service_range=service,
+        traction_recommended=recommended,
     )
     # a Walther line must come out of the points (falling viscosity, finite coefficients)
     try:
@@ -706,6 +706,9 @@ def provenance(lub) -> str:
     parts.append("alpha estimated (" + d.alpha_estimate + ")" if d.alpha_estimated else "alpha given")
     if d.traction_model == "zhang2016":
         parts.append(f"traction borrowed from oil {d.traction_oil} (law {d.traction_law})")
+    elif d.traction_recommended:
+        parts.append(f"traction: the recommended law ({d.traction_model}) with its default constants (the file has "
+                     "no [traction] table: data sheet only)")
     elif d.traction_model == "eyring":
         parts.append("traction: physical model (eyring) with the file's parameters")
     elif d.traction_model == "table":
@@ -733,6 +736,10 @@ def notices(lub, raw_lubricant: dict | None = None) -> list[str]:
         out.append(f"notice: the traction of {d.name} is borrowed from oil {d.traction_oil} (its {d.traction_law} "
                    f"curve fit, Zhang et al. 2016): no traction measured on {d.name} is used, so its race traction is "
                    f"{d.traction_oil}'s, not a result for {d.name}")
+    if d.traction_recommended:
+        out.append(f"notice: {d.name} has no [traction] table (data sheet only): its traction is the recommended law "
+                   f"{d.traction_model} with default constants and {d.name}'s own viscosity and alpha, not a measured "
+                   "traction curve (docs/guide/lubricants.md)")
     if d.alpha_estimated and "pressure_viscosity_coefficient" not in raw:
         out.append(f"notice: the pressure-viscosity coefficient alpha of {d.name} is estimated ({d.alpha_estimate} "
                    "correlation), not measured")
@@ -811,7 +818,8 @@ density_temperature = "15 degC"
 # density_temperature_coefficient = "7e-4 1/K"   # rho = rho_ref (1 - k (T - T_ref)); default 0
 
 # pressure-viscosity coefficient alpha: a value ("1.8e-8 1/Pa"), [[T, alpha], ...] points, or the name of a
-# correlation when the data sheet does not give it (then every command says that alpha is estimated)
+# correlation when the data sheet does not give it (then every command says that alpha is estimated); left out,
+# it is estimated by so_klaus_1980 (with the same notice)
 pressure_viscosity_coefficient = "so_klaus_1980"
 
 # service_temperature = ["-10 degC", "100 degC"]   # optional: the range the data sheet states; beyond it
@@ -822,7 +830,9 @@ pressure_viscosity_coefficient = "so_klaus_1980"
 # traction: a measured law of your oil if you have one (model = "table": measured mu(S) points, or
 # model = "coefficients"; model = "eyring": the physical model with its parameters).  Without measurements,
 # borrow the registered curve fit of the closest of the three oils of Zhang et al. 2016 (4109, 4106, 4050):
-# every command then says that the traction is borrowed.
+# every command then says that the traction is borrowed.  Or leave the [traction] table out (data-sheet values
+# only): the recommended law (hsbearing.models.traction.RECOMMENDED_LAW) with its default constants is used, fed
+# by this oil's own viscosity and alpha, and every command says so.
 [traction]
 model = "zhang2016"
 oil = "4106"

@@ -53,7 +53,7 @@ def _main(argv: list[str] | None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
     if not getattr(args, "func", None):  # bare `hsbearing`: say what is missing, on one line
-        print("hsbearing: error: no command given (commands: cases, check, run, quasistatic, sweep, map, study, "
+        print("hsbearing: error: no command given (commands: cases, check, run, quasistatic, sweep, compare, map, study, "
               "friction, life, preload, plot; see 'hsbearing --help')", file=sys.stderr)
         return 2
     try:

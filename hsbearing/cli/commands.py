@@ -326,6 +326,12 @@ def _summary_figure(nc: Path, png: Path) -> None:
         print(f"hsbearing: no figure for {nc}: {exc}", file=sys.stderr)
 
 
+def cmd_compare(args) -> int:
+    from hsbearing.workflows.compare.cli import cli_main
+
+    return cli_main(args)
+
+
 def cmd_sweep(args) -> int:
     from hsbearing.results import check_output_path
     from hsbearing.workflows import sweeps

@@ -9,6 +9,7 @@ from hsbearing.case import DEFAULT_CASE
 from hsbearing.cli.commands import (
     cmd_cases,
     cmd_check,
+    cmd_compare,
     cmd_friction,
     cmd_life,
     cmd_map,
@@ -113,6 +114,31 @@ def build_parser() -> argparse.ArgumentParser:
     sp.add_argument("--no-figure", "--no-plot", dest="no_figure", action="store_true",
                     help="do not draw DIR/sweep.png (--no-plot is accepted as in 'hsbearing run')")
     sp.set_defaults(func=cmd_sweep)
+
+    sp = sub.add_parser("compare", help="lubricants at the same conditions: one page (DIR/index.html, opens offline), "
+                                        "DIR/compare.md and DIR/compare.nc (dimension oil)")
+    with_case(sp)
+    sp.add_argument("--oils", required=True, metavar="A,B,FILE.toml",
+                    help="the oils to compare: built-in (4109, 4106, 4050), bundled lubricants ('hsbearing oils') or "
+                         "lubricant files (format: 'hsbearing oils --template'), e.g. --oils 4109,4106,4050,my_oil.toml")
+    sp.add_argument("--vary", action="append", metavar="KEY=V1,V2,...",
+                    help="also vary a case key, every oil at each value, e.g. --vary axial_load=500,1000N (repeatable)")
+    sp.add_argument("--no-dynamics", action="store_true",
+                    help="quasi-static comparison only (tens of seconds per oil with the thermal equilibrium): no dynamic "
+                         "run, so no cage class or whirl")
+    sp.add_argument("--duration", help="upper bound of each oil's dynamic run, e.g. 0.6s (default 1.2 s, stopped "
+                                       "earlier by the stop rule once the cage answer holds)")
+    sp.add_argument("--stop", choices=("duration", "converged"), default="converged",
+                    help="stop rule of the dynamic runs (default converged: docs/sweeps.md, Stop rule)")
+    sp.add_argument("-j", "--jobs", type=int, default=None,
+                    help="local worker processes (default: the number of cores; 1 = in this process)")
+    sp.add_argument("--scheduler", default=None, metavar="ADDR", help="dask.distributed scheduler tcp://host:port")
+    sp.add_argument("-o", "--output", required=True, help="output directory (resumable: the same command reuses "
+                                                          "the point archives in DIR/points)")
+    sp.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
+    sp.add_argument("--no-figure", "--no-plot", dest="no_figure", action="store_true",
+                    help="no figures on the page")
+    sp.set_defaults(func=cmd_compare)
 
     sp = sub.add_parser("map", help="cage-stability map over two keys: class map + instability indicator "
                                     "(DIR/map.nc, DIR/map.png)")

@@ -214,10 +214,9 @@ BAD = [
     ("unknown key", 'viscosty_index = 1\n' + GOOD, "viscosty_index", "did you mean 'viscosity_index'"),
     ("unknown correlation", GOOD.replace('"so_klaus_1980"', '"gold_2001"'), "pressure_viscosity_coefficient", "unknown correlation"),
     ("absurd alpha", GOOD.replace('"so_klaus_1980"', '"1.8e-6 1/Pa"'), "pressure_viscosity_coefficient", "outside"),
-    ("no alpha", GOOD.replace('pressure_viscosity_coefficient = "so_klaus_1980"\n', ""), "pressure_viscosity_coefficient", "missing"),
     ("unknown traction oil", GOOD.replace('oil = "4106"', 'oil = "4107"'), "traction.oil", "unknown registered oil"),
     ("unknown law", GOOD.replace('law = "default"', 'law = "eyring"'), "traction.law", "unknown traction law"),
-    ("no traction", GOOD.split("[traction]")[0], "traction", "missing required table"),
+    ("bad traction model", GOOD.replace('oil = "4106"', 'model = "eyrin"'), "traction.model", "did you mean 'eyring'"),
     ("bad density", GOOD.replace("1003 kg/m^3", "10 kg/m^3"), "density", "not the density of a lubricant"),
     ("malformed", GOOD.replace("[traction]", "[traction"), None, "malformed TOML"),
 ]
@@ -270,3 +269,40 @@ def test_short_dynamic_run_with_a_user_oil_file(oil_file, tmp_path, capsys):
                             "-o", str(out)], capsys)
     assert rc == 0, err
     assert "status: ok" in stdout and out.is_file()
+
+
+# ----------------------------------------------------------------------------- data-sheet values only
+
+DATA_SHEET_ONLY = """\
+name = "VG 32 sheet"
+viscosity = [["40 degC", "32 mm^2/s"], ["100 degC", "5.4 mm^2/s"]]
+density = "0.86 g/cm^3"
+"""
+
+
+def test_data_sheet_only_file_gets_the_recommended_law_and_notices(tmp_path, capsys):
+    """No [traction] table and no alpha (what a data sheet gives): accepted with models.traction.RECOMMENDED_LAW
+    (its default constants), alpha estimated, and a one-line notice for each."""
+    from hsbearing.models import traction
+
+    p = tmp_path / "vg32.toml"
+    p.write_text(DATA_SHEET_ONLY)
+    d = lubricant.load_lubricant(p)
+    assert d.traction_recommended and d.traction_model == traction.RECOMMENDED_LAW
+    assert d.alpha_estimate == lubricant.ALPHA_ESTIMATES[0]
+    case = load_case("zhang2016", **{"lubricant.file": str(p)})
+    assert case.lubricant.traction_law == traction.RECOMMENDED_LAW
+    ns = lubricant.notices(case.lubricant)
+    assert any("no [traction] table" in n and traction.RECOMMENDED_LAW in n for n in ns), ns
+    assert any("alpha" in n and "estimated" in n for n in ns), ns
+    assert all("\n" not in n for n in ns)
+    assert "recommended law" in lubricant.provenance(case.lubricant)
+    # the same law as a file that asks for it explicitly (with its default constants)
+    q = tmp_path / "explicit.toml"
+    q.write_text(DATA_SHEET_ONLY + 'pressure_viscosity_coefficient = "so_klaus_1980"\n[traction]\nmodel = "'
+                 + traction.RECOMMENDED_LAW + '"\n')
+    e = lubricant.load_lubricant(q)
+    assert e.eyring == d.eyring and not e.traction_recommended
+    rc, out, err = _cli(["check", "--set", f"lubricant.file={p}"], capsys)
+    assert rc == 0, err
+    assert "recommended law" in out

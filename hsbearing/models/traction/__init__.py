@@ -41,6 +41,11 @@ from hsbearing.models.traction import zhang2016  # noqa: E402
 #: The physical model (:mod:`hsbearing.models.traction.eyring`): a law of every oil, fed by the oil's own
 #: viscosity and alpha (its rheological constants: kernel parameters traction.tau0, Lambda, G).
 EYRING_LAW = "eyring"
+#: The traction law used for a lubricant file that gives only data-sheet values (no ``[traction]`` table): the
+#: law whose constants need no traction measurement of the oil (it is fed by the oil's own viscosity and alpha).
+#: The thermal-EHL work decides the final value (docs/traction.md); everything that applies the recommendation
+#: reads this one name (hsbearing.lubricant).
+RECOMMENDED_LAW = "eyring"
 #: The seed form mu = (A + B S) e^(-C S) + D with constant user coefficients (a lubricant file's
 #: ``traction.model = "coefficients"`` or a fitted ``"table"``; kernel parameters traction.c_A .. c_D).
 USER_LAW = "user"

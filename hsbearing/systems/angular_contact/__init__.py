@@ -150,6 +150,8 @@ def _plot_thermal(ds, path):
 
 def _register_outputs():
     import hsbearing.analysis.orbit  # noqa: F401 - the run summary variables
+    import hsbearing.systems.angular_contact.balances  # noqa: F401 - power_loss, power_loss_<source>, drive_torque
+    import hsbearing.systems.angular_contact.rating  # noqa: F401 - the quasi-static sources and the lives
     import hsbearing.systems.angular_contact.thermal  # noqa: F401 - the thermal network variables
 
 

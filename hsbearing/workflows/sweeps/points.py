@@ -25,12 +25,13 @@ from hsbearing.workflows.sweeps.plan import STATUS_OK
 # ----------------------------------------------------------------------------- one point (runs in the worker)
 
 
-def with_power_and_film(case: Case, ds: xr.Dataset) -> xr.Dataset:
+def with_power_and_film(case: Case, ds: xr.Dataset, *, power: dict | None = None) -> xr.Dataset:
     """A quasi-static Dataset with what a sweep compares added: the power loss by source and the drive torque at
     that state (:func:`hsbearing.systems.angular_contact.rating.quasi_static_power_loss`, scalars ``power_loss``,
     ``power_loss_<source>`` [W], ``drive_torque`` [N m]) and the minimum film and lambda per ball
     (:func:`hsbearing.systems.angular_contact.contact_state.quasi_static_contact_state`).  Where the case cannot
-    give one (a system without the dynamic model's cage data), the attribute ``power_loss_note`` says why."""
+    give one (a system without the dynamic model's cage data), the attribute ``power_loss_note`` says why.
+    ``power``: the case's ``quasi_static_power_loss`` when the caller already has it (not computed again)."""
     from hsbearing.results import VARIABLES
     from hsbearing.systems.angular_contact import contact_state
     from hsbearing.systems.angular_contact.rating import quasi_static_power_loss
@@ -45,7 +46,7 @@ def with_power_and_film(case: Case, ds: xr.Dataset) -> xr.Dataset:
     except (KeyError, ValueError, AttributeError) as exc:
         ds.attrs["film_note"] = f"minimum film not computed: {type(exc).__name__}: {exc}"
     try:
-        p = quasi_static_power_loss(case)
+        p = quasi_static_power_loss(case) if power is None else power
     except (CaseError, SolverError, KeyError, ValueError, AttributeError, ArithmeticError) as exc:
         ds.attrs["power_loss_note"] = f"power loss not computed at this state: {type(exc).__name__}: {exc}"
         return ds
@@ -78,7 +79,17 @@ def quasistatic_summary(ds: xr.Dataset) -> dict[str, Any]:
         if name in ds and ds[name].ndim == 0:
             out[name] = float(ds[name].values)
     out.update(contact_power_summary(ds))
+    for name in QS_OPTIONAL_SUMMARY:  # carried by a compare point (hsbearing.workflows.compare): life, drag band
+        if name in ds and ds[name].ndim == 0:
+            out[name] = float(ds[name].values)
     return out
+
+
+#: scalars a quasi-static point may carry besides its loads, power and film (``hsbearing compare`` adds them: the
+#: rating lives of ``rating.life`` and the total power loss at the two ends of the drag band), summarised when present
+QS_OPTIONAL_SUMMARY = ("drag_band_power_loss_low", "drag_band_power_loss_high", "viscosity_ratio",
+                       "life_modification_factor", "basic_rating_life", "modified_rating_life", "reference_rating_life",
+                       "modified_reference_rating_life")
 
 
 #: scalars of a thermal equilibrium (kind="thermal") kept in the sweep summary (names of hsbearing.systems.angular_contact.thermal)
