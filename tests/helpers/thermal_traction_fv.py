@@ -121,7 +121,7 @@ def _solid_block(xe, ze, u, k, kappa):
 
 
 def strip_reference(S, U, p0u, b_u, h, T_in, oil, prm, *, Ge, tau0_in, n_x=120, n_film=12, tol=1e-4,
-                    max_iter=600):
+                    max_iter=4000):
     """Reference mu of one strip and its fields (same arguments as thermal.strip_mu).  Returns (mu, fields)."""
     if S == 0.0:
         return 0.0, {}
@@ -200,6 +200,7 @@ def strip_reference(S, U, p0u, b_u, h, T_in, oil, prm, *, Ge, tau0_in, n_x=120, 
 
     Tf = np.full((n_x, nf), float(T_in))
     omega = 0.5
+    last = np.inf
     it = 0
     for it in range(1, max_iter + 1):
         tv, rate = _tau_v(Tf, p, gdot, eta_fn, tau0_fn)
@@ -219,8 +220,12 @@ def strip_reference(S, U, p0u, b_u, h, T_in, oil, prm, *, Ge, tau0_in, n_x=120, 
         T_new = T_in + sol[film0:].reshape(n_x, nf)
         dT = T_new - Tf
         Tf = Tf + omega * dT
-        if np.max(np.abs(dT)) < tol:
+        change = np.max(np.abs(dT))
+        if change < tol:
             break
+        if change > last:  # oscillating: relax harder
+            omega = max(0.5 * omega, 0.02)
+        last = change
     else:
         raise RuntimeError("reference fixed point did not converge")
     mu = math.copysign(float(np.sum(tau) / np.sum(p)), S)

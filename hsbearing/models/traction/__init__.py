@@ -47,7 +47,7 @@ EYRING_LAW = "eyring"
 PHYSICAL_LAW = "physical"
 #: The law recommended for an oil without a fitted traction law (a lubricant file without a [traction] table):
 #: decision and evidence in docs/traction.md, "Thermal physical model" (item "Which law for an oil without a fit").
-RECOMMENDED_LAW = "physical"
+RECOMMENDED_LAW = "eyring"
 #: The seed form mu = (A + B S) e^(-C S) + D with constant user coefficients (a lubricant file's
 #: ``traction.model = "coefficients"`` or a fitted ``"table"``; kernel parameters traction.c_A .. c_D).
 USER_LAW = "user"

@@ -63,7 +63,6 @@ from hsbearing.models.traction.eyring import (
     central_film,
     effective_shear_modulus,
     eyring_stress_default,
-    smooth_min,
 )
 
 __all__ = [
@@ -237,7 +236,7 @@ def _strip_grid(b_u, n_cells):
 
 
 def strip_mu(S, U, p0u, b_u, h, T_in, oil, prm: PhysicalParameters, *, Ge, tau0_in, n_cells=N_CELLS,
-             tol=1e-4, max_iter=400, return_fields=False):
+             tol=1e-4, max_iter=3000, return_fields=False):
     """Traction coefficient of one strip of the Hertz ellipse, thermal [-] (odd in S, even in U).
 
     S slide-roll ratio (U1 - U2)/U; U rolling speed [m/s]; p0u the strip's peak pressure [Pa]; b_u its half-width
@@ -286,15 +285,19 @@ def strip_mu(S, U, p0u, b_u, h, T_in, oil, prm: PhysicalParameters, *, Ge, tau0_
         M = (w1 * band_source_influence(edges, xc, u1, prm.k_solid, prm.kappa_solid)
              + w2 * band_source_influence(edges, xc, u2, prm.k_solid, prm.kappa_solid)) * 0.5
         # 0.5 (M1 w1 + M2 w2): the mean of the two surface temperatures (equal in Blok's limit)
-        omega = 0.5
-        for it in range(1, max_iter + 1):
+        omega, last = 0.5, np.inf
+        for it in range(1, max_iter + 1):  # noqa: B007 (the count is returned in the fields)
             tau = stress(T)
             q = tau * dU
             T_new = T_in + M @ q + film_mean_temperature_rise(tau, dU, h, K)
             dT = T_new - T
             T = T + omega * dT
-            if np.max(np.abs(dT)) < tol:
+            change = np.max(np.abs(dT))
+            if change < tol:
                 break
+            if change > last:  # oscillating (strong heating at cold oil): relax harder
+                omega = max(0.5 * omega, 0.02)
+            last = change
         else:
             raise RuntimeError(f"thermal traction fixed point did not converge ({max_iter} iterations, "
                                f"last change {np.max(np.abs(dT)):.3g} K)")
