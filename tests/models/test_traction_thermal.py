@@ -189,3 +189,24 @@ def test_traction_coefficient_bad_input_names_the_argument(args, key):
 def test_traction_coefficient_unknown_law():
     with pytest.raises(hsbearing.CaseError, match="law"):
         hsbearing.traction_coefficient("4109", 0.05, *ARGS, law="magic")
+
+
+def test_nahme_film_matches_a_finite_volume_film():
+    """The closed-form film (thermal.nahme_film) against the reference's finite-volume film (tests/helpers): a
+    Newtonian film with viscosity eta0 exp(-beta dT) between walls at one temperature; F = tau h / (eta0 dU) and
+    the mean rise phi_mean / beta, 1e-3 (the grid's error)."""
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "helpers"))
+    import thermal_traction_fv as fv
+
+    eta0, beta, K, h = 0.01, 0.03, 0.1, 1e-6
+    for dU in (5.0, 30.0, 80.0):
+        tau, dT = fv.couette_film(dU, h, K, lambda T: eta0 * np.exp(-beta * (T - 300.0)), n_film=400)
+        F, phi_max, phi_mean = th.nahme_film(beta * tau * dU * h / (8.0 * K))
+        assert float(F) == pytest.approx(tau * h / (eta0 * dU), rel=1e-3)
+        assert float(phi_max) / beta == pytest.approx(dT.max(), rel=1e-3)
+        assert float(phi_mean) / beta == pytest.approx(dT.mean(), rel=1e-3)
+    F, _, pm = th.nahme_film(np.array([1e-6]))
+    assert F[0] == pytest.approx(1.0 - 2e-6 / 3.0, rel=1e-9) and pm[0] == pytest.approx(2e-6 / 3.0, rel=1e-3)

@@ -17,8 +17,12 @@ Registered as the law ``"physical"`` of every oil (:mod:`hsbearing.models.tracti
    point of a strip is conducted into both moving surfaces; the surface temperature rise is Jaeger's moving
    band source on a half-space [3], [4] at any Peclet number (:func:`band_source_influence`, closed-form cell
    integrals of the kernel e^X K_0(|X|)); the heat is shared between the surfaces by Blok's partition [5]
-   (:func:`heat_partition`); the film's mean temperature lies tau dU h / (12 K) above the surfaces (uniform
-   heating, conduction across the film: :func:`film_mean_temperature_rise`).  Temperature and stress are solved
+   (:func:`heat_partition`); across the film, conduction with the heat where the fluid shears: the Eyring rate
+   rises exponentially with the temperature above the surfaces, so the exact thermal Couette solution of Nahme
+   [7] applies (:func:`nahme_film`: xi tanh xi = N, N = beta_f tau dU h / (8 K)) -- the film shears like one at
+   the surface temperature at 2 xi / sinh(2 xi) times the mean rate (the first version took the film at its mean
+   temperature, tau dU h / (12 K) above the surfaces, its small-N limit: it overestimated mu at cold oil with
+   strong heating by up to 1.6x against the reference, docs/traction.md).  Temperature and stress are solved
    together by a relaxed fixed point over the strip, so mu falls beyond its maximum at large slip.
    Compression heating is not included: it is reversible to first order (heat at the inlet, as much cooling at
    the outlet as the pressure falls) and does not depend on slip.
@@ -44,6 +48,9 @@ References
 [4] Archard J. F., Wear 2 (1959) 438-455 (flash temperatures: the high- and low-Peclet regimes).
 [5] Blok H., Proc. General Discussion on Lubrication, IMechE (1937) 222-235 (flash temperature; the heat
     divides so that both surfaces reach the same temperature).
+[7] Nahme R., Ing.-Arch. 11 (1940) 191-209 (thermal Couette flow with viscosity exponential in temperature; the
+    closed form e^phi = cosh^2 xi / cosh^2(2 xi y / h) is derived in :func:`nahme_film`'s docstring and checked in
+    tests/models/test_traction_thermal.py against a finite-difference film).
 [6] Johnson K. L., Greenwood J. A., Wear 61 (1980) 353-374 (thermal analysis of an Eyring fluid in EHL traction:
     conduction across the film to the surfaces, their flash temperatures) -- the structure followed here; its
     numbers could not be read through the search tools (docs/traction.md).
@@ -68,7 +75,8 @@ from hsbearing.models.traction.eyring import (
 __all__ = [
     "ROELANDS_ETA_R", "ROELANDS_P_R", "STEEL_CONDUCTIVITY", "STEEL_DIFFUSIVITY", "N_CELLS", "PhysicalParameters",
     "roelands_indices", "roelands_viscosity", "barus_viscosity", "eyring_stress_at", "local_stress",
-    "midfilm_temperature_rise", "film_mean_temperature_rise", "heat_partition", "band_source_influence",
+    "midfilm_temperature_rise", "film_mean_temperature_rise", "nahme_xi", "nahme_film", "heat_partition",
+    "band_source_influence",
     "strip_mu", "contact_mu",
 ]
 
@@ -235,6 +243,55 @@ def _strip_grid(b_u, n_cells):
     return edges, xc
 
 
+def nahme_xi(N):
+    """Root xi >= 0 of xi tanh(xi) = N [-] (Newton; vectorised): the cross-film solution of
+    :func:`nahme_film`.  Unique for every N >= 0 (xi tanh xi rises monotonically from 0)."""
+    N = np.maximum(np.asarray(N, dtype=float), 0.0)
+    xi = np.where(N < 1.0, np.sqrt(N), N + 0.0)  # xi ~ sqrt(N) for small N, ~ N for large N
+    for _ in range(60):
+        t = np.tanh(xi)
+        f = xi * t - N
+        df = t + xi * (1.0 - t * t)
+        step = np.where(df > 0.0, f / np.where(df > 0.0, df, 1.0), 0.0)
+        xi = np.maximum(xi - step, 0.5 * xi)
+        if np.all(np.abs(step) <= 1e-14 * (1.0 + xi)):
+            break
+    return xi
+
+
+def nahme_film(N):
+    """Thermal Couette film with a rate exponential in temperature (Nahme 1940 [7]): (F, phi_max, phi_mean).
+
+    A film of thickness h between two surfaces at one temperature, sheared at a uniform stress tau with a local rate
+    gdot(z) = gdot_s exp(beta_f theta(z)) (theta the rise above the surfaces, beta_f = d ln gdot / dT at fixed
+    stress, > 0: the viscosity falls with temperature) and heated by tau gdot(z), conducted to both surfaces: K theta'' = -tau gdot.  With phi = beta_f theta
+    the exact solution is e^phi = cosh^2(xi) / cosh^2(2 xi y / h) (the Bratu problem), xi tanh xi = N,
+    N = beta_f tau dU h / (8 K) (the isothermal mid-film rise times beta_f).  Returns F = gdot_s / (dU / h) =
+    2 xi / sinh(2 xi) (the film shears like one at the surface temperature at F times the mean rate),
+    phi_max = 2 ln cosh xi and the mean of phi over the film (8-point Gauss).  N -> 0: F = 1 - 2N/3, phi_mean = 2N/3
+    (the uniform-heating parabola).  Vectorised.
+    """
+    xi = nahme_xi(N)
+    with np.errstate(over="ignore", invalid="ignore"):
+        F = np.where(xi > 1e-8, 2.0 * xi / np.sinh(np.minimum(2.0 * xi, 700.0)), 1.0)
+    lc = xi + np.log1p(np.exp(-2.0 * xi)) - math.log(2.0)  # ln cosh xi without overflow
+    g, w = np.polynomial.legendre.leggauss(8)
+    y = 0.5 * (g + 1.0)  # 2 y / h in (0, 1) (symmetric film)
+    a = xi[..., None] * y if np.ndim(xi) else xi * y
+    lca = a + np.log1p(np.exp(-2.0 * a)) - math.log(2.0)
+    phi = 2.0 * (lc[..., None] if np.ndim(xi) else lc) - 2.0 * lca
+    mean = 0.5 * np.sum(w * phi, axis=-1)
+    return F, 2.0 * lc, mean
+
+
+def _log_rate(p, T, tau, eta_of, tau0_of):
+    """ln of the Eyring rate (tau0(T)/eta(p, T)) sinh(tau/tau0(T)) [ln 1/s] (no overflow)."""
+    t0 = tau0_of(T)
+    x = np.maximum(tau / t0, 1e-300)
+    lsinh = np.where(x > 20.0, x - math.log(2.0), np.log(np.sinh(np.minimum(x, 20.0))))
+    return np.log(t0) + lsinh - np.log(eta_of(p, T))
+
+
 def strip_mu(S, U, p0u, b_u, h, T_in, oil, prm: PhysicalParameters, *, Ge, tau0_in, n_cells=N_CELLS,
              tol=1e-4, max_iter=3000, return_fields=False):
     """Traction coefficient of one strip of the Hertz ellipse, thermal [-] (odd in S, even in U).
@@ -243,10 +300,13 @@ def strip_mu(S, U, p0u, b_u, h, T_in, oil, prm: PhysicalParameters, *, Ge, tau0_
     along the rolling direction [m]; h film thickness [m]; T_in inlet (and far-field surface) temperature [K];
     oil = dict(eta_in, alpha, beta_in, K); Ge effective film shear modulus [Pa]; tau0_in Eyring stress at T_in.
 
-    The strip is cut into ``n_cells`` cells (edges x = b_u sin theta, theta uniform); in each the film mean
-    temperature T = T_surface + tau dU h / (12 K), the surface temperatures from the heat of all cells
-    (:func:`band_source_influence`, Blok partition), the stress from :func:`local_stress` at T; solved by a
-    relaxed fixed point on the cell temperatures.  mu = sum tau dx / sum p dx.
+    The strip is cut into ``n_cells`` cells (edges x = b_u sin theta, theta uniform).  In each: the surface
+    temperature T_s from the heat tau dU of all cells (:func:`band_source_influence` of both surfaces, Blok's
+    partition :func:`heat_partition`, their mean); the film across its thickness by :func:`nahme_film` (the Eyring
+    rate's temperature sensitivity beta_f at T_s, the stress of the last iterate): the viscous flow stress is the
+    one at T_s and F dU / h; then the limiting shear at the film mean temperature and the Maxwell build-up
+    (:func:`local_stress`).  A relaxed fixed point on (T_s, tau).  mu = sum tau dx / sum p dx.
+    With ``thermal = False``: the local stress at T_in (no heat).
     """
     if S == 0.0 or U == 0.0 or p0u <= 0.0:
         return (0.0, {}) if return_fields else 0.0
@@ -263,36 +323,49 @@ def strip_mu(S, U, p0u, b_u, h, T_in, oil, prm: PhysicalParameters, *, Ge, tau0_
         if prm.z is not None:
             z = prm.z
 
-        def eta_of(T):
-            return roelands_viscosity(p, T, eta_in, T_in, z, S0)
+        def eta_of(pp, T):
+            return roelands_viscosity(pp, T, eta_in, T_in, z, S0)
     elif prm.pressure_viscosity == "barus":
-        def eta_of(T):
-            return barus_viscosity(p, T, eta_in, T_in, alpha, beta_in)
+        def eta_of(pp, T):
+            return barus_viscosity(pp, T, eta_in, T_in, alpha, beta_in)
     else:
         raise ValueError(f"unknown pressure_viscosity {prm.pressure_viscosity!r} (roelands, barus)")
 
-    def stress(T):
-        tauL = prm.limiting_shear(T) * p
-        tau0 = eyring_stress_at(tau0_in, T, T_in, prm.eyring_temperature)
-        return local_stress(p, eta_of(T), gdot, tau0, tauL, tel)
+    def tau0_of(T):
+        return eyring_stress_at(tau0_in, T, T_in, prm.eyring_temperature)
 
-    T = np.full(n_cells, float(T_in))
+    def stress(Ts, Tm, F):
+        return local_stress(p, eta_of(p, Ts), gdot * F, tau0_of(Ts), prm.limiting_shear(Tm) * p, tel)
+
+    Ts = np.full(n_cells, float(T_in))
+    one = np.ones(n_cells)
+    tau = stress(Ts, Ts, one)
+    Tm = Ts.copy()
     it = 0
     if prm.thermal:
         # surface speeds in the frame U > 0: u1 = U (1 + S/2), u2 = U (1 - S/2) (both the same direction for |S| < 2)
         u1, u2 = Ua * (1.0 + 0.5 * S), Ua * (1.0 - 0.5 * S)
         w1, w2 = heat_partition(u1, u2)
-        M = (w1 * band_source_influence(edges, xc, u1, prm.k_solid, prm.kappa_solid)
-             + w2 * band_source_influence(edges, xc, u2, prm.k_solid, prm.kappa_solid)) * 0.5
-        # 0.5 (M1 w1 + M2 w2): the mean of the two surface temperatures (equal in Blok's limit)
+        # mean of the two surface temperatures (equal in Blok's limit)
+        M = 0.5 * (w1 * band_source_influence(edges, xc, u1, prm.k_solid, prm.kappa_solid)
+                   + w2 * band_source_influence(edges, xc, u2, prm.k_solid, prm.kappa_solid))
         omega, last = 0.5, np.inf
         for it in range(1, max_iter + 1):  # noqa: B007 (the count is returned in the fields)
-            tau = stress(T)
             q = tau * dU
-            T_new = T_in + M @ q + film_mean_temperature_rise(tau, dU, h, K)
-            dT = T_new - T
-            T = T + omega * dT
-            change = np.max(np.abs(dT))
+            Ts_new = T_in + M @ q
+            # the Eyring rate's temperature sensitivity at T_s and the current stress (fixed stress)
+            tv = np.maximum(tau, 1e-30)
+            beta_f = _log_rate(p, Ts + 0.5, tv, eta_of, tau0_of) - _log_rate(p, Ts - 0.5, tv, eta_of, tau0_of)
+            beta_f = np.maximum(beta_f, 1e-9)
+            N = beta_f * tau * dU * h / (8.0 * K)
+            F, _, phi_mean = nahme_film(N)
+            Tm_new = Ts_new + phi_mean / beta_f
+            tau_new = stress(Ts_new, Tm_new, F)
+            change = max(np.max(np.abs(Ts_new - Ts)), np.max(np.abs(Tm_new - Tm)),
+                         np.max(np.abs(tau_new - tau) / np.maximum(p, 1.0)) * 1e3)
+            Ts = Ts + omega * (Ts_new - Ts)
+            Tm = Tm + omega * (Tm_new - Tm)
+            tau = tau + omega * (tau_new - tau)
             if change < tol:
                 break
             if change > last:  # oscillating (strong heating at cold oil): relax harder
@@ -300,11 +373,10 @@ def strip_mu(S, U, p0u, b_u, h, T_in, oil, prm: PhysicalParameters, *, Ge, tau0_
             last = change
         else:
             raise RuntimeError(f"thermal traction fixed point did not converge ({max_iter} iterations, "
-                               f"last change {np.max(np.abs(dT)):.3g} K)")
-    tau = stress(T)
+                               f"last change {change:.3g})")
     mu = math.copysign(float(np.sum(tau * dx) / np.sum(p * dx)), S)
     if return_fields:
-        return mu, dict(x=xc, p=p, tau=tau, T=T, iterations=it)
+        return mu, dict(x=xc, p=p, tau=tau, T=Tm, T_surface=Ts, iterations=it)
     return mu
 
 
