@@ -245,6 +245,15 @@ def _strip_grid(b_u, n_cells):
     return edges, xc
 
 
+def _film_nodes(n=8):
+    g, w = np.polynomial.legendre.leggauss(n)
+    return 0.5 * (g + 1.0), w
+
+
+#: Gauss-Legendre nodes 2y/h in (0, 1) and weights across half the film (nahme_film's mean)
+_FILM_NODES = _film_nodes()
+
+
 def nahme_xi(N):
     """Root xi >= 0 of xi tanh(xi) = N [-] (Newton; vectorised): the cross-film solution of
     :func:`nahme_film`.  Unique for every N >= 0 (xi tanh xi rises monotonically from 0)."""
@@ -277,8 +286,7 @@ def nahme_film(N):
     with np.errstate(over="ignore", invalid="ignore"):
         F = np.where(xi > 1e-8, 2.0 * xi / np.sinh(np.minimum(2.0 * xi, 700.0)), 1.0)
     lc = xi + np.log1p(np.exp(-2.0 * xi)) - math.log(2.0)  # ln cosh xi without overflow
-    g, w = np.polynomial.legendre.leggauss(8)
-    y = 0.5 * (g + 1.0)  # 2 y / h in (0, 1) (symmetric film)
+    y, w = _FILM_NODES  # 2 y / h in (0, 1) (symmetric film)
     a = xi[..., None] * y if np.ndim(xi) else xi * y
     lca = a + np.log1p(np.exp(-2.0 * a)) - math.log(2.0)
     phi = 2.0 * (lc[..., None] if np.ndim(xi) else lc) - 2.0 * lca
