@@ -8,6 +8,7 @@ Public API (the contracts of docs/design.md):
 - :func:`sweep` -- many runs over varied case keys -> one Dataset with a dim per key
 - :func:`open_run` -- read an archive back
 - :func:`dynamic_model` -- the model object (``y0``, ``rhs``, ``state_names``)
+- :func:`traction_coefficient` -- the traction coefficient of one contact for any traction law
 """
 
 from __future__ import annotations
