@@ -9,6 +9,7 @@ Public API (the contracts of docs/design.md):
 - :func:`open_run` -- read an archive back
 - :func:`dynamic_model` -- the model object (``y0``, ``rhs``, ``state_names``)
 - :func:`compare` -- lubricants at the same conditions -> Dataset over ``oil`` and a page (``hsbearing compare``)
+- :func:`traction_coefficient` -- the traction coefficient of one contact for any traction law
 """
 
 from __future__ import annotations
@@ -39,6 +40,7 @@ __all__ = [
     "thermal",
     "life",
     "compare",
+    "traction_coefficient",
 ]
 
 
@@ -221,3 +223,108 @@ def compare(case, oils, *, out_dir, vary=None, dynamics: bool = True, duration=N
 
     return _compare(as_case(case, overrides), oils, vary=vary, out_dir=out_dir, dynamics=dynamics, duration=duration,
                     stop=stop, jobs=jobs, scheduler=scheduler, progress=progress, figures=figures)
+
+
+#: oil density for a registered oil name given to :func:`traction_coefficient` [kg/m^3] (the case's default
+#: lubricant.density)
+TRACTION_DENSITY = 850.0
+
+
+def _oil_at(oil, T):
+    """(eta [Pa s], alpha [1/Pa], beta = -d ln eta/dT [1/K], K [W/(m K)], definition or None) of an oil at T [K]:
+    a registered oil name (Walther viscosity at TRACTION_DENSITY, Table 1 alpha and K) or a lubricant file."""
+    import numpy as np
+
+    from hsbearing.models import traction
+
+    if str(oil) in traction.OILS:
+        from hsbearing.models.viscosity import dynamic_viscosity
+
+        o = traction.OILS[str(oil)]
+
+        def eta(t):
+            return float(dynamic_viscosity(str(oil), t, law="walther", density=TRACTION_DENSITY))
+
+        return eta(T), o.alpha, -(np.log(eta(T + 0.5)) - np.log(eta(T - 0.5))), o.K, None
+    from hsbearing.lubricant import load_lubricant, resolve_lubricant, unresolved_message
+
+    path = resolve_lubricant(str(oil))
+    if path is None:
+        raise CaseError("traction_coefficient", "oil", unresolved_message(str(oil)))
+    d = load_lubricant(path)
+    v = d.at(T, TRACTION_DENSITY)
+    beta = -(np.log(d.dynamic_viscosity(T + 0.5, TRACTION_DENSITY)) - np.log(d.dynamic_viscosity(T - 0.5, TRACTION_DENSITY)))
+    K = v["K"] if v["K"] is not None else traction.OILS[d.traction_oil].K
+    return v["eta"], v["alpha"], beta, K, d
+
+
+def traction_coefficient(oil, S, load, rolling_speed, temperature, Rx, Ry, E_reduced, law="default"):
+    """Traction coefficient mu of one lubricated ball/race contact (docs/traction.md).
+
+    Parameters
+    ----------
+    oil : a registered oil ("4109", "4106", "4050"), a bundled lubricant name or a lubricant file path.
+    S : slide-roll ratio (U1 - U2)/U, a fraction, signed (float or array); mu has its sign.
+    load : normal contact load; rolling_speed : entrainment speed (U1 + U2)/2; temperature : oil inlet
+        temperature; Rx, Ry : effective radii in the rolling and transverse directions; E_reduced : reduced
+        modulus E' = 2/((1-nu1^2)/E1 + (1-nu2^2)/E2).  Each a unit string ("500 N", "130 degC"), a pint Quantity
+        or an SI float.
+    law : "default" (the oil's registered law: the Zhang et al. 2016 fit of 4109/4106/4050, or a lubricant
+        file's [traction] law), "eyring" (isothermal physical model), "physical" (thermal physical model,
+        hsbearing.models.traction.thermal), or a named law of a registered oil ("percent", "printed", ...).
+
+    Returns
+    -------
+    mu : float (or an array shaped like S) [-].  Bad input: CaseError naming the argument.
+
+    Examples
+    --------
+    >>> import hsbearing
+    >>> mu = hsbearing.traction_coefficient("4109", 0.05, "500 N", "16.3 m/s", "130 degC", "3.87 mm", "124 mm",
+    ...                                     "228.6 GPa")
+    >>> print(f"{mu:.4f}")
+    0.0090
+    """
+    import numpy as np
+
+    from hsbearing.case.load import override_literal
+    from hsbearing.models import hertz, traction
+    from hsbearing.units import parse_quantity
+
+    def q(v, kind, key):
+        return parse_quantity(override_literal(kind, v), kind, source="traction_coefficient", key=key)
+
+    W, U, T = q(load, "force", "load"), q(rolling_speed, "velocity", "rolling_speed"), q(temperature, "temperature",
+                                                                                           "temperature")
+    rx, ry, Ep = q(Rx, "length", "Rx"), q(Ry, "length", "Ry"), q(E_reduced, "pressure", "E_reduced")
+    for key, v in (("load", W), ("Rx", rx), ("Ry", ry), ("E_reduced", Ep), ("temperature", T)):
+        if not v > 0.0:
+            raise CaseError("traction_coefficient", key, f"must be > 0 (got {v:g} SI)")
+    try:
+        Sa = np.asarray(S, dtype=float)
+    except (TypeError, ValueError):
+        raise CaseError("traction_coefficient", "S", f"a slide-roll ratio is a number or an array, got {S!r}") from None
+    if not np.all(np.isfinite(Sa)):
+        raise CaseError("traction_coefficient", "S", "must be finite")
+    eta, alpha, beta, K, d = _oil_at(oil, T)
+    oil_name = str(oil) if d is None else d.traction_oil
+    if law == "default" and d is not None:  # the lubricant file's own law
+        law = {"zhang2016": d.traction_law, "eyring": traction.EYRING_LAW}.get(d.traction_model, traction.USER_LAW)
+    known = tuple(traction.KNOWN_LAWS[oil_name]) + ((traction.USER_LAW,) if d is not None and d.coefficients else ())
+    if law not in known:
+        raise CaseError("traction_coefficient", "law", f"unknown traction law {law!r} for this oil (known: "
+                                                       f"{', '.join(known)})")
+    if ry < rx:
+        raise CaseError("traction_coefficient", "Ry", f"must be >= Rx (a ball/race contact: the ellipse's major axis "
+                                                      f"lies across the rolling direction; got Ry = {ry:g} m < Rx = {rx:g} m)")
+    c = hertz.point_contact(rx, ry, W, Ep, 0.0, Ep, 0.0)  # nu = 0 and E1 = E2 = E': the reduced modulus is E'
+    a = float(c.a)
+    k = float(c.ellipticity)
+    eyring = d.eyring.at(T, alpha) if (d is not None and d.eyring is not None) else None
+    try:
+        mu = traction.contact_mu(oil_name, Sa, W, U, T, Ep, rx, ry, law, k=k, a=a, eta=eta, alpha=alpha,
+                                 eyring=eyring, coefficients=None if d is None else d.coefficients, beta=beta, K=K)
+    except ValueError as exc:
+        raise CaseError("traction_coefficient", "temperature" if "degC" in str(exc) else "law", str(exc)) from None
+    mu = np.asarray(mu, dtype=float)
+    return float(mu) if mu.ndim == 0 else mu

@@ -445,7 +445,7 @@ def loads_lubricant(text: str, source: str = "<lubricant>", *, default_name: str
     eyring_params = coefficients = table = conditions = None
     fit_dev = None
     if model == "zhang2016":
-        seed = [x for x in traction.KNOWN_LAWS[toil] if x != traction.EYRING_LAW]
+        seed = [x for x in traction.KNOWN_LAWS[toil] if traction.is_seed_law(x)]
         if not isinstance(law, str) or law not in seed:
             raise CaseError(src, "traction.law", f"unknown traction law {law!r} for oil {toil} (known: {', '.join(seed)}; "
                                                  "the physical model is traction.model = \"eyring\")")

@@ -57,6 +57,10 @@ def check_physical(case, source: str) -> None:
         elif law not in traction.KNOWN_LAWS[oil]:
             raise CaseError(source, "lubricant.traction_law",
                             f"unknown traction law {law!r} for oil {oil} (known: {', '.join(traction.KNOWN_LAWS[oil])})")
+        elif law == traction.PHYSICAL_LAW:
+            raise CaseError(source, "lubricant.traction_law", "law 'physical' (thermal) is evaluated at one contact by "
+                            "hsbearing.traction_coefficient; the dynamic and quasi-static models do not run it yet "
+                            "(use 'eyring', its isothermal form)")
         if case.system == "angular_contact" and case.lubricant.temperature <= 273.15 and traction.is_seed_law(law):
             raise CaseError(source, "lubricant.temperature",
                             "the Zhang et al. 2016 traction laws are fitted in degC and undefined at or below 0 degC")

@@ -41,10 +41,13 @@ from hsbearing.models.traction import zhang2016  # noqa: E402
 #: The physical model (:mod:`hsbearing.models.traction.eyring`): a law of every oil, fed by the oil's own
 #: viscosity and alpha (its rheological constants: kernel parameters traction.tau0, Lambda, G).
 EYRING_LAW = "eyring"
-#: The traction law used for a lubricant file that gives only data-sheet values (no ``[traction]`` table): the
-#: law whose constants need no traction measurement of the oil (it is fed by the oil's own viscosity and alpha).
-#: The thermal-EHL work decides the final value (docs/traction.md); everything that applies the recommendation
-#: reads this one name (hsbearing.lubricant).
+#: The thermal physical model (:mod:`hsbearing.models.traction.thermal`): Roelands viscosity, Eyring stress
+#: proportional to T, limiting shear, Maxwell build-up and shear heating of the film and both surfaces; a law of
+#: every oil, evaluated by :func:`contact_mu` / ``hsbearing.traction_coefficient`` (not compiled in the kernel).
+PHYSICAL_LAW = "physical"
+#: The law recommended for an oil without a fitted traction law (a lubricant file without a [traction] table):
+#: decision and evidence in docs/traction.md, "Thermal physical model" (item "Which law for an oil without a fit");
+#: everything that applies the recommendation reads this one name (hsbearing.lubricant).
 RECOMMENDED_LAW = "eyring"
 #: The seed form mu = (A + B S) e^(-C S) + D with constant user coefficients (a lubricant file's
 #: ``traction.model = "coefficients"`` or a fitted ``"table"``; kernel parameters traction.c_A .. c_D).
@@ -57,7 +60,8 @@ COEFFICIENTS_LAW_ID = -2
 #: law names accepted by :func:`get` for each oil ("default" resolves per oil); "user" is accepted only
 #: with a lubricant file that gives the coefficients (hsbearing.case checks)
 KNOWN_LAWS: dict[str, tuple[str, ...]] = {
-    oil: tuple(["default"] + [law for (o, law) in zhang2016.LAWS if o == oil] + [EYRING_LAW]) for oil in OILS
+    oil: tuple(["default"] + [law for (o, law) in zhang2016.LAWS if o == oil] + [EYRING_LAW, PHYSICAL_LAW])
+    for oil in OILS
 }
 
 
@@ -65,7 +69,7 @@ def _resolve(oil, law: str = "default") -> tuple[str, str]:
     oil = str(oil)
     if oil not in OILS:
         raise ValueError(f"unknown oil {oil!r} (known: {', '.join(OILS)})")
-    if law in (EYRING_LAW, USER_LAW):
+    if law in (EYRING_LAW, USER_LAW, PHYSICAL_LAW):
         return oil, law
     name = zhang2016.DEFAULT_LAW[oil] if law == "default" else law
     if (oil, name) not in zhang2016.LAWS:
@@ -77,6 +81,9 @@ def law_id(oil, law: str = "default") -> int:
     """Integer id of a law for the numba kernels ``_kernels.traction_coefficients_nb`` (seed laws: the row of
     zhang2016.PARAMS; :data:`EYRING_LAW_ID`, :data:`COEFFICIENTS_LAW_ID` for the two oil-independent laws)."""
     oil, name = _resolve(oil, law)
+    if name == PHYSICAL_LAW:
+        raise ValueError("law 'physical' is not compiled in the dynamics kernel: evaluate it with "
+                         "hsbearing.traction_coefficient / traction.contact_mu (the kernel runs 'eyring')")
     if name == EYRING_LAW:
         return EYRING_LAW_ID
     if name == USER_LAW:
@@ -85,8 +92,8 @@ def law_id(oil, law: str = "default") -> int:
 
 
 def is_seed_law(law: str) -> bool:
-    """True for the registered curve-fit laws of Zhang et al. 2016 (False: "eyring", "user")."""
-    return law not in (EYRING_LAW, USER_LAW)
+    """True for the registered curve-fit laws of Zhang et al. 2016 (False: "eyring", "physical", "user")."""
+    return law not in (EYRING_LAW, USER_LAW, PHYSICAL_LAW)
 
 
 def law_name(oil, law: str = "default") -> str:
@@ -149,7 +156,7 @@ def get(oil, law: str = "default"):
 
 
 def contact_mu(oil, S, Q, U, T, Ep, Rx, Ry=None, law: str = "default", *, k=None, a=None, eta=None,
-               alpha=None, eyring=None, coefficients=None):
+               alpha=None, eyring=None, coefficients=None, beta=None, K=None, physical=None, spin=0.0):
     """Traction coefficient of a ball/race contact from its physical quantities.
 
     Maps the contact onto the convention of the laws (E = E', R = Rx; see
@@ -166,9 +173,13 @@ def contact_mu(oil, S, Q, U, T, Ep, Rx, Ry=None, law: str = "default", *, k=None
     Rx, Ry : effective radii in the rolling / transverse directions [m];
         Ry is accepted for a uniform contact interface and not used by the
         Zhang et al. 2016 laws (their R is Rx).
-    law : as in :func:`get`, or "eyring" (the physical model) or "user" (constant coefficients)
-    k, a : ellipticity a/b [-] and semi-major axis [m] of the contact ("eyring" only)
-    eta, alpha : inlet viscosity [Pa s] and pressure-viscosity coefficient [1/Pa] ("eyring" only)
+    law : as in :func:`get`, or "eyring" (the isothermal physical model), "physical" (the thermal physical model)
+        or "user" (constant coefficients)
+    k, a : ellipticity a/b [-] and semi-major axis [m] of the contact ("eyring", "physical")
+    eta, alpha : inlet viscosity [Pa s] and pressure-viscosity coefficient [1/Pa] ("eyring", "physical")
+    beta, K : temperature-viscosity coefficient -d ln eta/dT [1/K] and thermal conductivity [W/(m K)] of the oil
+        at T ("physical"); physical : thermal.PhysicalParameters ("physical"; default: its defaults);
+        spin : change of the slide-roll ratio across the major axis, strip y = a u has S + spin u ("physical")
     eyring : (tau0 [Pa], Lambda [-], G [Pa]) at T ("eyring" only; default: eyring.EyringParameters().at(T, alpha))
     coefficients : (A, B, C, D) of the "user" law (S a fraction)
 
@@ -177,6 +188,13 @@ def contact_mu(oil, S, Q, U, T, Ep, Rx, Ry=None, law: str = "default", *, k=None
     mu [-] (sign of S)
     """
     oil, name = _resolve(oil, law)
+    if name == PHYSICAL_LAW:
+        from hsbearing.models.traction import thermal
+
+        if k is None or a is None or eta is None or alpha is None or beta is None or K is None:
+            raise ValueError("law 'physical' needs k, a, eta, alpha, beta and K of the contact")
+        return thermal.contact_mu(S, float(Q), float(U), float(Ep), float(Rx), float(k), float(a), float(T),
+                                  float(eta), float(alpha), float(beta), float(K), physical, spin=float(spin))
     if name == USER_LAW:
         if coefficients is None:
             raise ValueError("law 'user' needs its coefficients (A, B, C, D)")
