@@ -47,17 +47,109 @@ __all__ = [
 _moved.install()  # the old module paths, with a DeprecationWarning, for one release
 
 
-def simulate(case, duration=None, *, progress: bool = False, **kwargs):
-    """Run the dynamic model the case's system selects and return its Dataset.
+def _api(fn):
+    """Explicit keywords for a public function: an unknown keyword is a TypeError that names the function, the
+    closest keyword it has and, for a case key (``axial_load=...``), where case values go (``overrides=``)."""
+    import functools
+    import inspect
 
-    ``duration`` is seconds (float) or a unit string (``"0.2 s"``); None uses
-    ``[simulation] duration``.  Raises :class:`SolverError` (with
-    ``.partial``) on numerical failure.
+    sig = inspect.signature(fn)
+
+    @functools.wraps(fn)
+    def wrapper(*args, **kwargs):
+        try:
+            sig.bind(*args, **kwargs)
+        except TypeError as exc:
+            known = [n for n, q in sig.parameters.items() if q.kind is not q.VAR_KEYWORD]
+            unknown = [k for k in kwargs if k not in sig.parameters]
+            if not unknown:
+                raise TypeError(f"hsbearing.{fn.__name__}(): {exc}") from None
+            raise TypeError(_unknown_keyword_message(fn.__name__, unknown[0], known)) from None
+        return fn(*args, **kwargs)
+
+    return wrapper
+
+
+def _unknown_keyword_message(name: str, key: str, known: list[str]) -> str:
+    import difflib
+
+    msg = f"hsbearing.{name}() got an unknown keyword {key!r}"
+    close = difflib.get_close_matches(key, known, n=1)
+    if close:
+        msg += f"; did you mean {close[0]!r}?"
+    else:
+        try:  # a case key given as a keyword: say where it goes
+            from hsbearing.case.load import resolve_key
+
+            table, leaf = resolve_key(key)
+            msg += f"; {key!r} is a case value: overrides={{'{table}.{leaf}': ...}}"
+        except Exception:  # noqa: BLE001 - not a case key either: list the keywords
+            pass
+    return msg + f" (keywords: {', '.join(known)})"
+
+
+def _quantity(value, kind: str, name: str):
+    """A keyword quantity as an SI float: unit string, pint Quantity or SI float (None stays None)."""
+    if value is None:
+        return None
+    from hsbearing.case.load import override_literal
+    from hsbearing.units import parse_quantity
+
+    return parse_quantity(override_literal(kind, value), kind, source=name, key=name)
+
+
+@_api
+def simulate(case, duration=None, *, overrides=None, stop=None, section=None, rtol=None, atol=None,
+             thermal: bool = False, extend: bool = False, max_duration=None, progress: bool = False,
+             cvode_settings=None):
+    """Run the dynamic model the case's system selects and return its Dataset (``hsbearing run CASE``).
+
+    Parameters
+    ----------
+    case : Case, str or path
+        A :class:`Case`, a bundled case name or a case file path.
+    duration : str, pint.Quantity or float, optional
+        Simulated time: ``"0.2 s"``, ``Q_(200, "ms")`` or seconds; None = ``[simulation] duration``
+        (``--duration``).
+    overrides : dict, optional
+        Case values ``{"operating.axial_load": "2 kN", "oil": "4106", "inner_speed": 1466.1}``: unit strings,
+        pint Quantities or SI floats, as :func:`load_case` (``--set``).
+    stop : {"duration", "converged"}, optional
+        Stop rule (``--stop``); None = ``[simulation] stop``.
+    section : {"transverse", "cage_revolution", "plane"}, optional
+        Poincare section of the cage-motion label (``--section``); None = ``[simulation] section``.
+    rtol, atol : float, optional
+        CVODE tolerances; None = ``[simulation] rtol`` / ``atol``.
+    thermal : bool, default False
+        Solve the thermal network first (:func:`thermal`) and run at its lubricant temperature (``--thermal``;
+        angular-contact cases with ``lubricant.oil_flow_rate``).
+    extend : bool, default False
+        While the cage-motion label is undetermined, continue the run in steps up to ``max_duration``
+        (``--extend``; angular-contact cases).
+    max_duration : str, pint.Quantity or float, optional
+        Budget of ``extend`` (``--max-duration``); None = 3 x the run's duration.
+    progress : bool, default False
+        tqdm progress bar of the simulated time (the CLI's default unless ``-q``).
+    cvode_settings : dict, optional
+        CVODE optional inputs of the angular-contact model (``{}``: CVODE's own defaults; docs/dynamics.md).
+
+    Returns
+    -------
+    xarray.Dataset over ``time`` (and ``ball``); ``attrs["status"]`` is ``"ok"``.
+
+    Raises
+    ------
+    CaseError
+        Bad input (a case value, a quantity, a choice).
+    SolverError
+        Numerical failure, with ``.partial`` the Dataset up to the failure.
+    TypeError
+        An unknown keyword (a case value given as a keyword is named: it goes in ``overrides``).
 
     Examples
     --------
     >>> import hsbearing
-    >>> ds = hsbearing.simulate("zhang2016", duration="5 ms")  # doctest: +SKIP
+    >>> ds = hsbearing.simulate("zhang2016", duration="5 ms", overrides={"axial_load": "2 kN"})  # doctest: +SKIP
     >>> ds.attrs["status"]  # doctest: +SKIP
     'ok'
     >>> ds.cage_speed.attrs["units"]  # doctest: +SKIP
@@ -65,11 +157,82 @@ def simulate(case, duration=None, *, progress: bool = False, **kwargs):
     """
     from hsbearing import systems  # the registry: [case] system -> its package (hsbearing/systems/)
 
-    return systems.simulate(as_case(case), duration=duration, progress=progress, **kwargs)
+    sets = dict(overrides or {})
+    for key, value in (("simulation.stop", stop), ("simulation.section", section), ("simulation.rtol", rtol),
+                       ("simulation.atol", atol)):
+        if value is not None:
+            sets[key] = value
+    c = as_case(case, sets)
+    duration = _quantity(duration, "time", "duration")
+    if duration is not None and not duration > 0:
+        raise CaseError("duration", "duration", f"must be positive, got {duration!r}")
+    budget = _quantity(max_duration, "time", "max_duration")
+    if budget is not None and not extend:
+        raise CaseError("max_duration", "max_duration", "only with extend=True")
+    if thermal or extend:
+        from hsbearing.systems.angular_contact.rating import require_angular_contact
+
+        require_angular_contact(c, "thermal= and extend= are options of the angular-contact model",
+                                source="simulate", key="thermal" if thermal else "extend")
+    if thermal:
+        c = _thermal_start(c)
+    kw = {} if cvode_settings is None else {"cvode_settings": cvode_settings}
+    ds = systems.simulate(c, duration=duration, progress=progress, **kw)
+    if extend:
+        from hsbearing.systems.angular_contact.extend import DEFAULT_BUDGET_FACTOR, extend_until_determined
+
+        d = duration if duration is not None else float(c.simulation.duration)
+        if budget is None:
+            budget = DEFAULT_BUDGET_FACTOR * d
+        elif not budget >= d:
+            raise CaseError("max_duration", "max_duration", f"must be at least the run's duration {d:g} s")
+        ds = extend_until_determined(ds, budget, progress=progress)
+    return ds
 
 
-def quasi_static(case, **kwargs):
-    """High-speed quasi-static equilibrium of the case (Jones-Harris) as a Dataset over ``ball``.
+def _thermal_start(case):
+    """The case at the lubricant temperature of its thermal equilibrium (``hsbearing run --thermal``)."""
+    from hsbearing.systems.angular_contact.thermal import check_inputs, thermal_equilibrium
+
+    check_inputs(case)
+    th = thermal_equilibrium(case)
+    if th.attrs["status"] != "ok":
+        raise CaseError(case.source, "lubricant.oil_flow_rate", th.attrs.get("error") or
+                        f"the thermal fixed point did not converge in {int(th.fixed_point_iterations)} iterations "
+                        "(thermal.max_iterations, thermal.tolerance)")
+    return case.with_overrides(**{"lubricant.temperature": f"{float(th.lubricant_temperature)!r} K"})
+
+
+@_api
+def quasi_static(case, *, overrides=None, inner_speed=None, centrifugal: bool = True, gyroscopic: bool = True,
+                 initial=None):
+    """High-speed quasi-static equilibrium of the case (Jones-Harris) as a Dataset over ``ball``
+    (``hsbearing quasistatic CASE``).
+
+    Parameters
+    ----------
+    case : Case, str or path
+        A :class:`Case`, a bundled case name or a case file path.
+    overrides : dict, optional
+        Case values ``{"axial_load": "2 kN", "oil": "4106"}``: unit strings, pint Quantities or SI floats
+        (``--set``).
+    inner_speed : str, pint.Quantity or float, optional
+        Inner-ring speed: ``"10000 rpm"``, a Quantity or rad/s; None = ``operating.inner_speed``.
+    centrifugal, gyroscopic : bool, default True
+        The ball inertia effects (both False: the static solution).
+    initial : xarray.Dataset, optional
+        A previous solution to start the Newton iteration from (speed continuation).
+
+    Returns
+    -------
+    xarray.Dataset over ``ball``: contact loads, angles, speeds, film, pressure; ``attrs["warnings"]``.
+
+    Raises
+    ------
+    CaseError
+        Bad input.  SolverError: the Newton iteration did not converge (``.partial``).
+    TypeError
+        An unknown keyword.
 
     Examples
     --------
@@ -82,11 +245,60 @@ def quasi_static(case, **kwargs):
     """
     from hsbearing.systems.angular_contact import quasistatic
 
-    return quasistatic.solve_case(as_case(case), **kwargs)
+    return quasistatic.solve_case(as_case(case, overrides), inner_speed=_quantity(inner_speed, "angular_speed",
+                                                                                   "inner_speed"),
+                                  centrifugal=centrifugal, gyroscopic=gyroscopic, initial=initial)
 
 
-def sweep(case, vary, **kwargs):
-    """Cartesian (or zipped) sweep over case keys; see :func:`hsbearing.workflows.sweeps.run_sweep`.
+@_api
+def sweep(case, vary, *, out_dir, kind: str = "run", overrides=None, zip: bool = False,  # noqa: A002 - the CLI's --zip
+          duration=None, stop=None, jobs: int | None = None, scheduler: str | None = None, keep: str = "answer",
+          retry_failed: bool = False, progress: bool = True, point_fn=None):
+    """Runs over varied case keys, one Dataset with a dim per key (``hsbearing sweep CASE --vary ...``); see
+    :func:`hsbearing.workflows.sweeps.run_sweep`.
+
+    Parameters
+    ----------
+    case : Case, str or path
+        A :class:`Case`, a bundled case name or a case file path.
+    vary : dict
+        ``{key: values}``: ``{"axial_load": ["500 N", "1 kN"], "oil": "4109,4106"}`` (``--vary``); values a list
+        of unit strings, pint Quantities, SI floats or names, or one CLI string ``"100,500,1000N"``.
+    out_dir : str or path
+        Directory of the point archives and ``sweep.nc`` (``-o``); a rerun resumes from it.
+    kind : {"run", "quasistatic", "thermal"}, default "run"
+        What each point computes (``--kind``).
+    overrides : dict, optional
+        Case values held fixed over the sweep (``--set``).
+    zip : bool, default False
+        Vary the keys together (equal-length lists, one dim ``point``) instead of the product (``--zip``).
+    duration : str, pint.Quantity or float, optional
+        Simulated time of each run (kind "run"; ``--duration``); None = the case's.
+    stop : {"duration", "converged"}, optional
+        Stop rule of each run (``--stop``); None = ``[simulation] stop``.
+    jobs : int, optional
+        Local worker processes (``-j``; default the number of cores, 1 = in this process).
+    scheduler : str, optional
+        ``"tcp://host:port"`` of a dask.distributed scheduler (``--scheduler``; ``jobs`` is then ignored).
+    keep : {"answer", "full"}, default "answer"
+        What each point archive keeps (``--keep``).
+    retry_failed : bool, default False
+        Recompute points whose archive records a status other than ok.
+    progress : bool, default True
+        tqdm progress bar on stderr.
+    point_fn : callable, optional
+        ``f(case, duration) -> Dataset`` replacing the computation (module level, picklable; part of the hash).
+
+    Returns
+    -------
+    xarray.Dataset, also written to ``out_dir/sweep.nc``.
+
+    Raises
+    ------
+    CaseError
+        Bad input (a key, a value, the output directory).  SolverError: every point failed.
+    TypeError
+        An unknown keyword.
 
     Examples
     --------
@@ -96,7 +308,13 @@ def sweep(case, vary, **kwargs):
     """
     from hsbearing.workflows import sweeps
 
-    return sweeps.run_sweep(case, vary, **kwargs)
+    if overrides or stop is not None:
+        case = as_case(case, overrides)
+        if stop is not None and stop != case.simulation.stop:  # as the CLI: the same archives (hashes) as without
+            case = case.with_overrides(**{"simulation.stop": stop})
+    return sweeps.run_sweep(case, vary, zip=zip, jobs=jobs, scheduler=scheduler, out_dir=out_dir, kind=kind,
+                            duration=_quantity(duration, "time", "duration"), progress=progress, point_fn=point_fn,
+                            retry_failed=retry_failed, keep=keep)
 
 
 def dynamic_model(case):

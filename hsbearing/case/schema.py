@@ -198,6 +198,13 @@ SCHEMA: dict[str, dict[str, Field]] = {
                              "correlation (docs/thermal.md)", positive=True),
         "tolerance": _f("number", "fixed-point tolerance on the lubricant temperature [K]", default=0.01, positive=True),
         "max_iterations": _f("int", "most fixed-point iterations (power <-> temperatures)", default=30, positive=True),
+        "power_source": _f("choice", "the power loss the network is heated by: quasistatic (default: the kernel's sources "
+                           "at the quasi-static state, race-control ball spin) or dynamic (means of a dynamic run of "
+                           "thermal.dynamic_duration at each fixed-point iteration: the free ball's spin and the cage "
+                           "whirl; docs/power_loss.md)", default="quasistatic", choices=("quasistatic", "dynamic")),
+        "dynamic_duration": _f("time", "simulated time of each dynamic run of power_source = dynamic; its power is the "
+                               "mean over the second half (default 0.1 s: the ball spin settles in ~10 ms, the cage "
+                               "whirl of zhang2016 by ~40 ms)", default="0.1 s", positive=True),
     },
     "simulation": {
         "duration": _f("time", "simulated time", default="0.05 s", positive=True),

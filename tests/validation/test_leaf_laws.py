@@ -292,3 +292,116 @@ def test_traction_coefficient_is_eq1_of_its_coefficients_at_the_run_contacts():
                 assert mu == pytest.approx(eq1, rel=1e-12, abs=1e-15)
                 assert float(traction_coefficient(A, B, C, D, -S)) == -mu
                 assert abs(mu) < 0.2
+
+
+# ----------------------------------------------------------------------------- guide-land force at the run states
+def test_guide_land_force_against_a_reynolds_grid_at_the_run_states():
+    """cage.guide_land_forces (closed-form short-width film, Guembel p >= 0) against the short-width Reynolds equation
+    solved on an 8001-node grid from the two-circle geometry (tests/helpers/_reynolds.py: h, dh/dt and dh/dTheta by
+    differences of the inertial positions, the pressure clipped at 0 and integrated numerically) at the (eps,
+    eps', cage + land speed, whirl) of every state of the two runs, each with all 8 sign combinations of the three
+    velocities: within 1e-3 of the force magnitude (measured <= 1.3e-6 over 600 films).  The most eccentric run state
+    also against the finite-width grid (2-D Reynolds, PSOR): within the 2 % short-width bound of the README."""
+    from _reynolds import finite_bearing_forces, short_bearing_forces
+
+    from hsbearing.models.ball_bearing.cage import guide_land_forces
+
+    S, P = land_states()
+    eta, R, L, c = P["eta_film"], P["R_land"], P["L_land"], P["c_land"]
+    w_land = P["omega_o"]  # outer-ring guided: the land turns with the outer ring
+    worst, n = 0.0, 0
+    moving = S[S[:, 1] > 1e-3]  # the grid's film direction needs an offset: the centred start states are left out
+    assert len(moving) >= len(S) - 4
+    for _, eps, w_rel, whirl, epsd in moving:
+        w_sum = w_rel + 2.0 * w_land  # cage speed + land speed
+        for sw in (1.0, -1.0):
+            for sp in (1.0, -1.0):
+                for se in (1.0, -1.0):
+                    args = (eps, se * epsd, sw * w_sum, sp * whirl, eta, R, L, c)
+                    Fr, Ft = guide_land_forces(*args)
+                    nr, nt = short_bearing_forces(*args)
+                    ref = math.hypot(nr, nt)
+                    scale = eta * R * L**3 / c**2 * abs(w_sum) * eps
+                    if ref < 1e-6 * scale:
+                        assert math.hypot(Fr, Ft) < 1e-5 * scale
+                        continue
+                    worst = max(worst, math.hypot(Fr - nr, Ft - nt) / ref)
+                    n += 1
+    print(f"{n} land films at {len(moving)} run states x 8 signs, worst {worst:.1e}")
+    assert n >= 8 * len(moving) - 8 and worst < 1e-3, (n, worst)
+    for i in np.argsort(S[:, 1])[-1:]:
+        _, eps, w_rel, whirl, epsd = S[i]
+        args = (eps, epsd, w_rel + 2.0 * w_land, whirl, eta, R)
+        Fr, Ft = guide_land_forces(*args, L, c)
+        fr, ft, _ = finite_bearing_forces(*args, L, c, nt=720, nz=41)
+        assert math.hypot(Fr - fr, Ft - ft) / math.hypot(fr, ft) < 0.02, (S[i], (Fr, Ft), (fr, ft))
+
+
+# ----------------------------------------------------------------------------- pocket station film at the run states
+def station_arguments():
+    """(a, U_e, F0, x_lo, x_hi) of every station of every pocket at every other state of the two runs, as the independent
+    assembly (tests/helpers/reference_assembly.py: the pocket frame, the ball's offset and motion relative to it,
+    the station geometry, written there) passes them to pocket.station_film; with R_b and eta."""
+    import reference_assembly as ra
+
+    data = np.load(STATES)
+    rows = []
+    real = ra.station_film
+
+    def record(a, Ue, F0, lo, hi, Rb, eta):
+        rows.append((a, Ue, F0, lo, hi, Rb, eta))
+        return real(a, Ue, F0, lo, hi, Rb, eta)
+
+    ra.station_film = record
+    try:
+        for key in RUNS:
+            _, m, _ = _model(key)
+            prm = ra.params_of(m)
+            for y in data[key][::2]:  # every other state (the assembly is plain Python: ~0.1 s a state)
+                bodies = ra.unpack(np.asarray(y, dtype=float), prm)
+                for j in range(bodies.Z):
+                    ra.pocket_contact(prm, j, bodies.balls[j], bodies.cage)
+    finally:
+        ra.station_film = real
+    return np.array(rows)
+
+
+def test_pocket_station_film_against_a_reynolds_grid_at_the_run_states():
+    """pocket.station_film (closed form of the 1-D rigid-isoviscous line contact with the Reynolds exit condition, on
+    its tabulated rupture start) against a finite-volume grid of the same Reynolds equation solved as a linear
+    complementarity problem (tests/helpers/line_contact_lcp.py: p >= 0, 8001 nodes, primal-dual active set), at
+    stations sampled from the run states (every 40th of the ~6900 recorded at every other state, plus every station in the package's
+    short-interval branch, plus the 20 of largest |F0| a / (eta |U_e| L)), each with all four sign combinations of the
+    entraining speed U_e and of the source F0 (wedge + squeeze): W = int p dx within 1e-4 of |W| + 1e-6 of the
+    largest W, W_x = int p x dx within 1e-4 of |W| L + |W_x| (measured: <= 2e-6)."""
+    from line_contact_lcp import line_contact_lcp
+
+    from hsbearing.models.ball_bearing.pocket import _SHORT, station_film
+
+    rows = station_arguments()
+    assert len(rows) > 6000
+    a, U, F0, lo, hi, Rb = (rows[:, k] for k in range(6))
+    L = np.sqrt(2.0 * Rb * a)
+    A = 6.0 * rows[:, 6] * U
+    with np.errstate(divide="ignore", invalid="ignore"):
+        xs = -(F0 * L / a) / (2.0 * A) - lo / L  # the short-interval test of pocket._station_dimless, A > 0 side
+        short = (A > 0) & (xs > 0) & (xs * xs <= _SHORT**2 * (1.0 + (lo / L) ** 2)) & ((hi - lo) / L >= 2.0 * xs)
+        ratio = np.abs(F0) * a / (rows[:, 6] * np.abs(U) * L)
+    pick = set(range(0, len(rows), 40)) | set(np.nonzero(short)[0][:40]) | set(np.argsort(np.nan_to_num(ratio))[-20:])
+    Wmax = max(abs(station_film(*rows[i])[0]) for i in pick)
+    worst_w = worst_x = 0.0
+    n = 0
+    for i in sorted(pick):
+        ai, Ui, Fi, loi, hii, Rbi, etai = rows[i]
+        for su, sf in ((1, 1), (-1, 1), (1, -1), (-1, -1)):
+            W, Wx, _x1, _x2 = station_film(ai, su * Ui, sf * Fi, loi, hii, Rbi, etai)
+            Wr, Wxr, _rng, _it = line_contact_lcp(ai, su * Ui, sf * Fi, loi, hii, Rbi, etai)
+            ew = abs(W - Wr) / (abs(Wr) + 1e-2 * Wmax)
+            ex = abs(Wx - Wxr) / (abs(Wr) * L[i] + abs(Wxr) + 1e-2 * Wmax * L[i])
+            assert abs(W - Wr) <= 1e-4 * abs(Wr) + 1e-6 * Wmax, (rows[i], su, sf, W, Wr)
+            assert abs(Wx - Wxr) <= 1e-4 * (abs(Wr) * L[i] + abs(Wxr)) + 1e-6 * Wmax * L[i], (rows[i], su, sf, Wx, Wxr)
+            worst_w, worst_x = max(worst_w, ew), max(worst_x, ex)
+            n += 1
+    print(f"{n} station films, {int(short.sum())} of the recorded stations in the short-interval branch; worst "
+          f"W {worst_w:.1e}, W_x {worst_x:.1e}")
+    assert n >= 4 * 170

@@ -72,6 +72,10 @@ MUTATIONS = {
         K + "pocket.py", "A = 6.0 * eta * U_e", "A = 12.0 * eta * U_e",
         "pocket station film: Reynolds wedge term 6 eta U -> 12 eta U", (POCKET + "test_station_martin_rigid_cylinder",
                                                                        POCKET + "test_station_closed_form_against_quadrature")),
+    "pocket_station_source_rupture": (
+        K + "pocket.py", "        gamma = -(A * H2 + beta * x2)\n", "        gamma = -(A * H2 + beta)\n",
+        "pocket station film (station_film): Reynolds exit constant with a source, -(A H2 + beta xi2) -> -(A H2 + beta)",
+        (LEAF + "::test_pocket_station_film_against_a_reynolds_grid_at_the_run_states", "tests/models/test_pocket.py")),
     "pocket_boundary_regularisation": (
         K + "pocket.py", "v_slide / math.sqrt(v_slide * v_slide + v0 * v0)", "v_slide / math.sqrt(v_slide * v_slide + v0)",
         "pocket boundary friction: regularisation sqrt(v^2 + v0^2) -> sqrt(v^2 + v0)", (LEAF,)),

@@ -98,7 +98,9 @@ def friction_command(case, args) -> int:
               "used for angular-contact bearings (the traction law of the oil is)")
     if not np.all(np.isfinite(ds.qs_friction_torque.values)):
         print("note: M = P / omega is not defined at 0 r/min (no rotation, no power): n/a")
-    print("the dynamic run (hsbearing run) adds the pocket and whirling-cage losses: power_loss_<source> in its archive")
+    print("the dynamic run (hsbearing run) lets the balls find their own spin axes (not race control) and the cage whirl: "
+          "more race traction and guide-land loss (zhang2016: 58.1 W against 45.8 W of the same sources; 'Quasi-static, "
+          "dynamic and SKF' in docs/power_loss.md); power_loss_<source> in its archive")
     if ds.attrs.get("warnings", "none") != "none":
         for x in str(ds.attrs["warnings"]).split(" | "):
             print(f"warning: {x}")

@@ -26,7 +26,7 @@ from hsbearing import results
 from hsbearing.models.ball_bearing import kernel_io as K
 from hsbearing.models.ball_bearing.kernel_io import GUIDE_OUTER_RING
 
-__all__ = ["SOURCES", "mechanical_energy", "power_variables", "power_summary_lines", "energy_rate", "angular_momentum_x",
+__all__ = ["SOURCES", "STATE_GROUPS", "power_by_source", "power_difference_by_state", "mechanical_energy", "power_variables", "power_summary_lines", "energy_rate", "angular_momentum_x",
            "angular_momentum_rate_x", "external_torque_x", "balance_terms"]
 
 #: source -> (description, per-ball aux columns summed for it, global gaux column or None)
@@ -233,4 +233,59 @@ def balance_terms(model, y) -> dict:
     out["torques"] = tq
     out["dL_dt"] = angular_momentum_rate_x(model, y)
     out["torque_residual"] = out["dL_dt"] - sum(tq.values())
+    return out
+
+
+# ----------------------------------------------------------------------------- quasi-static vs dynamic, by state
+#: groups of state components, in the order :func:`power_difference_by_state` puts them back to the quasi-static
+#: state; the cage angle phi_c (the rotation reference of the balls' azimuths) is never replaced
+STATE_GROUPS = (
+    ("ball_orbital_speed", ("thetadot_b",), (), ()),
+    ("ball_angular_velocity", ("omega_x", "omega_y", "omega_z"), (), ()),
+    # the cage's whirl carries the pockets, so the balls' places in them go back with it (one without the other
+    # would push a ball through its pocket wall)
+    ("cage_and_ball_positions", ("x_b", "u_b", "theta_rel_b", "xdot_b", "udot_b"),
+     ("x_c", "y_c", "z_c", "tilt_y_c", "tilt_z_c", "xdot_c", "ydot_c", "zdot_c", "phidot_c", "tiltdot_y_c",
+      "tiltdot_z_c"), ()),
+    ("inner_ring", (), (), ("x_i", "y_i", "z_i", "tilt_y_i", "tilt_z_i", "xdot_i", "ydot_i", "zdot_i", "tiltdot_y_i",
+                            "tiltdot_z_i")),
+)
+
+
+def power_by_source(model, y) -> dict:
+    """Power dissipated by each source of :data:`SOURCES` and the total [W] at one state ``y`` of ``model``."""
+    aux, gaux = model.outputs(y)
+    pv = power_variables(aux[None], gaux[None], outer_guided=model.P["land"]["guide"][0] == GUIDE_OUTER_RING)
+    out = {s: float(pv[f"power_loss_{s}"][0]) for s in SOURCES}
+    out["power_loss"] = float(pv["power_loss"][0])
+    return out
+
+
+def power_difference_by_state(model, y_dynamic, y_quasistatic=None) -> list[tuple[str, dict]]:
+    """The dynamic-minus-quasi-static power loss by source, attributed to the parts of the state that differ.
+
+    The quasi-static power loss (:func:`hsbearing.systems.angular_contact.rating.quasi_static_power_loss`) is the
+    kernel's dissipation at the quasi-static state ``y_quasistatic`` (default ``model.y0``); a dynamic run's is the
+    same kernel's at its states.  Starting from ``y_dynamic``, the groups of :data:`STATE_GROUPS` are put back to
+    their quasi-static values one after the other; the change of each source at each step is that group's share
+    (an ordered, exactly telescoping attribution: the steps sum to P(y_dynamic) - P(y_quasistatic), up to the cage
+    angle, which is kept).  Returns ``[(group, {source: W})]``, first ``("dynamic", P(y_dynamic))`` and last
+    ``("quasistatic", P(y at the end))``; the shares in between are P(before) - P(after) (docs/power_loss.md).
+    """
+    y0 = np.asarray(model.y0 if y_quasistatic is None else y_quasistatic, dtype=float)
+    y = np.array(y_dynamic, dtype=float)
+    L = model.layout
+    prev = power_by_source(model, y)
+    out = [("dynamic", prev)]
+    for name, ball, cage, ring in STATE_GROUPS:
+        for n in ball:
+            y[L.ball(n)] = y0[L.ball(n)]
+        for n in cage:
+            y[L.cage(n)] = y0[L.cage(n)]
+        for n in ring:
+            y[L.ring(n)] = y0[L.ring(n)]
+        now = power_by_source(model, y)
+        out.append((name, {k: prev[k] - now[k] for k in prev}))
+        prev = now
+    out.append(("quasistatic", prev))
     return out

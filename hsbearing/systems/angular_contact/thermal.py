@@ -226,8 +226,24 @@ def _viscosity(case, T):
     return float(dynamic_viscosity(lub.oil, T, law=lub.viscosity_law, density=lub.density, T_ref=ehl.REFERENCE_TEMPERATURE))
 
 
+#: what each ``thermal.power_source`` heats the network with (printed and kept in the archive's attrs)
+POWER_SOURCE_NOTE = {
+    "quasistatic": ("the dynamic kernel's sources at the quasi-static state (race-control ball spin, centred cage); "
+                    "excludes the jet-oil acceleration and the cage windage of hsbearing friction; a dynamic run of "
+                    "zhang2016 loses ~27 % more (free ball spin, cage whirl): docs/power_loss.md"),
+    "dynamic": ("the means over the second half of a dynamic run of {duration:g} s (thermal.dynamic_duration) at each "
+                "fixed-point iteration: the free ball's spin and the cage whirl; excludes the jet-oil acceleration and "
+                "the cage windage"),
+}
+
+
 def heat_by_body(case) -> tuple[dict, dict, object]:
-    """Quasi-static power loss by source and contact [W] and the heat each node receives [W].
+    """Power loss by source and contact [W] and the heat each node receives [W], from the source that
+    ``thermal.power_source`` chooses (docs/power_loss.md, "Quasi-static, dynamic and SKF: what each includes").
+
+    ``quasistatic`` (default): the dynamic kernel's dissipation at the quasi-static state.  ``dynamic``: a dynamic run
+    of ``thermal.dynamic_duration`` from that state; each source is its mean over the second half of the run, and
+    the race sources are split inner/outer in the ratio of the run's final state.
 
     Split (docs/thermal.md): a race contact's traction, EHL rolling and damping losses half to the ring, half
     to the ball; the pocket losses half to the ball, half to the cage; the guide-land loss half to the cage,
@@ -240,6 +256,8 @@ def heat_by_body(case) -> tuple[dict, dict, object]:
 
     m = build_model(case)
     aux, gaux = m.outputs(m.y0)
+    if case.thermal.power_source == "dynamic":
+        aux, gaux = _dynamic_outputs(case, m)
     col = {n: float(np.sum(aux[:, AUX_INDEX[n]])) for n in ("P_trac_i", "P_trac_o", "P_ehl_i", "P_ehl_o", "P_damp_i",
                                                             "P_damp_o", "P_pocket_film", "P_pocket_boundary", "P_drag")}
     land = float(gaux[GAUX_INDEX["P_guide_land"]])
@@ -260,6 +278,37 @@ def heat_by_body(case) -> tuple[dict, dict, object]:
     heat[guide] += 0.5 * land
     heat["oil"] += col["P_drag"]
     return src, heat, m.info["quasistatic"]
+
+
+def _dynamic_outputs(case, m):
+    """Kernel power columns standing for a dynamic run of ``thermal.dynamic_duration`` (``power_source = dynamic``):
+    aux (Z, N_AUX) and gaux (N_GAUX,) at the run's final state, each source's columns rescaled so that their sum over
+    the balls is the source's mean over the second half of the run (the inner/outer split of the race sources is the
+    final state's)."""
+    from hsbearing.models.ball_bearing.kernel import AUX_INDEX, GAUX_INDEX
+    from hsbearing.systems.angular_contact.balances import SOURCES
+    from hsbearing.systems.angular_contact.dynamics import simulate
+
+    ds = simulate(case, duration=float(case.thermal.dynamic_duration), model=m, annotate=False)
+    t = ds["time"].values
+    late = ds.isel(time=slice(int(np.searchsorted(t, 0.5 * t[-1])), None))
+    aux, gaux = m.outputs(ds.final_state.values)
+    aux, gaux = aux.copy(), gaux.copy()
+    for s, (_d, cols, g) in SOURCES.items():
+        mean = float(late[f"power_loss_{s}"].mean())
+        now = sum(float(np.sum(aux[:, AUX_INDEX[c]])) for c in cols) + (float(gaux[GAUX_INDEX[g]]) if g else 0.0)
+        if now != 0.0:
+            f = mean / now
+            for c in cols:
+                aux[:, AUX_INDEX[c]] *= f
+            if g:
+                gaux[GAUX_INDEX[g]] *= f
+        elif mean != 0.0:  # the final state dissipates nothing there: the mean goes to the first column, evenly
+            if cols:
+                aux[:, AUX_INDEX[cols[0]]] = mean / aux.shape[0]
+            else:
+                gaux[GAUX_INDEX[g]] = mean
+    return aux, gaux
 
 
 def _geometry(case):
@@ -487,6 +536,9 @@ def thermal_equilibrium(case, *, progress=None, T_start=None, x0_nodes=None):
         heat_split=("race contact -> 1/2 ring + 1/2 balls; pocket -> 1/2 balls + 1/2 cage; guide land -> 1/2 cage + "
                     "1/2 guiding ring; ball drag -> oil"),
         lubricant_temperature_rule="(T_inner_ring + T_outer_ring + 2 T_balls) / 4",
+        power_source=case.thermal.power_source,
+        power_source_note=POWER_SOURCE_NOTE[case.thermal.power_source].format(
+            duration=float(case.thermal.dynamic_duration)),
         **{f"network_{k}": float(v) for k, v in info.items()},
     )
     ds = make_dataset(data, coords=coords, attrs=attrs)
@@ -519,6 +571,9 @@ def thermal_lines(ds) -> list[str]:
     if Re > 4.3e5:
         lines.append(f"note: shaft Reynolds number {Re:.3g} is beyond the rotating-cylinder correlation's range (4.3e5): "
                      "the shaft's air convection is extrapolated")
+    if "power_source" in ds.attrs:
+        lines.append(f"power source: {ds.attrs['power_source']} (thermal.power_source: quasistatic (default) or dynamic) -- "
+                     f"{ds.attrs['power_source_note']}")
     lines.append("note: heat split " + ds.attrs["heat_split"] + "; correlations and assumptions: docs/thermal.md")
     return lines
 
