@@ -112,7 +112,7 @@ def test_value_digest_follows_captured_constants():
     assert cc.value_digest(d) != base
 
 
-@pytest.mark.parametrize("cache_dir", [False, True], ids=["in_tree", "NUMBA_CACHE_DIR"])
+@pytest.mark.parametrize("cache_dir", [False, pytest.param(True, marks=pytest.mark.slow)], ids=["in_tree", "NUMBA_CACHE_DIR"])
 def test_traction_constant_edit_is_compiled_without_manual_cache_clear(tmp_path, cache_dir):
     """Doubling the A_L coefficient column of the traction constants in the copy's zhang2016.py changes what
     the cached numba kernel returns in the next process: no stale machine code, no manual clearing."""

@@ -188,6 +188,7 @@ def test_benchmark_short_runs(noise):
     assert _benchmark("short", noise) == []
 
 
+@pytest.mark.slow  # long validation: default tier kept under ~10 min (docs/testing.md)
 def test_benchmark_long_runs_noisy():
     """400 cage revolutions at the larger noise (1 %): more crossings, so more chances for a noisy outlier."""
     assert _benchmark("long", 0.01) == []

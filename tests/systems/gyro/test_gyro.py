@@ -224,6 +224,7 @@ def test_start_run_integrates_and_archives(start_run, tmp_path):
     assert png.exists() and png.stat().st_size > 10000
 
 
+@pytest.mark.slow  # long validation: default tier kept under ~10 min (docs/testing.md)
 def test_cage_is_struck_and_mc_grows_with_speed():
     """Jiang et al. 2014 Sec. 4 / Table 2: the cage is struck at the start (SFMC > RFMC) and M_C = SFMC - RFMC grows with the
     input speed (Table 2, 1 N: 7.5 vs 2.4 uN m at 5 vs 2 r/min, ratio 3.1).  At 2 r/min the first impact comes at
@@ -317,6 +318,7 @@ def _play_angle(c):
                                            c.bearing.pitch_diameter)
 
 
+@pytest.mark.slow  # long validation: default tier kept under ~10 min (docs/testing.md)
 def test_reversal_mechanism_default_vs_cage_weight():
     """Jiang et al. 2014 Figs. 8-9: M_C is more than half of M at the onset of every reversal.  The default (weightless
     dynamics, cage touching) shows it; with the cage weight in the dynamics the cage rests on the pockets, is
