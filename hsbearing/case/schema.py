@@ -172,6 +172,10 @@ SCHEMA: dict[str, dict[str, Field]] = {
                                  "reported by hsbearing friction; docs/power_loss.md)", default=0.0, minimum=0.0, maximum=1.0),
         "cavity_losses": _f("choice", "jet-oil acceleration (m_dot v^2) and cage-face windage in the quasi-static power loss: "
                             "on, or off (drag only, as before)", default="on", choices=("on", "off")),
+        "thermal_films": _f("choice", "guide-land and pocket films of the quasi-static power loss at their film temperature "
+                            "(shear heat conducted into the two walls, models/ball_bearing/films.py): on, or off "
+                            "(isothermal at the wall temperature, as before); the fill-fraction band is reported either way "
+                            "(docs/power_loss.md)", default="on", choices=("on", "off")),
         "spin_torque_reading": _f("choice", "dgbb_prl spinning torque: dissipated power m_s omega_s / omega, or Tong-Hong projection sum |m_s| sin(alpha)", default="power", choices=("power", "projection")),
     },
     "thermal": {  # hsbearing thermal (docs/thermal.md); defaults are typical values, each with its origin

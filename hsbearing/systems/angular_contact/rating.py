@@ -203,7 +203,7 @@ def life_cli(args) -> int:
     return 0
 
 
-def quasi_static_power_loss(case, speed=None, with_state: bool = False):
+def quasi_static_power_loss(case, speed=None, with_state: bool = False, walls: dict | None = None):
     """Power loss by source [W] at the quasi-static state, with the dynamic model's contact functions.
 
     The dynamic model is built from the case (:func:`hsbearing.systems.angular_contact.dynamics.build_model`); its
@@ -215,9 +215,14 @@ def quasi_static_power_loss(case, speed=None, with_state: bool = False):
     zero there (no ball touches its pocket in the quasi-static state) and contact damping is
     zero (no approach rate).  Needs the dynamic model's data (outer-ring guided cage, land).
 
+    The guide-land and pocket films are then taken at their film temperature and reported over a fill-fraction
+    band (:func:`_film_corrections`, ``friction.thermal_films``).
+
     Parameters
     ----------
     case : Case.  speed : inner-ring speed [rad/s] (None: the case's).
+    walls : body temperatures [K] of the film walls, keys ``inner_ring``, ``outer_ring``, ``balls``, ``cage`` (the
+        thermal network's, ``hsbearing friction --thermal``); None: every wall at ``lubricant.temperature``.
 
     Returns
     -------
@@ -238,6 +243,7 @@ def quasi_static_power_loss(case, speed=None, with_state: bool = False):
     for key in ("cavity_oil_fraction", "drag_reynolds_number", "drag_coefficient"):  # the drag law's inputs (build_model)
         out[key] = float(m.info[key])
     _cavity_losses(case, m, out)
+    _film_corrections(case, m, out, walls)
     w = abs(case.operating.inner_speed - case.operating.outer_speed)
     out["friction_torque"] = out["power_loss"] / w if w > 0 else float("nan")
     if with_state:  # the quasi-static Dataset the state comes from, and the case at that speed
@@ -304,6 +310,85 @@ def _cavity_losses(case, m, out):
     out["drag_band_low"], out["drag_band_high"] = geo * band["low"], geo * band["high"]
     out["mixture_corotation_couette"] = k_c
     out["mixture_corotation"] = k
+
+
+def film_inputs(case, m, walls: dict | None = None) -> dict:
+    """Sliding speed, thickness and wall temperatures of the guide-land and pocket films at the model's initial
+    (quasi-static) state: {"land": (U, h, T_a, T_b), "pocket": (U, h, T_a, T_b)} [m/s, m, K, K].
+
+    Land: the cage's surface speed against the guiding ring, (phidot_c - omega_ring) R_land, over the radial land
+    clearance of the centred cage; walls cage and guiding ring.  Pocket: the ball's surface speed relative to the
+    cage frame, |omega_rel| D/2 (mean over the balls), over the radial pocket clearance of the centred ball; walls
+    ball and cage.  Representative single films: the clearance where the film is thinnest (at the land, everywhere;
+    in the pocket, round the ball's equator).
+    """
+    lay, y0, g = m.layout, m.y0, derive_geometry(case)
+    lands = m.info["guide_lands"]
+    T0 = case.lubricant.temperature
+    T = {k: T0 for k in ("inner_ring", "outer_ring", "balls", "cage")}
+    if walls:
+        T.update({k: float(v) for k, v in walls.items() if k in T})
+    out = {}
+    if lands.count:
+        w_ring = case.operating.outer_speed if lands.guidance == "outer_ring" else case.operating.inner_speed
+        ring = "outer_ring" if lands.guidance == "outer_ring" else "inner_ring"
+        U = (float(y0[lay.cage("phidot_c")]) - w_ring) * lands.radius
+        out["land"] = (U, lands.clearance, T["cage"], T[ring])
+    wx, wy, wz = (y0[lay.ball(n)] for n in ("omega_x", "omega_y", "omega_z"))
+    rel = np.sqrt((wx - y0[lay.ball("thetadot_b")]) ** 2 + wy**2 + wz**2)
+    out["pocket"] = (float(np.mean(rel)) * 0.5 * g.D, g.pocket_clearance, T["balls"], T["cage"])
+    return out
+
+
+def derive_geometry(case):
+    from hsbearing.models import geometry
+
+    return geometry.derive(case)
+
+
+def oil_conductivity(case) -> float:
+    """Oil thermal conductivity [W/(m K)]: ``thermal.oil_thermal_conductivity``, else the oil's K (as the thermal network)."""
+    from hsbearing.models.traction import OILS
+
+    return case.thermal.oil_thermal_conductivity or OILS[case.lubricant.oil].K
+
+
+def _film_corrections(case, m, out, walls=None):
+    """Guide-land and pocket films at their film temperature, with the fill-fraction band (in place).
+
+    The kernel's films are isothermal at the viscosity eta_film of ``lubricant.temperature`` and flooded; at the
+    quasi-static state (cage and balls centred) their dissipation is linear in the film viscosity (checked in
+    tests/systems/angular_contact/test_thermal_films.py), so the film at temperature is the kernel's power times
+    eta_eff / eta_film, eta_eff from :func:`~hsbearing.models.ball_bearing.films.thermal_couette_film` (shear heat
+    conducted into the two walls at ``walls``' temperatures).  ``friction.thermal_films = "off"``: the factor is 1
+    (as before), the walls still reported.  The band: fill fraction from the cavity oil fraction X (low) to 1
+    (high, the default value), :func:`~hsbearing.models.ball_bearing.films.fill_fraction_band`.
+    """
+    from hsbearing.models.ball_bearing import films
+    from hsbearing.systems.angular_contact.thermal import _viscosity
+
+    eta_film = float(m.info["oil_viscosity"])
+    k = oil_conductivity(case)
+    thermal = case.friction.thermal_films == "on"
+    low, high = films.fill_fraction_band(float(m.info["cavity_oil_fraction"]))
+    inp = film_inputs(case, m, walls)
+    for src, key in (("guide_land", "land"), ("pocket_film", "pocket")):
+        iso = out[src]
+        if key in inp and iso != 0.0:
+            U, h, Ta, Tb = inp[key]
+            r = films.thermal_couette_film(lambda T: _viscosity(case, T), U, h, k, Ta, Tb)
+            f = r["eta_eff"] / eta_film if thermal else 1.0
+            out[f"{key}_film_temperature"], out[f"{key}_film_max_temperature"] = r["T_mean"], r["T_max"]
+            out[f"{key}_film_speed"] = U
+        else:
+            f = 1.0
+            out[f"{key}_film_temperature"] = out[f"{key}_film_max_temperature"] = float("nan")
+            out[f"{key}_film_speed"] = inp[key][0] if key in inp else 0.0
+        out[f"{key}_film_wall_temperatures"] = inp[key][2:] if key in inp else (float("nan"), float("nan"))
+        out[f"{key}_film_factor"] = f
+        out[src] = high * f * iso
+        out["power_loss"] += out[src] - iso
+        out[f"{src}_band_low"], out[f"{src}_band_high"] = low * f * iso, high * f * iso
 
 
 # ----------------------------------------------------------------------------- hsbearing friction CASE (every ball bearing)
@@ -391,6 +476,25 @@ def _register_qs_power():
              "carried round in the quasi-static drag (friction.mixture_corotation)")
     register("mixture_corotation_couette", ("speed",), "1", "upper estimate of the mixture co-rotation: circular Couette "
              "flow between the raceways at the pitch radius over the cage's pure-rolling speed")
+    for key, what in (("land", "guide-land film (cage on its guiding ring)"), ("pocket", "pocket films (ball in its pocket)")):
+        register(f"{key}_film_temperature", ("speed",), "K", f"mean temperature of the {what}: Couette shear heat conducted "
+                 "into the two walls (models/ball_bearing/films.py; nan without the film)")
+        register(f"{key}_film_max_temperature", ("speed",), "K", f"largest temperature across the {what}")
+        register(f"{key}_film_viscosity_factor", ("speed",), "1", f"viscosity of the {what} at its film temperature over "
+                 "the isothermal one at lubricant.temperature (1 with friction.thermal_films = off)")
+        register(f"{key}_film_wall_temperature_a", ("speed",), "K", f"temperature of the first wall of the {what} (land: "
+                 "cage; pocket: ball)")
+        register(f"{key}_film_wall_temperature_b", ("speed",), "K", f"temperature of the second wall of the {what} (land: "
+                 "guiding ring; pocket: cage)")
+    for src in ("guide_land", "pocket_film"):
+        register(f"qs_power_loss_{src}_band_low", ("speed",), "W", f"qs_power_loss_{src} with the film part-filled at the "
+                 "cavity oil fraction (low end of the fill band; docs/power_loss.md)")
+        register(f"qs_power_loss_{src}_band_high", ("speed",), "W", f"qs_power_loss_{src} with the film flooded (high end "
+                 "of the fill band = qs_power_loss_{src})")
+    register("qs_power_loss_band_low", ("speed",), "W", "qs_power_loss with the drag at its band's low end and the land and "
+             "pocket films at their fill band's low end")
+    register("qs_power_loss_band_high", ("speed",), "W", "qs_power_loss with the drag at its band's high end and the land "
+             "and pocket films at their fill band's high end")
 
 
 _register_qs_power()
@@ -437,6 +541,19 @@ def friction_angular_contact(case, speeds):
                       ("mixture_corotation_couette", "mixture_corotation_couette")):
         data[name] = np.array([r[key] for r in rows])
     data["qs_power_loss"] = np.array([r["power_loss"] for r in rows])
+    for key in ("land", "pocket"):
+        data[f"{key}_film_temperature"] = np.array([r[f"{key}_film_temperature"] for r in rows])
+        data[f"{key}_film_max_temperature"] = np.array([r[f"{key}_film_max_temperature"] for r in rows])
+        data[f"{key}_film_viscosity_factor"] = np.array([r[f"{key}_film_factor"] for r in rows])
+        data[f"{key}_film_wall_temperature_a"] = np.array([r[f"{key}_film_wall_temperatures"][0] for r in rows])
+        data[f"{key}_film_wall_temperature_b"] = np.array([r[f"{key}_film_wall_temperatures"][1] for r in rows])
+    for src in ("guide_land", "pocket_film"):
+        for end in ("low", "high"):
+            data[f"qs_power_loss_{src}_band_{end}"] = np.array([r[f"{src}_band_{end}"] for r in rows])
+    for end in ("low", "high"):
+        data[f"qs_power_loss_band_{end}"] = np.array([
+            r["power_loss"] - r["drag"] + r[f"drag_band_{end}"]
+            - r["guide_land"] - r["pocket_film"] + r[f"guide_land_band_{end}"] + r[f"pocket_film_band_{end}"] for r in rows])
     data["qs_friction_torque"] = np.array([r["friction_torque"] for r in rows])
     data.update(skf2004.skf_moments(case, w))
     for term, srcs in OURS_AS_SKF.items():
