@@ -353,6 +353,31 @@ def oil_conductivity(case) -> float:
     return case.thermal.oil_thermal_conductivity or OILS[case.lubricant.oil].K
 
 
+def film_factors(case, m, walls=None) -> dict:
+    """Thermal factor eta_eff / eta_film of the guide-land ("land") and pocket ("pocket") films at the model's initial
+    state, with the film's speed, mean and largest temperature and wall temperatures (:func:`_film_corrections`).
+    The factor is 1 with ``friction.thermal_films = "off"`` or without the film."""
+    from hsbearing.models.ball_bearing import films
+    from hsbearing.systems.angular_contact.thermal import _viscosity
+
+    eta_film = float(m.info["oil_viscosity"])
+    k = oil_conductivity(case)
+    thermal = case.friction.thermal_films == "on"
+    inp = film_inputs(case, m, walls)
+    out = {}
+    nan = float("nan")
+    for key in ("land", "pocket"):
+        if key in inp and inp[key][0] != 0.0:
+            U, h, Ta, Tb = inp[key]
+            r = films.thermal_couette_film(lambda T: _viscosity(case, T), U, h, k, Ta, Tb)
+            out[key] = {"factor": r["eta_eff"] / eta_film if thermal else 1.0, "T_mean": r["T_mean"], "T_max": r["T_max"],
+                        "speed": U, "walls": (Ta, Tb)}
+        else:
+            out[key] = {"factor": 1.0, "T_mean": nan, "T_max": nan, "speed": inp[key][0] if key in inp else 0.0,
+                        "walls": inp[key][2:] if key in inp else (nan, nan)}
+    return out
+
+
 def _film_corrections(case, m, out, walls=None):
     """Guide-land and pocket films at their film temperature, with the fill-fraction band (in place).
 
@@ -365,26 +390,13 @@ def _film_corrections(case, m, out, walls=None):
     (high, the default value), :func:`~hsbearing.models.ball_bearing.films.fill_fraction_band`.
     """
     from hsbearing.models.ball_bearing import films
-    from hsbearing.systems.angular_contact.thermal import _viscosity
 
-    eta_film = float(m.info["oil_viscosity"])
-    k = oil_conductivity(case)
-    thermal = case.friction.thermal_films == "on"
     low, high = films.fill_fraction_band(float(m.info["cavity_oil_fraction"]))
-    inp = film_inputs(case, m, walls)
+    ff = film_factors(case, m, walls)
     for src, key in (("guide_land", "land"), ("pocket_film", "pocket")):
-        iso = out[src]
-        if key in inp and iso != 0.0:
-            U, h, Ta, Tb = inp[key]
-            r = films.thermal_couette_film(lambda T: _viscosity(case, T), U, h, k, Ta, Tb)
-            f = r["eta_eff"] / eta_film if thermal else 1.0
-            out[f"{key}_film_temperature"], out[f"{key}_film_max_temperature"] = r["T_mean"], r["T_max"]
-            out[f"{key}_film_speed"] = U
-        else:
-            f = 1.0
-            out[f"{key}_film_temperature"] = out[f"{key}_film_max_temperature"] = float("nan")
-            out[f"{key}_film_speed"] = inp[key][0] if key in inp else 0.0
-        out[f"{key}_film_wall_temperatures"] = inp[key][2:] if key in inp else (float("nan"), float("nan"))
+        iso, f = out[src], ff[key]["factor"]
+        out[f"{key}_film_temperature"], out[f"{key}_film_max_temperature"] = ff[key]["T_mean"], ff[key]["T_max"]
+        out[f"{key}_film_speed"], out[f"{key}_film_wall_temperatures"] = ff[key]["speed"], ff[key]["walls"]
         out[f"{key}_film_factor"] = f
         out[src] = high * f * iso
         out["power_loss"] += out[src] - iso
@@ -510,11 +522,53 @@ def require_angular_contact(case, what: str, *, source: str | None = None, key: 
         raise CaseError(source or case.source, key, f"{what} (got a {case.system} case)")
 
 
-def friction_angular_contact(case, speeds):
+def _thermal_row(case, w):
+    """``hsbearing friction --thermal`` at inner-ring speed w [rad/s]: the thermal equilibrium of the case at w, then
+    the quasi-static power loss with its temperatures at the contacts: the race contacts (traction, EHL rolling, film
+    viscosity) at the network's lubricant temperature (T_ir + T_or + 2 T_b)/4 -- one inlet temperature for both
+    race contacts, the rule of the network's fixed point -- and the guide-land and pocket films between their walls'
+    node temperatures (cage / guiding ring; ball / cage).  A CaseError naming lubricant.oil_flow_rate if the network
+    has no steady state at w."""
+    from hsbearing.systems.angular_contact.thermal import thermal_equilibrium
+
+    cw = case.with_overrides(**{"operating.inner_speed": f"{float(w)} rad/s"})
+    th = thermal_equilibrium(cw)
+    if th.attrs["status"] != "ok":
+        raise CaseError(case.source, "lubricant.oil_flow_rate", th.attrs.get("error") or
+                        f"the thermal fixed point did not converge at {rpm(w):.6g} r/min in "
+                        f"{int(th.fixed_point_iterations)} iterations (thermal.max_iterations, thermal.tolerance)")
+    T = {"inner_ring": float(th.inner_ring_temperature), "outer_ring": float(th.outer_ring_temperature),
+         "balls": float(th.ball_temperature), "cage": float(th.cage_temperature)}
+    T_lub = float(th.lubricant_temperature)
+    r = quasi_static_power_loss(cw.with_overrides(**{"lubricant.temperature": f"{T_lub} K"}), None, with_state=True,
+                                walls=T)
+    r["thermal"] = dict(T, oil=float(th.oil_outlet_temperature), contact=T_lub, iterations=float(th.fixed_point_iterations))
+    return r
+
+
+THERMAL_RULE = ("hsbearing friction --thermal: per speed, the thermal network's equilibrium (hsbearing thermal); race "
+                "contacts (traction, EHL rolling, EHL film) at contact_inlet_temperature = (T_inner_ring + T_outer_ring + "
+                "2 T_balls)/4, the same for the inner and outer race; guide-land film between thermal_cage_temperature "
+                "and the guiding ring's node temperature, pocket films between thermal_ball_temperature and "
+                "thermal_cage_temperature (friction.thermal_films); drag, jet and windage with the oil at "
+                "contact_inlet_temperature")
+for _n, _l in (("contact_inlet_temperature", "temperature of the race contacts' oil (traction, EHL rolling, viscosity) "
+                "with --thermal: the thermal network's (T_ir + T_or + 2 T_b)/4"),
+               ("thermal_inner_ring_temperature", "inner ring node temperature of the thermal network (--thermal)"),
+               ("thermal_outer_ring_temperature", "outer ring node temperature of the thermal network (--thermal)"),
+               ("thermal_ball_temperature", "ball node temperature of the thermal network (--thermal)"),
+               ("thermal_cage_temperature", "cage node temperature of the thermal network (--thermal)"),
+               ("thermal_oil_outlet_temperature", "oil outlet temperature of the thermal network (--thermal)")):
+    register(_n, ("speed",), "K", _l)
+
+
+def friction_angular_contact(case, speeds, *, thermal: bool = False):
     """Quasi-static power loss by source and the SKF 2004 angular-contact moments over inner-ring speeds [rad/s].
 
     ``speeds``: SI floats [rad/s], unit strings (``"10000 rpm"``, ``"500,5000rpm"``), lists of them, or pint
-    Quantities (:func:`hsbearing.units.parse_speeds`).
+    Quantities (:func:`hsbearing.units.parse_speeds`).  ``thermal``: the temperatures of the thermal network at each
+    speed reach the contacts (:func:`_thermal_row`, :data:`THERMAL_RULE`; needs lubricant.oil_flow_rate); the
+    temperatures used are variables of the Dataset.
 
     Returns a Dataset over ``speed`` (qs_power_loss_<source>, qs_power_loss [W],
     qs_friction_torque, skf_* [N m]).
@@ -525,7 +579,13 @@ def friction_angular_contact(case, speeds):
     if hasattr(speeds, "to") and hasattr(speeds, "magnitude"):  # a pint Quantity (scalar or array)
         speeds = [f"{float(v)} {speeds.units:~}" for v in np.atleast_1d(speeds.magnitude)]
     w = parse_speeds(speeds, source="speeds") if not isinstance(speeds, np.ndarray) else np.asarray(speeds, dtype=float)
-    rows = [quasi_static_power_loss(case, wi, with_state=True) for wi in w]
+    if thermal:
+        from hsbearing.systems.angular_contact.thermal import check_inputs
+
+        check_inputs(case)
+        rows = [_thermal_row(case, wi) for wi in w]
+    else:
+        rows = [quasi_static_power_loss(case, wi, with_state=True) for wi in w]
     from hsbearing.systems.angular_contact import contact_state
 
     warns = []
@@ -541,6 +601,11 @@ def friction_angular_contact(case, speeds):
                       ("mixture_corotation_couette", "mixture_corotation_couette")):
         data[name] = np.array([r[key] for r in rows])
     data["qs_power_loss"] = np.array([r["power_loss"] for r in rows])
+    if thermal:
+        for name, key in (("contact_inlet_temperature", "contact"), ("thermal_inner_ring_temperature", "inner_ring"),
+                          ("thermal_outer_ring_temperature", "outer_ring"), ("thermal_ball_temperature", "balls"),
+                          ("thermal_cage_temperature", "cage"), ("thermal_oil_outlet_temperature", "oil")):
+            data[name] = np.array([r["thermal"][key] for r in rows])
     for key in ("land", "pocket"):
         data[f"{key}_film_temperature"] = np.array([r[f"{key}_film_temperature"] for r in rows])
         data[f"{key}_film_max_temperature"] = np.array([r[f"{key}_film_max_temperature"] for r in rows])
@@ -580,5 +645,7 @@ def friction_angular_contact(case, speeds):
                      "(docs/power_loss.md)")
     attrs = standard_attrs(case, "ok", title="hsbearing friction: quasi-static power loss by source, SKF 2004 model",
                            note_quasi_static=NOTE_QS, note_skf=NOTE_SKF, cavity_oil_fraction_source=xsrc,
+                           contact_temperatures=THERMAL_RULE if thermal else
+                           "lubricant.temperature at every contact and film wall (no --thermal)",
                            warnings=" | ".join(warns) if warns else "none")
     return make_dataset(data, coords={"speed": w}, attrs=attrs)
