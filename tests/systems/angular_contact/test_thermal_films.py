@@ -73,3 +73,51 @@ def test_hotter_walls_thin_the_films(case):
     assert hot["land_film_wall_temperatures"] == (T0 + 20, T0 + 20)
     assert hot["guide_land"] < cold["guide_land"] and hot["pocket_film"] < cold["pocket_film"]
     assert math.isclose(hot["land_film_speed"], cold["land_film_speed"])
+
+
+def test_friction_thermal_feeds_the_network_temperatures(tmp_path, capsys):
+    """hsbearing friction --thermal: per speed the thermal equilibrium's temperatures reach the contacts (race contacts
+    at its lubricant temperature, films between their walls' nodes); the archive holds the temperatures used."""
+    from hsbearing import cli
+    from hsbearing.results import open_run
+    from hsbearing.systems.angular_contact.thermal import thermal_equilibrium
+
+    out = tmp_path / "f.nc"
+    assert cli.main(["friction", "zhang2016", "--speeds", "14000rpm", "--thermal", "-o", str(out)]) == 0
+    assert "--thermal: contact inlet temperature" in capsys.readouterr().out
+    ds = open_run(out)
+    assert "thermal network" in ds.attrs["contact_temperatures"]
+    case = load_case("zhang2016")
+    th = thermal_equilibrium(case)
+    T_lub = float(th.lubricant_temperature)
+    assert float(ds.contact_inlet_temperature[0]) == pytest.approx(T_lub, rel=1e-12)
+    assert float(ds.thermal_cage_temperature[0]) == pytest.approx(float(th.cage_temperature), rel=1e-12)
+    assert float(ds.land_film_wall_temperature_a[0]) == pytest.approx(float(th.cage_temperature), rel=1e-12)
+    assert float(ds.land_film_wall_temperature_b[0]) == pytest.approx(float(th.outer_ring_temperature), rel=1e-12)
+    assert float(ds.pocket_film_wall_temperature_a[0]) == pytest.approx(float(th.ball_temperature), rel=1e-12)
+    walls = {"inner_ring": float(th.inner_ring_temperature), "outer_ring": float(th.outer_ring_temperature),
+             "balls": float(th.ball_temperature), "cage": float(th.cage_temperature)}
+    r = rating.quasi_static_power_loss(case.with_overrides(**{"lubricant.temperature": f"{T_lub} K"}), walls=walls)
+    assert float(ds.qs_power_loss[0]) == pytest.approx(r["power_loss"], rel=1e-9)
+    plain = open_run(_plain(tmp_path))
+    assert "contact_inlet_temperature" not in plain
+    assert plain.attrs["contact_temperatures"].startswith("lubricant.temperature")
+
+
+def _plain(tmp_path):
+    from hsbearing import cli
+
+    p = tmp_path / "plain.nc"
+    assert cli.main(["friction", "zhang2016", "--speeds", "14000rpm", "-o", str(p)]) == 0
+    return p
+
+
+def test_friction_thermal_bad_input_exits_2_before_writing(tmp_path, capsys):
+    from hsbearing import cli
+
+    out = tmp_path / "x.nc"
+    assert cli.main(["friction", "dgbb_6206", "--thermal", "-o", str(out)]) == 2
+    assert "--thermal" in capsys.readouterr().err
+    assert cli.main(["friction", "zhang2016", "--thermal", "--set", "lubricant.oil_flow_rate=0 L/min", "-o", str(out)]) == 2
+    assert "oil_flow_rate" in capsys.readouterr().err
+    assert not out.exists()
