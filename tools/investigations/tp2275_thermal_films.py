@@ -54,14 +54,14 @@ def report(title, case, measured):
     for label, ds, _ in steps:
         for i, n in enumerate(ns):
             g = lambda k: float(ds[k].values[i])  # noqa: E731
-            tot, lo, hi, m = g("qs_power_loss"), g("qs_power_loss_band_low"), g("qs_power_loss_band_high"), meas[i]
+            tot, lo, hi, m = g("qs_power_loss"), g("qs_total_band_low"), g("qs_total_band_high"), meas[i]
             Tin = g("contact_inlet_temperature") - 273.15 if "contact_inlet_temperature" in ds else case.lubricant.temperature - 273.15
             print(f"| {label if i == 0 else ''} | {n} | {m:.0f} | {g('qs_power_loss_race_traction'):.0f} | "
                   f"{g('qs_power_loss_ehl_rolling'):.0f} | {g('qs_power_loss_pocket_film'):.0f} | {g('qs_power_loss_guide_land'):.0f} | "
                   f"{g('qs_power_loss_drag'):.0f} | {g('qs_power_loss_jet_oil_acceleration') + g('qs_power_loss_cage_windage'):.0f} | "
                   f"{tot:.0f} ({tot / m:.2f}) | {lo:.0f}..{hi:.0f} ({lo / m:.2f}..{hi / m:.2f}) | "
                   f"{g('land_film_temperature') - 273.15:.1f} / {g('pocket_film_temperature') - 273.15:.1f} | {Tin:.1f} |")
-        e, elo, ehi = (exponent(ns, ds[k].values) for k in ("qs_power_loss", "qs_power_loss_band_low", "qs_power_loss_band_high"))
+        e, elo, ehi = (exponent(ns, ds[k].values) for k in ("qs_power_loss", "qs_total_band_low", "qs_total_band_high"))
         print(f"| {label}: speed exponent | | {exponent(ns, meas):.2f} | | | | | | | {e:.2f} | {elo:.2f}..{ehi:.2f} | | |")
     print("cost [s] for the speeds: " + "; ".join(f"{label}: {dt:.1f}" for label, _, dt in steps))
 

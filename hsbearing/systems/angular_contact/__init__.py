@@ -100,7 +100,7 @@ def friction_command(case, args) -> int:
                   + f" degC), viscosity x {', '.join(f'{f:.3g}' for f in ds[f'{key}_film_viscosity_factor'].values)} "
                   "(friction.thermal_films)")
     print("total band [W] (drag band; land and pocket films part-filled at the cavity oil fraction .. flooded): "
-          + ", ".join(f"{lo:.4g}..{hi:.4g}" for lo, hi in zip(ds.qs_power_loss_band_low.values, ds.qs_power_loss_band_high.values)))
+          + ", ".join(f"{lo:.4g}..{hi:.4g}" for lo, hi in zip(ds.qs_total_band_low.values, ds.qs_total_band_high.values)))
     if "contact_inlet_temperature" in ds:
         print("--thermal: contact inlet temperature " + ", ".join(f"{t - 273.15:.4g}" for t in ds.contact_inlet_temperature.values)
               + " degC; rings " + ", ".join(f"{a - 273.15:.4g}/{b - 273.15:.4g}" for a, b in zip(

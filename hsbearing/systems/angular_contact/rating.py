@@ -499,13 +499,13 @@ def _register_qs_power():
         register(f"{key}_film_wall_temperature_b", ("speed",), "K", f"temperature of the second wall of the {what} (land: "
                  "guiding ring; pocket: cage)")
     for src in ("guide_land", "pocket_film"):
-        register(f"qs_power_loss_{src}_band_low", ("speed",), "W", f"qs_power_loss_{src} with the film part-filled at the "
+        register(f"qs_{src}_band_low", ("speed",), "W", f"qs_power_loss_{src} with the film part-filled at the "
                  "cavity oil fraction (low end of the fill band; docs/power_loss.md)")
-        register(f"qs_power_loss_{src}_band_high", ("speed",), "W", f"qs_power_loss_{src} with the film flooded (high end "
+        register(f"qs_{src}_band_high", ("speed",), "W", f"qs_power_loss_{src} with the film flooded (high end "
                  "of the fill band = qs_power_loss_{src})")
-    register("qs_power_loss_band_low", ("speed",), "W", "qs_power_loss with the drag at its band's low end and the land and "
+    register("qs_total_band_low", ("speed",), "W", "qs_power_loss with the drag at its band's low end and the land and "
              "pocket films at their fill band's low end")
-    register("qs_power_loss_band_high", ("speed",), "W", "qs_power_loss with the drag at its band's high end and the land "
+    register("qs_total_band_high", ("speed",), "W", "qs_power_loss with the drag at its band's high end and the land "
              "and pocket films at their fill band's high end")
 
 
@@ -614,9 +614,9 @@ def friction_angular_contact(case, speeds, *, thermal: bool = False):
         data[f"{key}_film_wall_temperature_b"] = np.array([r[f"{key}_film_wall_temperatures"][1] for r in rows])
     for src in ("guide_land", "pocket_film"):
         for end in ("low", "high"):
-            data[f"qs_power_loss_{src}_band_{end}"] = np.array([r[f"{src}_band_{end}"] for r in rows])
+            data[f"qs_{src}_band_{end}"] = np.array([r[f"{src}_band_{end}"] for r in rows])
     for end in ("low", "high"):
-        data[f"qs_power_loss_band_{end}"] = np.array([
+        data[f"qs_total_band_{end}"] = np.array([
             r["power_loss"] - r["drag"] + r[f"drag_band_{end}"]
             - r["guide_land"] - r["pocket_film"] + r[f"guide_land_band_{end}"] + r[f"pocket_film_band_{end}"] for r in rows])
     data["qs_friction_torque"] = np.array([r["friction_torque"] for r in rows])
