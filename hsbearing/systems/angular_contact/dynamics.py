@@ -179,6 +179,31 @@ def _oil(case):
     return lub["eta"], lub["alpha"], traction.law_id(case.lubricant.oil, case.lubricant.traction_law)
 
 
+def _inlet_beta(case) -> float:
+    """Temperature-viscosity coefficient beta = -d ln(eta) / dT [1/K] at lubricant.temperature for the inlet shear
+    heating factor: the local slope of the viscosity the model uses (central difference over +-1 K, the precedence of
+    :func:`hsbearing.models.ehl.lubricant_parameters`); the oil's table value where the case fixes the viscosity
+    (a given kinematic viscosity has no slope)."""
+    from hsbearing.models import ehl
+    from hsbearing.systems.angular_contact.thermal import _viscosity
+
+    T = case.lubricant.temperature
+    try:
+        lo, hi = _viscosity(case, T - 1.0), _viscosity(case, T + 1.0)
+    except (ValueError, KeyError):
+        lo = hi = 0.0
+    if lo > 0.0 and hi > 0.0 and lo != hi:
+        return -0.5 * math.log(hi / lo)
+    return float(ehl.lubricant_parameters(case)["beta"])
+
+
+def _oil_conductivity(case) -> float:
+    """Oil thermal conductivity [W/(m K)]: thermal.oil_thermal_conductivity, else the oil's K (Table 1 / its file)."""
+    from hsbearing.models.traction import OILS
+
+    return case.thermal.oil_thermal_conductivity or OILS[case.lubricant.oil].K
+
+
 def traction_values(case, alpha) -> dict:
     """Kernel parameters of the oil-independent traction laws (docs/traction.md, "Physical model"):
     tau0, Lambda, G of the physical model at the case temperature (the lubricant file's, else the defaults of
@@ -267,7 +292,7 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
         k_i=float(ci.ellipticity), k_o=float(co.ellipticity), Ep=Ep,
         omega_i=op.inner_speed, omega_o=op.outer_speed,
         # lubricant and traction law
-        eta_in=eta, alpha=alpha, eta_film=eta,
+        eta_in=eta, alpha=alpha, eta_film=eta, beta_T=_inlet_beta(case), K_oil=_oil_conductivity(case),
         law_id=law, T_K=case.lubricant.temperature, U_eps=opt["rolling_eps"], s_eps=opt["slip_eps"],
         **traction_values(case, alpha),
         # pocket
@@ -289,7 +314,7 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
         # environment and switches
         grav=opt["gravity"],
         friction=bool(friction), damping=bool(damping), ehl_rolling=bool(ehl_rolling and damping),
-        drag=bool(drag and friction),
+        drag=bool(drag and friction), inlet_heating=case.friction.inlet_heating == "on",
     )
     p = kio.pack(vals)
     for name in ("m_c", "Ip_c", "Id_c", "m_i", "Ip_i", "Id_i"):
