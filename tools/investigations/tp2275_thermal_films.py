@@ -1,6 +1,7 @@
 """NASA TP-2275 bearings against their measured heat generation, step by step: before (isothermal, flooded cage films
-at the oil-in temperature) -> thermal cage films (friction.thermal_films, fill band) -> the thermal network's temperatures
-at the contacts (hsbearing friction --thermal).  The table of docs/power_loss.md, "Thermal, part-filled cage films and
+at the oil-in temperature) -> inlet shear heating on the EHL rolling force (friction.inlet_heating = on) -> thermal
+cage films (friction.thermal_films, fill band) -> the thermal network's temperatures at the contacts (hsbearing
+friction --thermal); and the defaults (inlet heating off) with --thermal.  The table of docs/power_loss.md, "Thermal, part-filled cage films and
 the bearing's temperatures at the contacts".
 
 Cases and provenance: tools/investigations/tp2275_heat_by_source.py (35-mm reconstruction of a third-party reading of
@@ -41,9 +42,14 @@ def report(title, case, measured):
     w = np.array(ns) * math.pi / 30
     meas = np.array([measured[n] for n in ns])
     steps = []
-    for label, c, thermal in (("before (isothermal flooded films, oil-in T)", case.with_overrides(**{"friction.thermal_films": "off"}), False),
-                              ("step 2: thermal cage films", case, False),
-                              ("step 3: + thermal network temperatures at the contacts", case, True)):
+    ih = case.with_overrides(**{"friction.inlet_heating": "on"})
+    for label, c, thermal in (("before (isothermal flooded films, oil-in T)",
+                               case.with_overrides(**{"friction.thermal_films": "off"}), False),
+                              ("step 1: inlet shear heating on F_R",
+                               ih.with_overrides(**{"friction.thermal_films": "off"}), False),
+                              ("step 2: + thermal cage films", ih, False),
+                              ("step 3: + thermal network temperatures at the contacts", ih, True),
+                              ("step 3 without step 1 (defaults + --thermal)", case, True)):
         t0 = time.perf_counter()
         ds = friction_angular_contact(c, w, thermal=thermal)
         steps.append((label, ds, time.perf_counter() - t0))
