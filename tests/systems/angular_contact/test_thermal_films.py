@@ -121,3 +121,34 @@ def test_friction_thermal_bad_input_exits_2_before_writing(tmp_path, capsys):
     assert cli.main(["friction", "zhang2016", "--thermal", "--set", "lubricant.oil_flow_rate=0 L/min", "-o", str(out)]) == 2
     assert "oil_flow_rate" in capsys.readouterr().err
     assert not out.exists()
+
+
+def test_run_thermal_records_the_temperatures_it_used(monkeypatch, tmp_path):
+    """hsbearing run --thermal: the run's attrs say which temperatures the contacts used (the thermal network's)."""
+    import xarray as xr
+
+    import hsbearing
+    from hsbearing import cli
+    from hsbearing.cli import commands
+
+    seen = {}
+
+    def fake_simulate(case, **kw):
+        return xr.Dataset(attrs={"status": "ok"})
+
+    def fake_finish(ds, out, args):
+        seen["attrs"] = dict(ds.attrs)
+        return 0
+
+    monkeypatch.setattr(hsbearing, "simulate", fake_simulate)
+    monkeypatch.setattr(commands, "_finish_run", fake_finish)
+    assert cli.main(["run", "zhang2016", "--thermal", "--duration", "1ms", "-o", str(tmp_path / "r.nc"), "-q",
+                     "--no-figure"]) == 0
+    a = seen["attrs"]
+    assert "thermal network" in a["contact_temperatures"]
+    for k in ("thermal_lubricant_temperature", "thermal_inner_ring_temperature", "thermal_outer_ring_temperature",
+              "thermal_ball_temperature", "thermal_cage_temperature", "thermal_oil_outlet_temperature"):
+        assert 273.15 < a[k] < 600.0
+    T = a["thermal_lubricant_temperature"]
+    assert T == pytest.approx(0.25 * (a["thermal_inner_ring_temperature"] + a["thermal_outer_ring_temperature"]
+                                      + 2 * a["thermal_ball_temperature"]), abs=0.05)  # fixed point to its tolerance
