@@ -395,8 +395,9 @@ def _film_corrections(case, m, out, walls=None):
     ff = film_factors(case, m, walls)
     for src, key in (("guide_land", "land"), ("pocket_film", "pocket")):
         iso, f = out[src], ff[key]["factor"]
-        out[f"{key}_film_temperature"], out[f"{key}_film_max_temperature"] = ff[key]["T_mean"], ff[key]["T_max"]
-        out[f"{key}_film_speed"], out[f"{key}_film_wall_temperatures"] = ff[key]["speed"], ff[key]["walls"]
+        if math.isfinite(ff[key]["T_mean"]):  # no film (a ball-piloted cage has no land): no temperature keys
+            out[f"{key}_film_temperature"], out[f"{key}_film_max_temperature"] = ff[key]["T_mean"], ff[key]["T_max"]
+            out[f"{key}_film_speed"], out[f"{key}_film_wall_temperatures"] = ff[key]["speed"], ff[key]["walls"]
         out[f"{key}_film_factor"] = f
         out[src] = high * f * iso
         out["power_loss"] += out[src] - iso
@@ -607,11 +608,12 @@ def friction_angular_contact(case, speeds, *, thermal: bool = False):
                           ("thermal_cage_temperature", "cage"), ("thermal_oil_outlet_temperature", "oil")):
             data[name] = np.array([r["thermal"][key] for r in rows])
     for key in ("land", "pocket"):
-        data[f"{key}_film_temperature"] = np.array([r[f"{key}_film_temperature"] for r in rows])
-        data[f"{key}_film_max_temperature"] = np.array([r[f"{key}_film_max_temperature"] for r in rows])
+        nan = float("nan")  # nan where the bearing has no such film (ball-piloted cage: no land)
+        data[f"{key}_film_temperature"] = np.array([r.get(f"{key}_film_temperature", nan) for r in rows])
+        data[f"{key}_film_max_temperature"] = np.array([r.get(f"{key}_film_max_temperature", nan) for r in rows])
         data[f"{key}_film_viscosity_factor"] = np.array([r[f"{key}_film_factor"] for r in rows])
-        data[f"{key}_film_wall_temperature_a"] = np.array([r[f"{key}_film_wall_temperatures"][0] for r in rows])
-        data[f"{key}_film_wall_temperature_b"] = np.array([r[f"{key}_film_wall_temperatures"][1] for r in rows])
+        data[f"{key}_film_wall_temperature_a"] = np.array([r.get(f"{key}_film_wall_temperatures", (nan, nan))[0] for r in rows])
+        data[f"{key}_film_wall_temperature_b"] = np.array([r.get(f"{key}_film_wall_temperatures", (nan, nan))[1] for r in rows])
     for src in ("guide_land", "pocket_film"):
         for end in ("low", "high"):
             data[f"qs_{src}_band_{end}"] = np.array([r[f"{src}_band_{end}"] for r in rows])
