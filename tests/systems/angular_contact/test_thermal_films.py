@@ -152,3 +152,12 @@ def test_run_thermal_records_the_temperatures_it_used(monkeypatch, tmp_path):
     T = a["thermal_lubricant_temperature"]
     assert T == pytest.approx(0.25 * (a["thermal_inner_ring_temperature"] + a["thermal_outer_ring_temperature"]
                                       + 2 * a["thermal_ball_temperature"]), abs=0.05)  # fixed point to its tolerance
+
+
+def test_api_friction_thermal_is_the_engine():
+    import hsbearing
+
+    api = hsbearing.friction("zhang2016", speeds="14000 rpm", thermal=True)
+    eng = rating.friction_angular_contact(load_case("zhang2016"), "14000 rpm", thermal=True)
+    for v in ("qs_power_loss", "contact_inlet_temperature", "thermal_cage_temperature"):
+        assert api[v].values == pytest.approx(eng[v].values, rel=1e-12)
