@@ -114,3 +114,28 @@ def test_off_is_the_kernel_without_the_option(fast_case):
     m = build_model(fast_case.with_overrides(**{"friction.inlet_heating": "off"}))
     b, _ = m.outputs(m.y0)
     assert np.array_equal(a, b)
+
+
+def test_reported_films_carry_the_same_factor(fast_case):
+    """The quasi-static contact state's films (inner/outer_film_thickness_*) are multiplied by each contact's phi_T
+    with the option on (slip 0), and unchanged with it off."""
+    from hsbearing.systems.angular_contact import contact_state
+    from hsbearing.systems.angular_contact import quasistatic as qs
+
+    ds = qs.solve_case(fast_case)
+    off = contact_state.quasi_static_contact_state(fast_case, ds)
+    on_case = fast_case.with_overrides(**{"friction.inlet_heating": "on"})
+    on = contact_state.quasi_static_contact_state(on_case, ds)
+    eta = ehl.lubricant_parameters(fast_case)["eta"]
+    beta, K = _inlet_beta(fast_case), _oil_conductivity(fast_case)
+    mat = fast_case.materials
+    Ep = float(hertz.reduced_modulus(mat.ball.elastic_modulus, mat.ball.poisson_ratio, mat.races.elastic_modulus,
+                                     mat.races.poisson_ratio))
+    wm, rb = ds["ball_orbit_speed"].values, ds["ball_center_radial"].values
+    from hsbearing.models.geometry import derive
+
+    Db = derive(fast_case).D
+    ui = np.abs(fast_case.operating.inner_speed - wm) * (rb - 0.5 * Db * np.cos(ds["inner_contact_angle"].values))
+    phi = ehl.thermal_reduction_factor(ehl.thermal_loading_parameter(eta, beta, ui, K), off["inner_contact_pressure"], Ep)
+    assert on["inner_film_thickness_central"] == pytest.approx(phi * off["inner_film_thickness_central"], rel=1e-12)
+    assert np.all(phi < 1.0)
