@@ -407,8 +407,10 @@ def _film_corrections(case, m, out, walls=None):
 # ----------------------------------------------------------------------------- hsbearing friction CASE (every ball bearing)
 
 NOTE_QS = ("quasi-static model: (ours) power lost at the quasi-static state with the dynamic model's contact laws: race "
-            "traction (rolling, transverse slip and spin, the oil's traction law), EHL rolling couple, the pocket film of the "
-            "centred balls (entraining shear of the turning ball in its pocket), guide-land film of the centred cage, ball "
+            "traction (rolling, transverse slip and spin, the oil's traction law), EHL rolling couple (with its inlet-shear-heating "
+            "factor if friction.inlet_heating = on), the pocket film of the "
+            "centred balls (entraining shear of the turning ball in its pocket), guide-land film of the centred cage (both "
+            "films at their Couette film temperature, friction.thermal_films; flooded, the fill band reported), ball "
             "drag in the air-oil mixture (cavity oil fraction above; relative to the mixture carried round at friction.mixture_corotation "
             "of the cage speed), the jet oil's acceleration to the cage pitch speed (m_dot v^2) and the cage-face windage "
             "(rotating-disc estimate; friction.cavity_losses); excludes pocket boundary friction and contact damping "
