@@ -3,7 +3,7 @@
 Reference: tests/helpers/couette_film_reference.py (momentum tau = eta(T) du/dy with the non-uniform dissipation
 tau^2 / eta(T) in the energy equation, walls at fixed temperatures), which the closed form simplifies to uniform
 dissipation.  Regime: the film speeds the bearings visit (1-100 m/s, both signs), 27-230 degC, films 5-200 um, walls
-equal or 30 K apart (either way round), the Walther viscosity of oil 4109 and of the TP-2275 ester.
+equal or 30 K apart (either way round), the Walther viscosity of oil 4109.
 
 Tolerances, set before comparing (docs/power_loss.md, "Thermal, part-filled cage films"): the shear stress within
 2 % where the film keeps >= 70 % of its isothermal viscosity (isothermal_ratio >= 0.7: every film of the TP-2275
