@@ -26,7 +26,9 @@ from hsbearing.models import ehl, hertz
 from hsbearing.models.ball_bearing import ball
 from hsbearing.models.ball_bearing.kernel import AUX_INDEX
 from hsbearing.models.viscosity import dynamic_viscosity
-from hsbearing.systems.angular_contact.dynamics import _inlet_beta, _oil_conductivity, build_model
+from hsbearing.systems.angular_contact.dynamics import build_model
+from hsbearing.systems.angular_contact.oil_properties import inlet_beta as _inlet_beta
+from hsbearing.systems.angular_contact.oil_properties import oil_conductivity as _oil_conductivity
 
 
 def _eta_beta(T):

@@ -1,7 +1,9 @@
 """The angular-contact ball bearing (Zhang et al. 2016): the 6-DOF dynamic model with cage
 (:mod:`hsbearing.systems.angular_contact.dynamics`, wrapped here), its quasi-static start (:mod:`hsbearing.systems.angular_contact.quasistatic`), the
 quasi-static power loss by source with the SKF 2004 cross-check (``hsbearing friction``) and the run
-figures (:mod:`hsbearing.systems.angular_contact.figures`)."""
+figures (:mod:`hsbearing.systems.angular_contact.figures`); the cage films at their film temperature
+(:mod:`hsbearing.systems.angular_contact.cage_films`) and the oil's properties at any temperature
+(:mod:`hsbearing.systems.angular_contact.oil_properties`), shared by the loss, the thermal network and the model."""
 
 from __future__ import annotations
 

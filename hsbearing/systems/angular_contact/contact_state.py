@@ -102,7 +102,8 @@ def contact_state_variables(case, Qi, Qo, ai, ao, Ui, Uo) -> dict:
             if np.any(ok):
                 th = {}
                 if getattr(case.friction, "inlet_heating", "off") == "on":
-                    from hsbearing.systems.angular_contact.dynamics import _inlet_beta, _oil_conductivity
+                    from hsbearing.systems.angular_contact.oil_properties import inlet_beta as _inlet_beta
+                    from hsbearing.systems.angular_contact.oil_properties import oil_conductivity as _oil_conductivity
 
                     th = dict(thermal=True, beta=_inlet_beta(case), K=_oil_conductivity(case), p_max=p[ok])
                 hc[ok], hm[ok] = ehl.film_thickness(Qp[ok], U[ok], Rx[ok], Ry, Ep, lp["eta"], lp["alpha"], **th)

@@ -31,6 +31,8 @@ from hsbearing.models.ball_bearing.drag import (
 )
 from hsbearing.models.ball_bearing.state import StateLayout
 from hsbearing.models.geometry import curvature_radii, derive
+from hsbearing.systems.angular_contact.oil_properties import inlet_beta as _inlet_beta
+from hsbearing.systems.angular_contact.oil_properties import oil_conductivity as _oil_conductivity
 
 __all__ = ["DynamicModel", "build_model", "simulate", "MODEL_DEFAULTS", "SOLVER_SETTINGS", "LINEAR_SOLVERS",
            "arrowhead_structure", "mechanical_energy"]
@@ -177,31 +179,6 @@ def _oil(case):
     # one precedence rule for the inlet viscosity, shared with the quasi-static solver (which builds y0)
     lub = ehl.lubricant_parameters(case)
     return lub["eta"], lub["alpha"], traction.law_id(case.lubricant.oil, case.lubricant.traction_law)
-
-
-def _inlet_beta(case) -> float:
-    """Temperature-viscosity coefficient beta = -d ln(eta) / dT [1/K] at lubricant.temperature for the inlet shear
-    heating factor: the local slope of the viscosity the model uses (central difference over +-1 K, the precedence of
-    :func:`hsbearing.models.ehl.lubricant_parameters`); the oil's table value where the case fixes the viscosity
-    (a given kinematic viscosity has no slope)."""
-    from hsbearing.models import ehl
-    from hsbearing.systems.angular_contact.thermal import _viscosity
-
-    T = case.lubricant.temperature
-    try:
-        lo, hi = _viscosity(case, T - 1.0), _viscosity(case, T + 1.0)
-    except (ValueError, KeyError):
-        lo = hi = 0.0
-    if lo > 0.0 and hi > 0.0 and lo != hi:
-        return -0.5 * math.log(hi / lo)
-    return float(ehl.lubricant_parameters(case)["beta"])
-
-
-def _oil_conductivity(case) -> float:
-    """Oil thermal conductivity [W/(m K)]: thermal.oil_thermal_conductivity, else the oil's K (Table 1 / its file)."""
-    from hsbearing.models.traction import OILS
-
-    return case.thermal.oil_thermal_conductivity or OILS[case.lubricant.oil].K
 
 
 def traction_values(case, alpha) -> dict:

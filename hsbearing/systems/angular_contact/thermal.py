@@ -46,6 +46,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from hsbearing.results import make_dataset, register, register_attr_units, standard_attrs
+from hsbearing.systems.angular_contact.oil_properties import viscosity_at as _viscosity  # the old name, kept
 
 __all__ = ["NODES", "Network", "solve_network", "cylinder_resistance", "constriction_resistance", "fin_conductance",
            "rotating_cylinder_h", "harris_oil_h", "body_oil_speeds", "bearing_network", "heat_by_body", "thermal_equilibrium",
@@ -207,25 +208,6 @@ def solve_network(net: Network, T0=None, tol: float = 1e-9) -> tuple[dict, np.nd
 
 
 # ----------------------------------------------------------------------------- the bearing
-def _viscosity(case, T):
-    """Dynamic viscosity of the case's oil at T [Pa s] (the precedence of :func:`hsbearing.models.ehl.lubricant_parameters`)."""
-    from hsbearing.models import ehl
-    from hsbearing.models.traction import OILS
-    from hsbearing.models.viscosity import dynamic_viscosity
-
-    lub = case.lubricant
-    d = getattr(lub, "definition", None)
-    if d is not None and lub.kinematic_viscosity is not None and math.isclose(
-            lub.kinematic_viscosity, float(d.kinematic_viscosity(lub.temperature, lub.density)), rel_tol=1e-9):
-        # the case's value came from its lubricant file at lubricant.temperature: evaluate the file at T
-        return float(d.kinematic_viscosity(T, lub.density)) * lub.density
-    if lub.kinematic_viscosity is not None:
-        return lub.kinematic_viscosity * lub.density
-    if lub.dynamic_viscosity is not None:
-        return float(ehl.viscosity_at_temperature(lub.dynamic_viscosity, OILS[lub.oil].beta, T))
-    return float(dynamic_viscosity(lub.oil, T, law=lub.viscosity_law, density=lub.density, T_ref=ehl.REFERENCE_TEMPERATURE))
-
-
 def heat_by_body(case, walls: dict | None = None) -> tuple[dict, dict, object]:
     """Quasi-static power loss by source and contact [W] and the heat each node receives [W].
 
@@ -246,7 +228,7 @@ def heat_by_body(case, walls: dict | None = None) -> tuple[dict, dict, object]:
     aux, gaux = m.outputs(m.y0)
     col = {n: float(np.sum(aux[:, AUX_INDEX[n]])) for n in ("P_trac_i", "P_trac_o", "P_ehl_i", "P_ehl_o", "P_damp_i",
                                                             "P_damp_o", "P_pocket_film", "P_pocket_boundary", "P_drag")}
-    from hsbearing.systems.angular_contact.rating import film_factors
+    from hsbearing.systems.angular_contact.cage_films import film_factors
 
     ff = film_factors(case, m, walls)
     land = float(gaux[GAUX_INDEX["P_guide_land"]]) * ff["land"]["factor"]

@@ -16,10 +16,10 @@ import pytest
 from hsbearing.case import load_case
 from hsbearing.models.ball_bearing import films
 from hsbearing.models.ball_bearing import kernel_io as kio
-from hsbearing.systems.angular_contact import rating
+from hsbearing.systems.angular_contact import cage_films, rating
 from hsbearing.systems.angular_contact.balances import power_variables
 from hsbearing.systems.angular_contact.dynamics import build_model
-from hsbearing.systems.angular_contact.thermal import _viscosity
+from hsbearing.systems.angular_contact.oil_properties import viscosity_at as _viscosity
 
 
 @pytest.fixture(scope="module")
@@ -52,8 +52,8 @@ def test_off_is_the_kernel_and_on_is_the_thermal_factor(case):
     m = build_model(case)
     land, pocket = _films(m)
     assert off["guide_land"] == land and off["pocket_film"] == pocket
-    inp = rating.film_inputs(case, m)
-    k = rating.oil_conductivity(case)
+    inp = cage_films.film_inputs(case, m)
+    k = cage_films.oil_conductivity(case)
     eta_film = m.info["oil_viscosity"]
     for src, key, iso in (("guide_land", "land", land), ("pocket_film", "pocket", pocket)):
         U, h, Ta, Tb = inp[key]
