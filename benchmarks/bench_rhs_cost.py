@@ -9,7 +9,8 @@ Prints, for the default case (zhang2016): the bare ``kernel.rhs_kernel`` and the
 calls (short runs: on a loaded machine some of them run a whole time slice, so the minimum is stable where the
 mean of one long run is not); over the regression trajectory states of tests/data/regression/kernel_rhs_states.npz
 (median, min, max); and the split at the last of those states by variants of the parameter record: without the
-pocket film (``eta_film`` = 0), without friction (no traction quadrature, no pocket friction), without both.
+pocket film (``eta_film`` = 0), without friction (no traction quadrature, no pocket friction), without both; and the
+inlet-shear-heating branch off / on (``inlet_heating``).
 The load average is printed beside the numbers.
 """
 
@@ -77,6 +78,15 @@ def main(argv=None) -> int:
         print(f"split at the last regression state: full {t['full']:.2f} us; pocket film "
               f"{t['full'] - t['no pocket film']:.2f}, friction (traction quadrature + pocket friction) "
               f"{t['full'] - t['no friction']:.2f}, the rest {t['neither']:.2f} us")
+        # the inlet-shear-heating branch (friction.inlet_heating, default off): alternating off / on, best of each
+        t_ih = {False: [], True: []}
+        for _ in range(3):
+            for flag in (False, True):
+                P = m.P.copy()
+                kio.set_value(P, "inlet_heating", flag)
+                t_ih[flag].append(best_us(kernel(y, P), a.runs, a.calls))
+        print(f"inlet heating at the last regression state: off {min(t_ih[False]):.2f} us, on {min(t_ih[True]):.2f} us "
+              f"(best of three alternating repetitions each)")
     print("load average at end: " + " ".join(f"{x:.2f}" for x in os.getloadavg()))
     return 0
 

@@ -324,7 +324,7 @@ def dynamic_model(case):
     return dynamics.build_model(as_case(case))
 
 
-def friction(case, speeds=None, **overrides):
+def friction(case, speeds=None, *, thermal=False, **overrides):
     """Quasi-static power loss by source and the SKF 2004 frictional moment over inner-ring speeds (what
     ``hsbearing friction CASE`` computes for an angular-contact case).
 
@@ -333,6 +333,8 @@ def friction(case, speeds=None, **overrides):
     case : a :class:`Case`, a bundled case name or a case file path.
     speeds : inner-ring speeds: unit strings (``"10000 rpm"``, ``"5000,14000rpm"``), a pint Quantity, SI floats
         [rad/s] or a list of them; None = the case's ``operating.inner_speed``.
+    thermal : as ``hsbearing friction --thermal``: at each speed the thermal network's temperatures reach the
+        contacts (needs ``lubricant.oil_flow_rate``; the temperatures used are variables of the Dataset).
     **overrides : case values (``axial_load="2 kN"``, ``oil="4106"``, ``temperature=373.15``): unit strings,
         pint Quantities or SI floats, as :func:`load_case`.
 
@@ -350,7 +352,7 @@ def friction(case, speeds=None, **overrides):
                                "hsbearing friction")
     if speeds is None:
         speeds = np.array([abs(c.operating.inner_speed)])
-    return friction_angular_contact(c, speeds)
+    return friction_angular_contact(c, speeds, thermal=bool(thermal))
 
 
 def thermal(case, *, lubricant_temperature_start=None, **overrides):

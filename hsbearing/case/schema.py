@@ -172,6 +172,15 @@ SCHEMA: dict[str, dict[str, Field]] = {
                                  "reported by hsbearing friction; docs/power_loss.md)", default=0.0, minimum=0.0, maximum=1.0),
         "cavity_losses": _f("choice", "jet-oil acceleration (m_dot v^2) and cage-face windage in the quasi-static power loss: "
                             "on, or off (drag only, as before)", default="on", choices=("on", "off")),
+        "inlet_heating": _f("choice", "inlet shear heating of the race contacts: the EHL rolling force x phi_T^(0.66/0.67), "
+                            "phi_T the film factor of Gupta et al. 1992 from each contact's own inlet viscosity, speed, "
+                            "pressure and slip (models/ball_bearing/ball.py), in the dynamic kernel and so in the quasi-static "
+                            "power loss; default off: the factor is not yet proven against our own thermal inlet solution "
+                            "(docs/power_loss.md)", default="off", choices=("on", "off")),
+        "thermal_films": _f("choice", "guide-land and pocket films of the quasi-static power loss at their film temperature "
+                            "(shear heat conducted into the two walls, models/ball_bearing/films.py): on, or off "
+                            "(isothermal at the wall temperature, as before); the fill-fraction band is reported either way "
+                            "(docs/power_loss.md)", default="on", choices=("on", "off")),
         "spin_torque_reading": _f("choice", "dgbb_prl spinning torque: dissipated power m_s omega_s / omega, or Tong-Hong projection sum |m_s| sin(alpha)", default="power", choices=("power", "projection")),
     },
     "thermal": {  # hsbearing thermal (docs/thermal.md); defaults are typical values, each with its origin

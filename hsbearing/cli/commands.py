@@ -135,6 +135,18 @@ def cmd_run(args) -> int:
         print(f"thermal equilibrium: lubricant temperature {T - 273.15:.3f} degC (oil outlet "
               f"{float(th.oil_outlet_temperature) - 273.15:.3f} degC, {float(th.heat_generated):.4g} W); the run uses it")
         case = case.with_overrides(**{"lubricant.temperature": f"{T} K"})
+        # which temperatures the run used (the kernel has one oil temperature: race contacts and both cage films)
+        thermal_attrs = {
+            "contact_temperatures": ("hsbearing run --thermal: race contacts, guide-land and pocket films all at the thermal "
+                                     "network's lubricant temperature (T_inner_ring + T_outer_ring + 2 T_balls)/4 = "
+                                     f"{T:.6g} K (lubricant.temperature of case_toml); the kernel's cage films are "
+                                     "isothermal at it (their film temperature is in hsbearing friction only)"),
+            "thermal_lubricant_temperature": T,
+            **{f"thermal_{k}": float(th[k]) for k in ("inner_ring_temperature", "outer_ring_temperature", "ball_temperature",
+                                                      "cage_temperature", "oil_outlet_temperature")},
+        }
+    else:
+        thermal_attrs = {}
     duration = _duration_arg(args.duration)
     if duration is not None:
         check_output_samples(case, duration, source="--duration", key="duration")
@@ -144,6 +156,7 @@ def cmd_run(args) -> int:
     check_archive_name(args.output)  # one suffix rule for every command's -o archive
     try:
         ds = simulate(case, duration=duration, progress=not args.quiet)
+        ds.attrs.update(thermal_attrs)
         if budget is not None:
             from hsbearing.systems.angular_contact.extend import extend_until_determined
 
@@ -390,6 +403,13 @@ def cmd_friction(args) -> int:
     case = load_case(args.case, **parse_sets(getattr(args, "set", None)))
     out = getattr(args, "output", None)
     system = systems.get(case)
+    if getattr(args, "thermal", False):
+        from hsbearing.systems.angular_contact.rating import require_angular_contact
+        from hsbearing.systems.angular_contact.thermal import check_inputs
+
+        require_angular_contact(case, "--thermal needs the thermal network of an angular-contact bearing",
+                                source="--thermal", key="thermal")
+        check_inputs(case)  # the network's inputs (oil flow, ring dimensions): exit 2 before any compute
     if system.friction_archive:
         from hsbearing.results import check_archive_name
 

@@ -214,6 +214,9 @@ def build_parser() -> argparse.ArgumentParser:
     with_case(sp, optional=False, examples=", e.g. zhang2016 or dgbb_6206")
     sp.add_argument("--speeds", default=None, help="comma list with a unit, e.g. 500,5000,15000rpm "
                                                    "(default: 500,5000,15000rpm deep groove; the case speed angular contact)")
+    sp.add_argument("--thermal", action="store_true", help="angular contact: at each speed solve the thermal network "
+                    "(hsbearing thermal) and feed its temperatures to the contacts (race contacts at its lubricant "
+                    "temperature, land and pocket films between their walls' temperatures); needs lubricant.oil_flow_rate")
     sp.add_argument("-o", "--output", help="netCDF archive")
     sp.set_defaults(func=cmd_friction)
 

@@ -37,6 +37,8 @@ __all__ = [
     "hertz_normal_load",
     "strip_load_weights",
     "ehl_rolling_force",
+    "inlet_heating_factor",
+    "inlet_heating_rolling_factor",
     "ball_equations_of_motion",
 ]
 
@@ -123,6 +125,43 @@ def ehl_rolling_force(U, Q, Rx, k, Ep, eta0, alpha):
     Wb = Q / (Ep * Rx * Rx)
     G = alpha * Ep
     return 2.86 * Ep * Rx * Rx * k**0.348 * G**0.022 * Ub**0.66 * Wb**0.47  # [2] Vol. 2, Ch. 5
+
+
+@njit(cache=True)
+def inlet_heating_factor(eta0, beta, K, U, p_max, Ep, slide_roll):
+    """Inlet shear heating film factor phi_T = h_thermal / h_isothermal [-] at one contact (Gupta et al. 1992).
+
+    phi_T = [1 - 13.2 (p_h/E') L^0.42] / [1 + 0.213 (1 + 2.23 |s|^0.83) L^0.64], L = beta eta0 U^2 / K, clipped to
+    [0.05, 1]: the scalar twin of :func:`hsbearing.models.ehl.thermal_reduction_factor` with
+    :func:`hsbearing.models.ehl.thermal_loading_parameter` (ehl.py [4]; equal to round-off:
+    tests/models/test_inlet_heating.py).  eta0 [Pa s], beta [1/K], K [W/(m K)], U entrainment speed [m/s]
+    (either sign), p_max [Pa], Ep [Pa], slide_roll [-].
+    """
+    L = beta * eta0 * U * U / K  # ehl.py [4]
+    s = abs(slide_roll)
+    num = 1.0 - 13.2 * (p_max / Ep) * L**0.42  # ehl.py [4]
+    den = 1.0 + 0.213 * (1.0 + 2.23 * s**0.83) * L**0.64  # ehl.py [4]
+    f = num / den
+    return min(max(f, 0.05), 1.0)
+
+
+#: exponents of the inlet viscosity-speed product in the EHL rolling force (0.66, [2] Vol. 2 Ch. 5) and in the
+#: Hamrock-Dowson central film (0.67, ehl.py [1] Eq. 69)
+_FR_EXP, _HC_EXP = 0.66, 0.67
+
+
+@njit(cache=True)
+def inlet_heating_rolling_factor(phi_T):
+    """Factor on the EHL rolling force F_R of an inlet whose film is reduced by phi_T [-].
+
+    The inlet shear heating acts on the inlet's effective viscosity: the film factor phi_T is read as an effective
+    inlet viscosity eta_eff with (eta_eff / eta0)^0.67 = phi_T (h_c ~ (eta0 U)^0.67, ehl.py [1] Eq. 69); the same
+    inlet gives F_R ~ (eta_eff U)^0.66 ([2] Vol. 2 Ch. 5), so F_R,thermal / F_R = phi_T^(0.66/0.67).  A
+    consistency derivation (one thermal inlet for the film and the rolling force), ASSUMED: the thermal rolling-
+    resistance corrections of Goksem & Hargreaves (1978) and Biboulet & Houpert (2010) were searched for and NOT
+    read; this is not their formula.
+    """
+    return phi_T ** (_FR_EXP / _HC_EXP)
 
 
 @njit(cache=True)

@@ -31,6 +31,8 @@ from hsbearing.models.ball_bearing.ball import (
     ehl_rolling_force,
     groove_contact,
     hertz_normal_load,
+    inlet_heating_factor,
+    inlet_heating_rolling_factor,
 )
 from hsbearing.models.ball_bearing.cage import (
     cage_equations_of_motion,
@@ -247,6 +249,11 @@ def _race_contact(p, qu, qw, load, ball, race, shape):
                     S0 = s1 / U
     if p.switches.ehl_rolling:
         FR = ehl_rolling_force(U, Q, Rx, ke, p.race.Ep, p.lubricant.eta_in, p.lubricant.alpha)
+        if p.switches.inlet_heating:  # one inlet factor per contact from its own speed, pressure and slip
+            a_h = acoef * np.cbrt(Q)
+            p_h = 1.5 * Q * ke / (math.pi * a_h * a_h)  # p_max = 3 Q / (2 pi a b), b = a / k
+            FR *= inlet_heating_rolling_factor(inlet_heating_factor(p.lubricant.eta_in, p.lubricant.beta_T,
+                                                                    p.lubricant.K_oil, U, p_h, p.race.Ep, S0))
         sg = Ut / U
         # F_R at the contact against the rolling sense, F_H = F_R through the ball centre:
         # a pure couple on the ball (seed Eq. 7 signs; docs/dynamics.md)

@@ -64,6 +64,8 @@ PARAMETERS = (
     ("lubricant", "eta_in", _F, "Pa s", "inlet viscosity of the race contacts (EHL rolling force)"),
     ("lubricant", "alpha", _F, "1/Pa", "pressure-viscosity coefficient"),
     ("lubricant", "eta_film", _F, "Pa s", "viscosity of the pocket and guide-land films"),
+    ("lubricant", "beta_T", _F, "1/K", "temperature-viscosity coefficient -d ln(eta)/dT at the inlet (inlet shear heating)"),
+    ("lubricant", "K_oil", _F, "W/(m K)", "oil thermal conductivity (inlet shear heating)"),
     # ---- traction law of the race contacts (models.traction)
     ("traction", "law_id", _I, "1", "traction law (hsbearing.models.traction.law_id)"),
     ("traction", "T_K", _F, "K", "lubricant temperature of the traction law"),
@@ -117,6 +119,7 @@ PARAMETERS = (
     ("switches", "friction", _B, "-", "traction, pocket friction, land friction moment and rub friction"),
     ("switches", "damping", _B, "-", "contact damping, pocket and land films"),
     ("switches", "ehl_rolling", _B, "-", "EHL rolling force F_R (with damping only)"),
+    ("switches", "inlet_heating", _B, "-", "inlet shear heating factor on F_R (friction.inlet_heating; models.ball_bearing.ball)"),
     ("switches", "drag", _B, "-", "air-oil drag on the balls (with friction only)"),
 )
 

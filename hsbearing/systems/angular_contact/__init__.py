@@ -1,7 +1,9 @@
 """The angular-contact ball bearing (Zhang et al. 2016): the 6-DOF dynamic model with cage
 (:mod:`hsbearing.systems.angular_contact.dynamics`, wrapped here), its quasi-static start (:mod:`hsbearing.systems.angular_contact.quasistatic`), the
 quasi-static power loss by source with the SKF 2004 cross-check (``hsbearing friction``) and the run
-figures (:mod:`hsbearing.systems.angular_contact.figures`)."""
+figures (:mod:`hsbearing.systems.angular_contact.figures`); the cage films at their film temperature
+(:mod:`hsbearing.systems.angular_contact.cage_films`) and the oil's properties at any temperature
+(:mod:`hsbearing.systems.angular_contact.oil_properties`), shared by the loss, the thermal network and the model."""
 
 from __future__ import annotations
 
@@ -54,7 +56,7 @@ def friction_command(case, args) -> int:
 
     out = getattr(args, "output", None)
     speeds = parse_speeds(args.speeds) if args.speeds else np.array([abs(case.operating.inner_speed)])
-    ds = friction_angular_contact(case, speeds)
+    ds = friction_angular_contact(case, speeds, thermal=bool(getattr(args, "thermal", False)))
     print(f"case {case.name}: Fa = {abs(case.operating.axial_load):g} N, Fr = {math.hypot(case.operating.radial_load, case.operating.radial_load_z):g} N, "
           f"{oil_label(case.lubricant)} at {case.lubricant.temperature - 273.15:.4g} degC")
     for line in header_lines(case):  # where the oil's data come from; traction borrowed / alpha estimated
@@ -91,6 +93,23 @@ def friction_command(case, args) -> int:
           f" of the cage speed; C_D held subcritical or with the sphere's crisis): "
           + ", ".join(f"{lo:.4g}..{hi:.4g}" for lo, hi in zip(ds.qs_drag_band_low.values, ds.qs_drag_band_high.values))
           + f"; drag above at co-rotation {', '.join(f'{x:.3g}' for x in k)} (friction.mixture_corotation)")
+    for key, what in (("land", "guide-land film"), ("pocket", "pocket films")):
+        Tm = ds[f"{key}_film_temperature"].values
+        if np.any(np.isfinite(Tm)):
+            print(f"{what}: film temperature {', '.join(f'{t - 273.15:.4g}' for t in Tm)} degC (walls "
+                  + ", ".join(f"{a - 273.15:.4g}/{b - 273.15:.4g}" for a, b in zip(ds[f"{key}_film_wall_temperature_a"].values,
+                                                                               ds[f"{key}_film_wall_temperature_b"].values))
+                  + f" degC), viscosity x {', '.join(f'{f:.3g}' for f in ds[f'{key}_film_viscosity_factor'].values)} "
+                  "(friction.thermal_films)")
+    print("total band [W] (drag band; land and pocket films part-filled at the cavity oil fraction .. flooded): "
+          + ", ".join(f"{lo:.4g}..{hi:.4g}" for lo, hi in zip(ds.qs_total_band_low.values, ds.qs_total_band_high.values)))
+    if "contact_inlet_temperature" in ds:
+        print("--thermal: contact inlet temperature " + ", ".join(f"{t - 273.15:.4g}" for t in ds.contact_inlet_temperature.values)
+              + " degC; rings " + ", ".join(f"{a - 273.15:.4g}/{b - 273.15:.4g}" for a, b in zip(
+                  ds.thermal_inner_ring_temperature.values, ds.thermal_outer_ring_temperature.values))
+              + " degC; balls " + ", ".join(f"{t - 273.15:.4g}" for t in ds.thermal_ball_temperature.values)
+              + " degC; cage " + ", ".join(f"{t - 273.15:.4g}" for t in ds.thermal_cage_temperature.values)
+              + " degC; oil out " + ", ".join(f"{t - 273.15:.4g}" for t in ds.thermal_oil_outlet_temperature.values) + " degC")
     print("note: " + NOTE_QS)
     print("note: " + NOTE_SKF)
     if case.friction.law == "coulomb":

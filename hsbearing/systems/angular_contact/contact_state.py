@@ -56,8 +56,9 @@ def contact_state_variables(case, Qi, Qo, ai, ao, Ui, Uo) -> dict:
     a = a_1(alpha) Q^(1/3), b = b_1(alpha) Q^(1/3) with a_1, b_1 tabulated on 65
     angles over the range the run visits (interpolation error < 1e-5, the
     semi-axes vary smoothly with Rx(alpha)); p_max = 1.5 Q / (pi a b).  Film:
-    :func:`hsbearing.models.ehl.film_thickness` (Hamrock-Dowson, isothermal,
-    radius Rx).  lambda with the composite roughness of
+    :func:`hsbearing.models.ehl.film_thickness` (Hamrock-Dowson, radius Rx; isothermal, or with
+    ``friction.inlet_heating = "on"`` times the inlet-shear-heating factor phi_T of each contact -- the same factor
+    and inputs as the kernel's EHL rolling force, at the centre slide-roll ratio 0: the slip is not an input here).  lambda with the composite roughness of
     ``materials.ball.surface_roughness`` and ``materials.races.surface_roughness``.
     Unloaded contacts: p = 0, film and lambda NaN.
     """
@@ -99,7 +100,13 @@ def contact_state_variables(case, Qi, Qo, ai, ao, Ui, Uo) -> dict:
             hc = np.full(Q.shape, np.nan)
             hm = np.full(Q.shape, np.nan)
             if np.any(ok):
-                hc[ok], hm[ok] = ehl.film_thickness(Qp[ok], U[ok], Rx[ok], Ry, Ep, lp["eta"], lp["alpha"])
+                th = {}
+                if getattr(case.friction, "inlet_heating", "off") == "on":
+                    from hsbearing.systems.angular_contact.oil_properties import inlet_beta as _inlet_beta
+                    from hsbearing.systems.angular_contact.oil_properties import oil_conductivity as _oil_conductivity
+
+                    th = dict(thermal=True, beta=_inlet_beta(case), K=_oil_conductivity(case), p_max=p[ok])
+                hc[ok], hm[ok] = ehl.film_thickness(Qp[ok], U[ok], Rx[ok], Ry, Ep, lp["eta"], lp["alpha"], **th)
             out[f"{side}_film_thickness_central"] = hc
             out[f"{side}_film_thickness_minimum"] = hm
             out[f"{side}_film_parameter"] = film_parameter(hm, sigma)

@@ -31,6 +31,8 @@ from hsbearing.models.ball_bearing.drag import (
 )
 from hsbearing.models.ball_bearing.state import StateLayout
 from hsbearing.models.geometry import curvature_radii, derive
+from hsbearing.systems.angular_contact.oil_properties import inlet_beta as _inlet_beta
+from hsbearing.systems.angular_contact.oil_properties import oil_conductivity as _oil_conductivity
 
 __all__ = ["DynamicModel", "build_model", "simulate", "MODEL_DEFAULTS", "SOLVER_SETTINGS", "LINEAR_SOLVERS",
            "arrowhead_structure", "mechanical_energy"]
@@ -267,7 +269,7 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
         k_i=float(ci.ellipticity), k_o=float(co.ellipticity), Ep=Ep,
         omega_i=op.inner_speed, omega_o=op.outer_speed,
         # lubricant and traction law
-        eta_in=eta, alpha=alpha, eta_film=eta,
+        eta_in=eta, alpha=alpha, eta_film=eta, beta_T=_inlet_beta(case), K_oil=_oil_conductivity(case),
         law_id=law, T_K=case.lubricant.temperature, U_eps=opt["rolling_eps"], s_eps=opt["slip_eps"],
         **traction_values(case, alpha),
         # pocket
@@ -289,7 +291,7 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
         # environment and switches
         grav=opt["gravity"],
         friction=bool(friction), damping=bool(damping), ehl_rolling=bool(ehl_rolling and damping),
-        drag=bool(drag and friction),
+        drag=bool(drag and friction), inlet_heating=case.friction.inlet_heating == "on",
     )
     p = kio.pack(vals)
     for name in ("m_c", "Ip_c", "Id_c", "m_i", "Ip_i", "Id_i"):

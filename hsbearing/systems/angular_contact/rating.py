@@ -203,7 +203,7 @@ def life_cli(args) -> int:
     return 0
 
 
-def quasi_static_power_loss(case, speed=None, with_state: bool = False):
+def quasi_static_power_loss(case, speed=None, with_state: bool = False, walls: dict | None = None):
     """Power loss by source [W] at the quasi-static state, with the dynamic model's contact functions.
 
     The dynamic model is built from the case (:func:`hsbearing.systems.angular_contact.dynamics.build_model`); its
@@ -215,9 +215,14 @@ def quasi_static_power_loss(case, speed=None, with_state: bool = False):
     zero there (no ball touches its pocket in the quasi-static state) and contact damping is
     zero (no approach rate).  Needs the dynamic model's data (outer-ring guided cage, land).
 
+    The guide-land and pocket films are then taken at their film temperature and reported over a fill-fraction
+    band (:func:`_film_corrections`, ``friction.thermal_films``).
+
     Parameters
     ----------
     case : Case.  speed : inner-ring speed [rad/s] (None: the case's).
+    walls : body temperatures [K] of the film walls, keys ``inner_ring``, ``outer_ring``, ``balls``, ``cage`` (the
+        thermal network's, ``hsbearing friction --thermal``); None: every wall at ``lubricant.temperature``.
 
     Returns
     -------
@@ -238,6 +243,7 @@ def quasi_static_power_loss(case, speed=None, with_state: bool = False):
     for key in ("cavity_oil_fraction", "drag_reynolds_number", "drag_coefficient"):  # the drag law's inputs (build_model)
         out[key] = float(m.info[key])
     _cavity_losses(case, m, out)
+    _film_corrections(case, m, out, walls)
     w = abs(case.operating.inner_speed - case.operating.outer_speed)
     out["friction_torque"] = out["power_loss"] / w if w > 0 else float("nan")
     if with_state:  # the quasi-static Dataset the state comes from, and the case at that speed
@@ -306,11 +312,41 @@ def _cavity_losses(case, m, out):
     out["mixture_corotation"] = k
 
 
+def _film_corrections(case, m, out, walls=None):
+    """Guide-land and pocket films at their film temperature, with the fill-fraction band (in place).
+
+    The kernel's films are isothermal at the viscosity eta_film of ``lubricant.temperature`` and flooded; at the
+    quasi-static state (cage and balls centred) their dissipation is linear in the film viscosity (checked in
+    tests/systems/angular_contact/test_thermal_films.py), so the film at temperature is the kernel's power times
+    eta_eff / eta_film, eta_eff from :func:`~hsbearing.models.ball_bearing.films.thermal_couette_film` (shear heat
+    conducted into the two walls at ``walls``' temperatures).  ``friction.thermal_films = "off"``: the factor is 1
+    (as before), the walls still reported.  The band: fill fraction from the cavity oil fraction X (low) to 1
+    (high, the default value), :func:`~hsbearing.models.ball_bearing.films.fill_fraction_band`.
+    """
+    from hsbearing.models.ball_bearing import films
+
+    low, high = films.fill_fraction_band(float(m.info["cavity_oil_fraction"]))
+    from hsbearing.systems.angular_contact.cage_films import film_factors
+
+    ff = film_factors(case, m, walls)
+    for src, key in (("guide_land", "land"), ("pocket_film", "pocket")):
+        iso, f = out[src], ff[key]["factor"]
+        if math.isfinite(ff[key]["T_mean"]):  # no film (a ball-piloted cage has no land): no temperature keys
+            out[f"{key}_film_temperature"], out[f"{key}_film_max_temperature"] = ff[key]["T_mean"], ff[key]["T_max"]
+            out[f"{key}_film_speed"], out[f"{key}_film_wall_temperatures"] = ff[key]["speed"], ff[key]["walls"]
+        out[f"{key}_film_factor"] = f
+        out[src] = high * f * iso
+        out["power_loss"] += out[src] - iso
+        out[f"{src}_band_low"], out[f"{src}_band_high"] = low * f * iso, high * f * iso
+
+
 # ----------------------------------------------------------------------------- hsbearing friction CASE (every ball bearing)
 
 NOTE_QS = ("quasi-static model: (ours) power lost at the quasi-static state with the dynamic model's contact laws: race "
-            "traction (rolling, transverse slip and spin, the oil's traction law), EHL rolling couple, the pocket film of the "
-            "centred balls (entraining shear of the turning ball in its pocket), guide-land film of the centred cage, ball "
+            "traction (rolling, transverse slip and spin, the oil's traction law), EHL rolling couple (with its inlet-shear-heating "
+            "factor if friction.inlet_heating = on), the pocket film of the "
+            "centred balls (entraining shear of the turning ball in its pocket), guide-land film of the centred cage (both "
+            "films at their Couette film temperature, friction.thermal_films; flooded, the fill band reported), ball "
             "drag in the air-oil mixture (cavity oil fraction above; relative to the mixture carried round at friction.mixture_corotation "
             "of the cage speed), the jet oil's acceleration to the cage pitch speed (m_dot v^2) and the cage-face windage "
             "(rotating-disc estimate; friction.cavity_losses); excludes pocket boundary friction and contact damping "
@@ -391,6 +427,25 @@ def _register_qs_power():
              "carried round in the quasi-static drag (friction.mixture_corotation)")
     register("mixture_corotation_couette", ("speed",), "1", "upper estimate of the mixture co-rotation: circular Couette "
              "flow between the raceways at the pitch radius over the cage's pure-rolling speed")
+    for key, what in (("land", "guide-land film (cage on its guiding ring)"), ("pocket", "pocket films (ball in its pocket)")):
+        register(f"{key}_film_temperature", ("speed",), "K", f"mean temperature of the {what}: Couette shear heat conducted "
+                 "into the two walls (models/ball_bearing/films.py; nan without the film)")
+        register(f"{key}_film_max_temperature", ("speed",), "K", f"largest temperature across the {what}")
+        register(f"{key}_film_viscosity_factor", ("speed",), "1", f"viscosity of the {what} at its film temperature over "
+                 "the isothermal one at lubricant.temperature (1 with friction.thermal_films = off)")
+        register(f"{key}_film_wall_temperature_a", ("speed",), "K", f"temperature of the first wall of the {what} (land: "
+                 "cage; pocket: ball)")
+        register(f"{key}_film_wall_temperature_b", ("speed",), "K", f"temperature of the second wall of the {what} (land: "
+                 "guiding ring; pocket: cage)")
+    for src in ("guide_land", "pocket_film"):
+        register(f"qs_{src}_band_low", ("speed",), "W", f"qs_power_loss_{src} with the film part-filled at the "
+                 "cavity oil fraction (low end of the fill band; docs/power_loss.md)")
+        register(f"qs_{src}_band_high", ("speed",), "W", f"qs_power_loss_{src} with the film flooded (high end "
+                 "of the fill band = qs_power_loss_{src})")
+    register("qs_total_band_low", ("speed",), "W", "qs_power_loss with the drag at its band's low end and the land and "
+             "pocket films at their fill band's low end")
+    register("qs_total_band_high", ("speed",), "W", "qs_power_loss with the drag at its band's high end and the land "
+             "and pocket films at their fill band's high end")
 
 
 _register_qs_power()
@@ -406,11 +461,53 @@ def require_angular_contact(case, what: str, *, source: str | None = None, key: 
         raise CaseError(source or case.source, key, f"{what} (got a {case.system} case)")
 
 
-def friction_angular_contact(case, speeds):
+def _thermal_row(case, w):
+    """``hsbearing friction --thermal`` at inner-ring speed w [rad/s]: the thermal equilibrium of the case at w, then
+    the quasi-static power loss with its temperatures at the contacts: the race contacts (traction, EHL rolling, film
+    viscosity) at the network's lubricant temperature (T_ir + T_or + 2 T_b)/4 -- one inlet temperature for both
+    race contacts, the rule of the network's fixed point -- and the guide-land and pocket films between their walls'
+    node temperatures (cage / guiding ring; ball / cage).  A CaseError naming lubricant.oil_flow_rate if the network
+    has no steady state at w."""
+    from hsbearing.systems.angular_contact.thermal import thermal_equilibrium
+
+    cw = case.with_overrides(**{"operating.inner_speed": f"{float(w)} rad/s"})
+    th = thermal_equilibrium(cw)
+    if th.attrs["status"] != "ok":
+        raise CaseError(case.source, "lubricant.oil_flow_rate", th.attrs.get("error") or
+                        f"the thermal fixed point did not converge at {rpm(w):.6g} r/min in "
+                        f"{int(th.fixed_point_iterations)} iterations (thermal.max_iterations, thermal.tolerance)")
+    T = {"inner_ring": float(th.inner_ring_temperature), "outer_ring": float(th.outer_ring_temperature),
+         "balls": float(th.ball_temperature), "cage": float(th.cage_temperature)}
+    T_lub = float(th.lubricant_temperature)
+    r = quasi_static_power_loss(cw.with_overrides(**{"lubricant.temperature": f"{T_lub} K"}), None, with_state=True,
+                                walls=T)
+    r["thermal"] = dict(T, oil=float(th.oil_outlet_temperature), contact=T_lub, iterations=float(th.fixed_point_iterations))
+    return r
+
+
+THERMAL_RULE = ("hsbearing friction --thermal: per speed, the thermal network's equilibrium (hsbearing thermal); race "
+                "contacts (traction, EHL rolling, EHL film) at contact_inlet_temperature = (T_inner_ring + T_outer_ring + "
+                "2 T_balls)/4, the same for the inner and outer race; guide-land film between thermal_cage_temperature "
+                "and the guiding ring's node temperature, pocket films between thermal_ball_temperature and "
+                "thermal_cage_temperature (friction.thermal_films); drag, jet and windage with the oil at "
+                "contact_inlet_temperature")
+for _n, _l in (("contact_inlet_temperature", "temperature of the race contacts' oil (traction, EHL rolling, viscosity) "
+                "with --thermal: the thermal network's (T_ir + T_or + 2 T_b)/4"),
+               ("thermal_inner_ring_temperature", "inner ring node temperature of the thermal network (--thermal)"),
+               ("thermal_outer_ring_temperature", "outer ring node temperature of the thermal network (--thermal)"),
+               ("thermal_ball_temperature", "ball node temperature of the thermal network (--thermal)"),
+               ("thermal_cage_temperature", "cage node temperature of the thermal network (--thermal)"),
+               ("thermal_oil_outlet_temperature", "oil outlet temperature of the thermal network (--thermal)")):
+    register(_n, ("speed",), "K", _l)
+
+
+def friction_angular_contact(case, speeds, *, thermal: bool = False):
     """Quasi-static power loss by source and the SKF 2004 angular-contact moments over inner-ring speeds [rad/s].
 
     ``speeds``: SI floats [rad/s], unit strings (``"10000 rpm"``, ``"500,5000rpm"``), lists of them, or pint
-    Quantities (:func:`hsbearing.units.parse_speeds`).
+    Quantities (:func:`hsbearing.units.parse_speeds`).  ``thermal``: the temperatures of the thermal network at each
+    speed reach the contacts (:func:`_thermal_row`, :data:`THERMAL_RULE`; needs lubricant.oil_flow_rate); the
+    temperatures used are variables of the Dataset.
 
     Returns a Dataset over ``speed`` (qs_power_loss_<source>, qs_power_loss [W],
     qs_friction_torque, skf_* [N m]).
@@ -421,7 +518,13 @@ def friction_angular_contact(case, speeds):
     if hasattr(speeds, "to") and hasattr(speeds, "magnitude"):  # a pint Quantity (scalar or array)
         speeds = [f"{float(v)} {speeds.units:~}" for v in np.atleast_1d(speeds.magnitude)]
     w = parse_speeds(speeds, source="speeds") if not isinstance(speeds, np.ndarray) else np.asarray(speeds, dtype=float)
-    rows = [quasi_static_power_loss(case, wi, with_state=True) for wi in w]
+    if thermal:
+        from hsbearing.systems.angular_contact.thermal import check_inputs
+
+        check_inputs(case)
+        rows = [_thermal_row(case, wi) for wi in w]
+    else:
+        rows = [quasi_static_power_loss(case, wi, with_state=True) for wi in w]
     from hsbearing.systems.angular_contact import contact_state
 
     warns = []
@@ -437,6 +540,25 @@ def friction_angular_contact(case, speeds):
                       ("mixture_corotation_couette", "mixture_corotation_couette")):
         data[name] = np.array([r[key] for r in rows])
     data["qs_power_loss"] = np.array([r["power_loss"] for r in rows])
+    if thermal:
+        for name, key in (("contact_inlet_temperature", "contact"), ("thermal_inner_ring_temperature", "inner_ring"),
+                          ("thermal_outer_ring_temperature", "outer_ring"), ("thermal_ball_temperature", "balls"),
+                          ("thermal_cage_temperature", "cage"), ("thermal_oil_outlet_temperature", "oil")):
+            data[name] = np.array([r["thermal"][key] for r in rows])
+    for key in ("land", "pocket"):
+        nan = float("nan")  # nan where the bearing has no such film (ball-piloted cage: no land)
+        data[f"{key}_film_temperature"] = np.array([r.get(f"{key}_film_temperature", nan) for r in rows])
+        data[f"{key}_film_max_temperature"] = np.array([r.get(f"{key}_film_max_temperature", nan) for r in rows])
+        data[f"{key}_film_viscosity_factor"] = np.array([r[f"{key}_film_factor"] for r in rows])
+        data[f"{key}_film_wall_temperature_a"] = np.array([r.get(f"{key}_film_wall_temperatures", (nan, nan))[0] for r in rows])
+        data[f"{key}_film_wall_temperature_b"] = np.array([r.get(f"{key}_film_wall_temperatures", (nan, nan))[1] for r in rows])
+    for src in ("guide_land", "pocket_film"):
+        for end in ("low", "high"):
+            data[f"qs_{src}_band_{end}"] = np.array([r[f"{src}_band_{end}"] for r in rows])
+    for end in ("low", "high"):
+        data[f"qs_total_band_{end}"] = np.array([
+            r["power_loss"] - r["drag"] + r[f"drag_band_{end}"]
+            - r["guide_land"] - r["pocket_film"] + r[f"guide_land_band_{end}"] + r[f"pocket_film_band_{end}"] for r in rows])
     data["qs_friction_torque"] = np.array([r["friction_torque"] for r in rows])
     data.update(skf2004.skf_moments(case, w))
     for term, srcs in OURS_AS_SKF.items():
@@ -463,5 +585,7 @@ def friction_angular_contact(case, speeds):
                      "(docs/power_loss.md)")
     attrs = standard_attrs(case, "ok", title="hsbearing friction: quasi-static power loss by source, SKF 2004 model",
                            note_quasi_static=NOTE_QS, note_skf=NOTE_SKF, cavity_oil_fraction_source=xsrc,
+                           contact_temperatures=THERMAL_RULE if thermal else
+                           "lubricant.temperature at every contact and film wall (no --thermal)",
                            warnings=" | ".join(warns) if warns else "none")
     return make_dataset(data, coords={"speed": w}, attrs=attrs)

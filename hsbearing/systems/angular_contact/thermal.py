@@ -46,6 +46,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from hsbearing.results import make_dataset, register, register_attr_units, standard_attrs
+from hsbearing.systems.angular_contact.oil_properties import viscosity_at as _viscosity  # the old name, kept
 
 __all__ = ["NODES", "Network", "solve_network", "cylinder_resistance", "constriction_resistance", "fin_conductance",
            "rotating_cylinder_h", "harris_oil_h", "body_oil_speeds", "bearing_network", "heat_by_body", "thermal_equilibrium",
@@ -207,25 +208,6 @@ def solve_network(net: Network, T0=None, tol: float = 1e-9) -> tuple[dict, np.nd
 
 
 # ----------------------------------------------------------------------------- the bearing
-def _viscosity(case, T):
-    """Dynamic viscosity of the case's oil at T [Pa s] (the precedence of :func:`hsbearing.models.ehl.lubricant_parameters`)."""
-    from hsbearing.models import ehl
-    from hsbearing.models.traction import OILS
-    from hsbearing.models.viscosity import dynamic_viscosity
-
-    lub = case.lubricant
-    d = getattr(lub, "definition", None)
-    if d is not None and lub.kinematic_viscosity is not None and math.isclose(
-            lub.kinematic_viscosity, float(d.kinematic_viscosity(lub.temperature, lub.density)), rel_tol=1e-9):
-        # the case's value came from its lubricant file at lubricant.temperature: evaluate the file at T
-        return float(d.kinematic_viscosity(T, lub.density)) * lub.density
-    if lub.kinematic_viscosity is not None:
-        return lub.kinematic_viscosity * lub.density
-    if lub.dynamic_viscosity is not None:
-        return float(ehl.viscosity_at_temperature(lub.dynamic_viscosity, OILS[lub.oil].beta, T))
-    return float(dynamic_viscosity(lub.oil, T, law=lub.viscosity_law, density=lub.density, T_ref=ehl.REFERENCE_TEMPERATURE))
-
-
 #: what each ``thermal.power_source`` heats the network with (printed and kept in the archive's attrs)
 POWER_SOURCE_NOTE = {
     "quasistatic": ("the dynamic kernel's sources at the quasi-static state (race-control ball spin, centred cage); "
@@ -237,13 +219,17 @@ POWER_SOURCE_NOTE = {
 }
 
 
-def heat_by_body(case) -> tuple[dict, dict, object]:
+def heat_by_body(case, walls: dict | None = None) -> tuple[dict, dict, object]:
     """Power loss by source and contact [W] and the heat each node receives [W], from the source that
     ``thermal.power_source`` chooses (docs/power_loss.md, "Quasi-static, dynamic and SKF: what each includes").
 
     ``quasistatic`` (default): the dynamic kernel's dissipation at the quasi-static state.  ``dynamic``: a dynamic run
     of ``thermal.dynamic_duration`` from that state; each source is its mean over the second half of the run, and
     the race sources are split inner/outer in the ratio of the run's final state.
+
+    The guide-land and pocket films are taken at their film temperature between their walls (``walls``: node
+    temperatures [K], the previous network solution; None: every wall at ``lubricant.temperature``), as in
+    ``hsbearing friction`` (:func:`hsbearing.systems.angular_contact.rating.film_factors`, ``friction.thermal_films``).
 
     Split (docs/thermal.md): a race contact's traction, EHL rolling and damping losses half to the ring, half
     to the ball; the pocket losses half to the ball, half to the cage; the guide-land loss half to the cage,
@@ -260,7 +246,11 @@ def heat_by_body(case) -> tuple[dict, dict, object]:
         aux, gaux = _dynamic_outputs(case, m)
     col = {n: float(np.sum(aux[:, AUX_INDEX[n]])) for n in ("P_trac_i", "P_trac_o", "P_ehl_i", "P_ehl_o", "P_damp_i",
                                                             "P_damp_o", "P_pocket_film", "P_pocket_boundary", "P_drag")}
-    land = float(gaux[GAUX_INDEX["P_guide_land"]])
+    from hsbearing.systems.angular_contact.cage_films import film_factors
+
+    ff = film_factors(case, m, walls)
+    land = float(gaux[GAUX_INDEX["P_guide_land"]]) * ff["land"]["factor"]
+    col["P_pocket_film"] *= ff["pocket"]["factor"]
     src = {"race_traction_inner": col["P_trac_i"], "race_traction_outer": col["P_trac_o"],
            "ehl_rolling_inner": col["P_ehl_i"], "ehl_rolling_outer": col["P_ehl_o"],
            "contact_damping_inner": col["P_damp_i"], "contact_damping_outer": col["P_damp_o"],
@@ -452,7 +442,9 @@ _ATTR_UNITS = {"network_residual_W": "W", "network_G_ball_inner": "W/K", "networ
                "network_oil_heat_capacity_rate": "W/K", "network_gamma": "1",
                **{f"network_{k}": "m" for k in ("D", "dm", "B", "d", "Do", "DH", "BH", "Ls")},
                **{f"network_{k}": "m^2" for k in ("A_ir", "A_or", "A_balls", "A_cage", "A_housing")}}
-for _a, _u in _ATTR_UNITS.items():
+_ATTR_UNITS.update({f"thermal_{k}": "K" for k in ("lubricant_temperature", "inner_ring_temperature", "outer_ring_temperature",
+                                                  "ball_temperature", "cage_temperature", "oil_outlet_temperature")})
+for _a, _u in _ATTR_UNITS.items():  # the thermal_* ones: the attrs of a run archive of hsbearing run --thermal
     register_attr_units(_a, _u)
 
 
@@ -494,7 +486,7 @@ def thermal_equilibrium(case, *, progress=None, T_start=None, x0_nodes=None):
                        "more oil flow (lubricant.oil_flow_rate) or a cooler inlet is needed")
             it -= 1
             break
-        src, heat, qs = heat_by_body(c)
+        src, heat, qs = heat_by_body(c, walls=T_nodes)
         net, info = bearing_network(c, heat, qs, T_in)
         x0 = None if T_nodes is None else [T_nodes[n] for n in NODES]
         T_nodes, R = solve_network(net, x0)

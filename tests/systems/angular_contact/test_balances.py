@@ -92,6 +92,8 @@ REGIMES = {
     # the land on the inner ring: its film and rub are internal (cage <-> ring), not an external torque
     # (independent review: the X balance was off by exactly the land torque before)
     "inner_guided": {"cage.guidance": "inner_ring"},
+    # the inlet-shear-heating factor on the EHL rolling force (friction.inlet_heating): its couple's power is a source
+    "inlet_heating": {"friction.inlet_heating": "on", "operating.inner_speed": "30000 rpm"},
 }
 
 
