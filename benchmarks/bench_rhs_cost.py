@@ -2,7 +2,7 @@
 
 Usage (run it in each checkout to compare, in one sitting)::
 
-    .venv/bin/python benchmarks/bench_rhs_cost.py [--runs 200] [--calls 100] [--no-split] [--no-states]
+    .venv/bin/python benchmarks/bench_rhs_cost.py [--runs 200] [--calls 100] [--no-split] [--no-states] [--law eyring]
 
 Prints, for the default case (zhang2016): the bare ``kernel.rhs_kernel`` and the Python wrapper
 ``DynamicModel.rhs`` at the initial state, microseconds per call as the best of ``--runs`` runs of ``--calls``
@@ -43,6 +43,8 @@ def main(argv=None) -> int:
     ap.add_argument("--calls", type=int, default=100)
     ap.add_argument("--no-split", action="store_true")
     ap.add_argument("--no-states", action="store_true")
+    ap.add_argument("--law", default=None,
+                    help="lubricant.traction_law of the case (e.g. eyring: the physical model); default: the case's")
     a = ap.parse_args(argv)
     import hsbearing
     from hsbearing.models.ball_bearing import kernel as K
@@ -51,7 +53,8 @@ def main(argv=None) -> int:
 
     print(f"hsbearing from {Path(hsbearing.__file__).parent}; load average at start: "
           + " ".join(f"{x:.2f}" for x in os.getloadavg()))
-    m = build_model(hsbearing.load_case("zhang2016"))
+    m = build_model(hsbearing.load_case("zhang2016", **({"lubricant.traction_law": a.law} if a.law else {})))
+    print(f"traction law: {a.law or 'the case default'}")
     yd = np.empty(m.y0.size)
 
     def kernel(y, P):
