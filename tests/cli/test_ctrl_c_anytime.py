@@ -120,6 +120,7 @@ def _campaign(tmp_path, n: int, seed: int, cmd):
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="reads /proc/PID/status")
 def test_ctrl_c_at_random_times_gives_130_and_a_complete_archive_or_none(tmp_path):
     codes = _campaign(tmp_path, 6, seed=1, cmd=QS)
+    print("(delay / life, exit status):", codes)  # shown with pytest -rA
     assert any(rc == 130 for _, rc in codes), codes  # the signal was acted on
 
 
@@ -127,4 +128,5 @@ def test_ctrl_c_at_random_times_gives_130_and_a_complete_archive_or_none(tmp_pat
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="reads /proc/PID/status")
 def test_ctrl_c_at_random_times_many(tmp_path):
     codes = _campaign(tmp_path, 20, seed=2, cmd=QS) + _campaign(tmp_path / "run", 10, seed=3, cmd=RUN)
+    print("(delay / life, exit status):", codes)  # shown with pytest -rA
     assert sum(rc == 130 for _, rc in codes) >= 15, codes
