@@ -2,8 +2,8 @@
 cost of a table look-up and a degree-5 polynomial, C2 across the cells, with a bound checked when built.
 
 Why: the physical traction model integrates a local stress over 8 nodes x 5 strips of every contact at every rhs
-call, and each node's libm calls (an exp, an asinh, an expm1) are ~90 % of that cost (docs/performance.md,
-"Physical traction model").  Every local stress law of the strip integrand (the isothermal Eyring law of
+call, and each node's libm calls (an exp, an asinh, an expm1) were ~90 % of that cost (docs/traction.md,
+"Tabulated strip integrand").  Every local stress law of the strip integrand (the isothermal Eyring law of
 :mod:`~hsbearing.models.traction.eyring`, a thermal one) is built from a few smooth functions of ONE variable;
 each such function is tabulated here once, at import, and evaluated in the kernel by
 :func:`hsbearing.models.traction._kernels.table_eval_nb`.  Nothing per contact, nothing remembered between rhs calls:
