@@ -2,7 +2,8 @@
 
 Usage (run it in each checkout to compare, in one sitting)::
 
-    .venv/bin/python benchmarks/bench_rhs_cost.py [--runs 200] [--calls 100] [--no-split] [--no-states]
+    .venv/bin/python benchmarks/bench_rhs_cost.py [--runs 200] [--calls 100] [--no-split] [--no-states] [--law eyring]
+    .venv/bin/python benchmarks/bench_rhs_cost.py --ratio eyring     # the physical traction law's cost ratio
 
 Prints, for the default case (zhang2016): the bare ``kernel.rhs_kernel`` and the Python wrapper
 ``DynamicModel.rhs`` at the initial state, microseconds per call as the best of ``--runs`` runs of ``--calls``
@@ -44,6 +45,11 @@ def main(argv=None) -> int:
     ap.add_argument("--calls", type=int, default=100)
     ap.add_argument("--no-split", action="store_true")
     ap.add_argument("--no-states", action="store_true")
+    ap.add_argument("--ratio", default=None, metavar="LAW",
+                    help="only: the rhs cost of traction law LAW over the case's own law, both models in this process, "
+                         "alternated state by state, CPU time (process_time) best-of: per state and median")
+    ap.add_argument("--law", default=None,
+                    help="lubricant.traction_law of the case (e.g. eyring: the physical model); default: the case's")
     a = ap.parse_args(argv)
     import hsbearing
     from hsbearing.models.ball_bearing import kernel as K
@@ -52,7 +58,10 @@ def main(argv=None) -> int:
 
     print(f"hsbearing from {Path(hsbearing.__file__).parent}; load average at start: "
           + " ".join(f"{x:.2f}" for x in os.getloadavg()))
-    m = build_model(hsbearing.load_case("zhang2016"))
+    if a.ratio:
+        return _ratio(a, K, build_model, hsbearing)
+    m = build_model(hsbearing.load_case("zhang2016", **({"lubricant.traction_law": a.law} if a.law else {})))
+    print(f"traction law: {a.law or 'the case default'}")
     yd = np.empty(m.y0.size)
 
     def kernel(y, P):
@@ -87,6 +96,44 @@ def main(argv=None) -> int:
                 t_ih[flag].append(best_us(kernel(y, P), a.runs, a.calls))
         print(f"inlet heating at the last regression state: off {min(t_ih[False]):.2f} us, on {min(t_ih[True]):.2f} us "
               f"(best of three alternating repetitions each)")
+    print("load average at end: " + " ".join(f"{x:.2f}" for x in os.getloadavg()))
+    return 0
+
+
+def best_cpu_us(fn, runs: int, calls: int) -> float:
+    """Best of ``runs`` runs of ``calls`` calls of ``fn`` in CPU time (process_time): microseconds per call."""
+    fn()
+    best = float("inf")
+    for _ in range(runs):
+        t0 = time.process_time()
+        for _ in range(calls):
+            fn()
+        best = min(best, (time.process_time() - t0) / calls)
+    return best * 1e6
+
+
+def _ratio(a, K, build_model, hsbearing) -> int:
+    """rhs cost of law a.ratio over the case's own law: the same states, both models, alternated."""
+    ms = {"own": build_model(hsbearing.load_case("zhang2016")),
+          a.ratio: build_model(hsbearing.load_case("zhang2016", **{"lubricant.traction_law": a.ratio}))}
+    print(f"traction laws: the case's own vs {a.ratio}")
+    Y = np.concatenate([ms["own"].y0[None, :], np.load(STATES)["y_default"]])
+    runs, calls = max(a.runs // 10, 3), max(a.calls // 2, 10)
+    rows = []
+    for y in Y:
+        y = y.copy()
+        t = {}
+        for name, m in ms.items():
+            yd = np.empty(m.y0.size)
+            t[name] = best_cpu_us(lambda m=m, yd=yd: K.rhs_kernel(y, m.P, m.qu, m.qw, yd, m._contrib, m._aux, False,
+                                                                   m._csum, m._gaux), runs, calls)
+        rows.append((t["own"], t[a.ratio]))
+    r = np.array(rows)
+    q = r[:, 1] / r[:, 0]
+    print(f"y0: own law {r[0, 0]:.2f} us, {a.ratio} {r[0, 1]:.2f} us CPU per call: ratio {q[0]:.2f}")
+    print(f"{len(Y) - 1} regression states: own law median {np.median(r[1:, 0]):.1f} us, {a.ratio} median "
+          f"{np.median(r[1:, 1]):.1f} us; ratio per state median {np.median(q[1:]):.2f} (min {q[1:].min():.2f}, "
+          f"max {q[1:].max():.2f}); ratio of the minima {r[1:, 1].min() / r[1:, 0].min():.2f}")
     print("load average at end: " + " ".join(f"{x:.2f}" for x in os.getloadavg()))
     return 0
 

@@ -30,14 +30,17 @@ def main(argv: list[str] | None = None) -> int:
         _interrupt.take_over()
     try:
         try:
-            return _main(argv)
+            rc = _main(argv)
         finally:
             if program:  # the status is decided: a Ctrl-C from here to the interpreter's exit changes nothing
                 _interrupt.ignore_after_exit()
     except KeyboardInterrupt as exc:  # one that arrived outside the command's own handler (e.g. in a message)
         if program:
             _interrupt.ignore_after_exit()
-        return _interrupted(exc)
+        rc = _interrupted(exc)
+    if program:  # every KeyboardInterrupt is handled: python -m must not re-raise the signal at exit
+        _interrupt.forget_handled_interrupt()
+    return rc
 
 
 def _interrupted(exc: KeyboardInterrupt) -> int:

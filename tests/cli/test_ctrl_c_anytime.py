@@ -1,10 +1,12 @@
 """Ctrl-C at any moment of an hsbearing command (``quasistatic`` in the default tier, ``run`` in the slow tier): exit status 130 (or 0 when the status was already decided), never
 death by the signal (-2), and either a complete archive or none (no temporary file left).
 
-SIGINT is sent at random times over the command's whole life, from the moment the interpreter has installed its
-SIGINT handler (read from /proc/PID/status; before it, the Python runtime itself, not hsbearing, decides) through
-the imports, the case, the integration, the save and the figures, to the interpreter's exit.  A handful of times
-in the default tier, more in the slow tier.
+SIGINT is sent at random times over the command's whole life, from the moment hsbearing's first statement holds
+Ctrl-C (before it the Python runtime itself, not hsbearing, decides: ``site``, the import machinery; see
+hsbearing/_interrupt.py) through the imports, the case, the integration, the save and the figures, to the
+interpreter's exit.  A handful of times in the default tier, more in the slow tier.  No residual form is accepted.
+The one that remained -- the handled line, then death by SIGINT under ``python -m`` -- is reproduced
+deterministically below (a KeyboardInterrupt out of string-exec'd code sets CPython's unhandled-interrupt flag).
 """
 
 from __future__ import annotations
@@ -36,28 +38,29 @@ def _sigint_caught(pid: int) -> bool:
     return False
 
 
+def _hsbearing_started(pid: int) -> bool:
+    """hsbearing/__init__ has run its first statements (the Ctrl-C guard): it then imports numpy, whose compiled core
+    appears in the process's mappings.  Nothing before that (site, the .pth files, runpy) imports numpy."""
+    try:
+        return "_multiarray_umath" in Path(f"/proc/{pid}/maps").read_text()
+    except OSError:
+        return False
+
+
 def _start(out: Path, cmd):
     env = dict(os.environ, PYTHONPATH=str(ROOT))
     proc = subprocess.Popen([sys.executable, "-m", "hsbearing.cli", *cmd, "-o", str(out)], stdout=subprocess.PIPE,
                             stderr=subprocess.PIPE, text=True, env=env, cwd=str(out.parent),
                             preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     t0 = time.monotonic()
-    while proc.poll() is None and not _sigint_caught(proc.pid) and time.monotonic() - t0 < 30:
+    while proc.poll() is None and not (_sigint_caught(proc.pid) and _hsbearing_started(proc.pid)) \
+            and time.monotonic() - t0 < 60:
         time.sleep(0.001)
     return proc, time.monotonic()
 
 
-#: KNOWN RESIDUAL (open): under heavy load one run in six once ended with the handled line "hsbearing: interrupted"
-#: and then status -2 (killed by SIGINT) instead of 130, the archive absent; not understood yet.  Such a run is
-#: accepted only in that exact form (the handled line, nothing half-written) and counted, so it cannot hide a crash.
-RESIDUAL = []
-
-
 def _check(out: Path, rc: int, err: str):
-    if rc == -signal.SIGINT and err.strip().splitlines()[-1:] == ["hsbearing: interrupted"] and not out.exists():
-        RESIDUAL.append(err)
-    else:
-        assert rc in (0, 130), (rc, err[-600:])  # -2 = killed by SIGINT: the documented 130 was not given
+    assert rc in (0, 130), (rc, err[-600:])  # -2 = killed by SIGINT: the documented 130 was not given
     left = [p.name for p in out.parent.iterdir() if p.name.endswith(".tmp")]
     assert not left, left
     if out.exists():  # complete, or absent
@@ -70,6 +73,19 @@ def _check(out: Path, rc: int, err: str):
         lines = [ln for ln in err.splitlines() if ln.startswith("hsbearing:")]
         assert lines and "interrupted" in lines[-1], err[-600:]
         assert "Traceback" not in err, err[-1500:]
+
+
+def test_handled_interrupt_out_of_string_exec_code_exits_130_under_python_m(tmp_path):
+    """The residual once accepted here (one run in six under load): "hsbearing: interrupted", then status -2.
+    Python >= 3.8 marks a KeyboardInterrupt leaving string-exec'd code as unhandled even when it is caught, and
+    ``python -m`` then kills itself with SIGINT at exit; main() clears the mark (_interrupt.forget_handled_interrupt).
+    Without the fix this exits -2 every time (checked by reverting it)."""
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(ROOT), str(Path(__file__).parent)]))
+    p = subprocess.run([sys.executable, "-m", "_interrupt_in_string_exec"], capture_output=True, text=True,
+                       env=env, cwd=str(tmp_path), timeout=120)
+    assert p.returncode == 130, (p.returncode, p.stderr[-600:])
+    assert p.stderr.strip().splitlines()[-1] == "hsbearing: interrupted", p.stderr[-600:]
+    assert "Traceback" not in p.stderr
 
 
 def _campaign(tmp_path, n: int, seed: int, cmd):
@@ -104,6 +120,7 @@ def _campaign(tmp_path, n: int, seed: int, cmd):
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="reads /proc/PID/status")
 def test_ctrl_c_at_random_times_gives_130_and_a_complete_archive_or_none(tmp_path):
     codes = _campaign(tmp_path, 6, seed=1, cmd=QS)
+    print("(delay / life, exit status):", codes)  # shown with pytest -rA
     assert any(rc == 130 for _, rc in codes), codes  # the signal was acted on
 
 
@@ -111,4 +128,5 @@ def test_ctrl_c_at_random_times_gives_130_and_a_complete_archive_or_none(tmp_pat
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="reads /proc/PID/status")
 def test_ctrl_c_at_random_times_many(tmp_path):
     codes = _campaign(tmp_path, 20, seed=2, cmd=QS) + _campaign(tmp_path / "run", 10, seed=3, cmd=RUN)
+    print("(delay / life, exit status):", codes)  # shown with pytest -rA
     assert sum(rc == 130 for _, rc in codes) >= 15, codes

@@ -14,6 +14,7 @@ import numba
 
 from hsbearing.compile_cache import check_compile_cache
 from hsbearing.models.traction.eyring import LOG_ASINH, MINOR_NODES
+from hsbearing.models.traction.tables import ASINH_EXP, LOG_ASINH_LOW, ONE_MINUS_EXP_END, ONE_MINUS_EXP_OVER_X
 from hsbearing.models.traction.zhang2016 import (
     LOAD_FACTOR_SHARPNESS,
     NOTCH_SHARPNESS,
@@ -26,7 +27,7 @@ from hsbearing.models.traction.zhang2016 import (
 )
 
 __all__ = ["coefficients_nb", "mu_nb", "traction_coefficients_nb", "traction_mu_nb", "eyring_coefficients_nb",
-           "eyring_strip_mu_nb", "EYRING_LAW_ID", "COEFFICIENTS_LAW_ID"]
+           "eyring_strip_mu_nb", "eyring_strip_mu_exact_nb", "table_eval_nb", "EYRING_LAW_ID", "COEFFICIENTS_LAW_ID"]
 
 #: Law ids of the oil-independent laws (the registered seed laws are rows 0, 1, ... of zhang2016.PARAMS):
 #: the physical model (models.traction.eyring) and the seed form with user coefficients (kernel parameters
@@ -144,9 +145,81 @@ def eyring_coefficients_nb(W, U, Ep, Rx, k, a, eta_in, alpha, tau0, Lam, G):
     return Lam, tau0 / p0, math.log(eta_in * U / (h * tau0)), alpha * p0, Ge * b / (h * p0)
 
 
-@numba.njit(cache=True, nogil=True)
+# quintic Hermite tables of the strip integrand's one-variable functions (models.traction.tables), captured as
+# compile-time constants: asinh(e^x) and (1 - e^-y)/y
+_G_TAB, _G_X0, _G_IH = ASINH_EXP.coef, ASINH_EXP.x0, 1.0 / ASINH_EXP.h
+_Q_TAB, _Q_X0, _Q_IH = ONE_MINUS_EXP_OVER_X.coef, ONE_MINUS_EXP_OVER_X.x0, 1.0 / ONE_MINUS_EXP_OVER_X.h
+_G_LO, _Q_END = LOG_ASINH_LOW, ONE_MINUS_EXP_END
+
+
+@numba.njit(cache=True, nogil=True, inline="always", error_model="numpy")
+def table_eval_nb(coef, x0, inv_h, x):
+    """A :mod:`~hsbearing.models.traction.tables` table (coefficients ``coef``, start ``x0``, 1/cell width
+    ``inv_h``) at x [-]: one look-up and a degree-5 Horner polynomial; x outside the table is clamped to its end
+    cells (callers branch before).  Generic: any local stress law of a strip integrand can tabulate its smooth
+    one-variable functions with ``tables.build`` and evaluate them here."""
+    v = (x - x0) * inv_h
+    n = coef.shape[0]
+    i = int(v) if v > 0.0 else 0
+    if i > n - 1:
+        i = n - 1
+    t = v - i
+    return coef[i, 0] + t * (coef[i, 1] + t * (coef[i, 2] + t * (coef[i, 3] + t * (coef[i, 4] + t * coef[i, 5]))))
+
+
+@numba.njit(cache=True, nogil=True, error_model="numpy")
 def eyring_strip_mu_nb(c, S, u):
-    """Scalar numba twin of :func:`hsbearing.models.traction.eyring.strip_mu` (odd in S) [-]."""
+    """:func:`eyring_strip_mu_exact_nb` with the node's transcendental functions from tables (odd in S) [-].
+
+    Per node: asinh(e^lz) = lz + ln 2 above :data:`LOG_ASINH` (exact to double precision), the table
+    ``tables.ASINH_EXP`` on [LOG_ASINH_LOW, LOG_ASINH] (relative error <= 1.5e-13), e^lz below (exact to double
+    precision: asinh z = z (1 - z^2/6 ...)); the Maxwell build-up tau_f (1 - e^-y), y = tau_el / tau_f, as
+    tau_el q(y) with q(y) = (1 - e^-y)/y from ``tables.ONE_MINUS_EXP_OVER_X`` (relative error <= 3e-13, so also
+    in the elastic limit y -> 0), and tau_f itself from y = 40 on (1 - e^-40 rounds to 1).  One libm log per
+    strip (ln|S|).  Every switch point joins its two sides within round-off, and the tables are C2, so mu stays
+    smooth in S (tests/models/test_traction_tables.py: the bound against this function's exact twin over the
+    whole regime, and finite-difference derivatives across the switch points).
+    """
+    if S == 0.0:
+        return 0.0
+    Lam, r0, lv, cp, ce = c
+    s = abs(S)
+    su = math.sqrt(max(1.0 - u * u, 0.0))
+    lS = lv + math.log(s)
+    cel = ce * s * su
+    num = 0.0
+    den = 0.0
+    for j in range(_MN.shape[0]):
+        sn, cs, w = _MN[j, 0], _MN[j, 1], _MN[j, 2]
+        pi_ = su * cs
+        tL = Lam * pi_
+        lz = lS + cp * pi_
+        if lz > LOG_ASINH:
+            asn = lz + _LN2
+        elif lz >= _G_LO:
+            asn = table_eval_nb(_G_TAB, _G_X0, _G_IH, lz)
+        else:
+            asn = math.exp(lz)
+        tv = r0 * asn
+        lo, hi = min(tv, tL), max(tv, tL)  # smooth minimum (tv^-4 + tL^-4)^(-1/4) (eyring.smooth_min)
+        r = lo / hi
+        r2 = r * r
+        tf = lo / math.sqrt(math.sqrt(1.0 + r2 * r2))
+        tel = cel * (1.0 + sn)
+        y = tel / tf
+        if y < _Q_END:
+            num += w * (tel * table_eval_nb(_Q_TAB, _Q_X0, _Q_IH, y))
+        else:
+            num += w * tf
+        den += w * pi_
+    mu = num / den
+    return mu if S > 0.0 else -mu
+
+
+@numba.njit(cache=True, nogil=True)
+def eyring_strip_mu_exact_nb(c, S, u):
+    """Scalar numba twin of :func:`hsbearing.models.traction.eyring.strip_mu` with libm's exp, asinh and expm1 at every
+    node (odd in S) [-]: the reference of the tabulated :func:`eyring_strip_mu_nb` the kernel calls."""
     if S == 0.0:
         return 0.0
     Lam, r0, lv, cp, ce = c

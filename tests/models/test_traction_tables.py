@@ -1,0 +1,180 @@
+"""The tabulated strip integrand of the physical traction model (models/traction/tables.py, the kernel's
+``eyring_strip_mu_nb``) against its exact twin (libm exp/asinh/expm1 at every node, ``eyring_strip_mu_exact_nb``)
+and the Python evaluation (``eyring.strip_mu``).
+
+Bounds set before measuring, from the tables' own asserted relative errors (asinh(e^x): 1.5e-13, (1-e^-y)/y: 3e-13):
+|dmu| <= 5e-13 |mu| + 1e-16 and |dmu| <= 2e-14 over the whole regime the model visits (slide-roll 1e-4 ... 0.3, both
+signs; rolling speed 1-100 m/s, both signs; 100-5000 N; 27-230 degC with each bundled seed oil's viscosity and
+pressure-viscosity coefficient at that temperature; every strip of the kernel; inner and outer contacts).
+Smoothness for BDF: the tables are C2 by construction (checked at every knot), and dmu/dS by central differences
+equals the exact law's over a dense slip scan that moves nodes across every switch point (lz = -18, 17; y = 40).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from hsbearing.lubricant import bundled_path, load_lubricant
+from hsbearing.models.ball_bearing.ball import strip_load_weights
+from hsbearing.models.traction import _kernels as kt
+from hsbearing.models.traction import eyring as ey
+from hsbearing.models.traction import tables as tb
+
+# E', and Rx, k = a/b, a / Q^(1/3) of two contacts: the default case's inner contact (as in test_traction_eyring) and an
+# outer-like one (larger Rx, smaller ellipticity, larger ellipse; illustrative values, not read from a case)
+EP = 2.2857142857e11
+CONTACTS = {"inner": (3.8687463e-3, 9.2314187, 9.3449073e-4 / 300.0 ** (1.0 / 3.0)),
+            "outer": (5.6e-3, 7.2, 1.05e-3 / 300.0 ** (1.0 / 3.0))}
+OILS = ("4109", "4106", "4050")
+QU, QW = strip_load_weights(5)
+
+REL_BOUND, ABS_BOUND = 5e-13, 2e-14
+
+
+def _coefficients(oil, T_C, W, U, contact):
+    lub = load_lubricant(bundled_path(oil))
+    T = T_C + 273.15
+    eta, alpha = lub.dynamic_viscosity(T, 960.0), lub.alpha(T, 960.0)  # 960 kg/m^3: the default case's density
+    Rx, k, acoef = CONTACTS[contact]
+    Lam = ey.DEFAULT_LAMBDA
+    tau0 = ey.eyring_stress_default(Lam, alpha)
+    return kt.eyring_coefficients_nb(W, U, EP, Rx, k, acoef * W ** (1.0 / 3.0), eta, alpha, tau0, Lam,
+                                     ey.DEFAULT_SHEAR_MODULUS)
+
+
+def test_tables_meet_their_bounds_against_the_exact_functions():
+    """Random points (not the build grid) against numpy's arcsinh/exp and expm1; relative error within the bounds."""
+    rng = np.random.default_rng(7)
+    x = rng.uniform(tb.LOG_ASINH_LOW, tb.LOG_ASINH, 200_000)
+    g = np.arcsinh(np.exp(x))
+    assert np.max(np.abs(tb.evaluate(tb.ASINH_EXP, x) / g - 1.0)) <= 1.5e-13
+    y = np.concatenate([rng.uniform(0.0, tb.ONE_MINUS_EXP_END, 200_000), np.geomspace(1e-12, 1e-3, 1000)])
+    q = -np.expm1(-y) / y
+    assert np.max(np.abs(tb.evaluate(tb.ONE_MINUS_EXP_OVER_X, y) / q - 1.0)) <= 3e-13
+    assert tb.ASINH_EXP.max_rel_error <= 1.5e-13 and tb.ONE_MINUS_EXP_OVER_X.max_rel_error <= 3e-13
+    # the switch points join within round-off: asinh(e^x) = x + ln 2 above 17, = e^x below -18; 1 - e^-40 = 1
+    assert tb.LOG_ASINH == ey.LOG_ASINH  # the kernel branches on eyring's constant, the table ends at this one
+    assert tb.evaluate(tb.ASINH_EXP, tb.LOG_ASINH) == pytest.approx(tb.LOG_ASINH + math.log(2.0), rel=2e-16)
+    assert tb.evaluate(tb.ASINH_EXP, tb.LOG_ASINH_LOW) == pytest.approx(math.exp(tb.LOG_ASINH_LOW), rel=1e-15)
+    end = tb.ONE_MINUS_EXP_END
+    assert end * tb.evaluate(tb.ONE_MINUS_EXP_OVER_X, end) == pytest.approx(1.0, rel=2e-16)
+
+
+@pytest.mark.parametrize("tab", [tb.ASINH_EXP, tb.ONE_MINUS_EXP_OVER_X], ids=lambda t: t.name)
+def test_tables_are_c2_across_every_knot(tab):
+    """Value, first and second derivative of cell i at its right end equal those of cell i+1 at its left end."""
+    c = tab.coef
+    right = c[:-1]
+    v_r = right.sum(axis=1)
+    d_r = right[:, 1] + 2 * right[:, 2] + 3 * right[:, 3] + 4 * right[:, 4] + 5 * right[:, 5]
+    s_r = 2 * right[:, 2] + 6 * right[:, 3] + 12 * right[:, 4] + 20 * right[:, 5]
+    left = c[1:]
+    scale = np.abs(left[:, 0]) + np.abs(left[:, 1]) + np.abs(left[:, 2]) + 1e-300
+    assert np.max(np.abs(v_r - left[:, 0]) / scale) < 1e-14
+    assert np.max(np.abs(d_r - left[:, 1]) / scale) < 1e-13
+    assert np.max(np.abs(s_r - 2 * left[:, 2]) / scale) < 1e-12
+
+
+def test_build_refuses_a_table_above_its_bound():
+    with pytest.raises(ValueError, match="above the bound"):
+        tb.build("asinh(exp(x))", tb._asinh_exp, tb._asinh_exp_d1, tb._asinh_exp_d2, -18.0, 17.0, 0.25, rtol=1e-13)
+
+
+@pytest.mark.parametrize("contact", list(CONTACTS))
+@pytest.mark.parametrize("oil", OILS)
+def test_tabulated_strip_mu_within_its_bound_over_the_whole_regime(oil, contact):
+    """|dmu| against the exact kernel twin and the Python evaluation over the regime (module docstring)."""
+    S = np.geomspace(1e-4, 0.3, 41)
+    S = np.concatenate([S, -S])
+    worst_rel = worst_abs = 0.0
+    lz_seen = []
+    for T_C in (27.0, 80.0, 150.0, 230.0):
+        for W in (100.0, 700.0, 5000.0):
+            for U in (1.0, -1.0, 10.0, 100.0, -100.0):
+                c = _coefficients(oil, T_C, W, U, contact)
+                Lam, r0, lv, cp, ce = c
+                for u in list(QU) + [0.93]:
+                    su = math.sqrt(1.0 - u * u)
+                    for s in S:
+                        fast = kt.eyring_strip_mu_nb(c, s, u)
+                        exact = kt.eyring_strip_mu_exact_nb(c, s, u)
+                        d = abs(fast - exact)
+                        worst_abs = max(worst_abs, d)
+                        worst_rel = max(worst_rel, d / abs(exact))
+                        assert d <= REL_BOUND * abs(exact) + 1e-16, (oil, T_C, W, U, u, s, fast, exact)
+                        lz_seen.append(lv + math.log(abs(s)) + cp * su * ey.MINOR_NODES[:, 1])
+                    py = ey.strip_mu(c, 0.01, u)
+                    assert kt.eyring_strip_mu_nb(c, 0.01, u) == pytest.approx(py, rel=REL_BOUND, abs=1e-16)
+    assert worst_abs <= ABS_BOUND, worst_abs
+    lz = np.concatenate(lz_seen)
+    # the regime exercises the table and the ln-branch of asinh(e^lz) (measured: lz from -13.6 to above 17)
+    assert lz.max() > tb.LOG_ASINH
+    assert ((lz > tb.LOG_ASINH_LOW) & (lz < tb.LOG_ASINH)).mean() > 0.2
+    # below the regime (the kernel's regularised slip goes down to s_eps / U): the e^lz branch, same bound
+    c = _coefficients(oil, 230.0, 100.0, 100.0, contact)
+    lows = 0
+    for s in np.geomspace(1e-12, 1e-4, 60):
+        for u in QU:
+            Lam, r0, lv, cp, ce = c
+            lows += int(lv + math.log(s) < tb.LOG_ASINH_LOW)
+            fast, exact = kt.eyring_strip_mu_nb(c, s, u), kt.eyring_strip_mu_exact_nb(c, s, u)
+            assert abs(fast - exact) <= REL_BOUND * abs(exact) + 1e-16, (s, u, fast, exact)
+    assert lows > 0
+
+
+def _y_of_nodes(c, s, u):
+    """y = tau_el / tau_f at the nodes (as eyring_strip_mu_nb computes it)."""
+    Lam, r0, lv, cp, ce = c
+    su = math.sqrt(1.0 - u * u)
+    sn, cs = ey.MINOR_NODES[:, 0], ey.MINOR_NODES[:, 1]
+    pi_ = su * cs
+    lz = lv + math.log(s) + cp * pi_
+    tv = r0 * np.arcsinh(np.exp(np.minimum(lz, 700.0)))
+    tL = Lam * pi_
+    tf = (tv**-4 + tL**-4) ** -0.25
+    return ce * s * su * (1.0 + sn) / tf, lz
+
+
+@pytest.mark.parametrize("oil,T_C,W,U", [("4109", 27.0, 5000.0, 1.0), ("4106", 120.0, 700.0, 20.0),
+                                         ("4050", 230.0, 100.0, 100.0)])
+def test_derivative_in_slip_continuous_and_equal_to_the_exact_law(oil, T_C, W, U):
+    """dmu/dS by central differences (step 1e-4 S) over 4000 slips per sign: equal to the exact law's within
+    1e-6 of its scale, so no kink or jump where a node changes branch (the scan crosses lz = -18 or 17 or y = 40 at
+    some node, asserted)."""
+    c = _coefficients(oil, T_C, W, U, "inner")
+    u = QU[1]
+    S = np.geomspace(1e-4, 0.3, 4000)
+    crossed = set()
+    prev = None
+    for sgn in (1.0, -1.0):
+        d_fast, d_exact = [], []
+        for s in S:
+            h = 1e-4 * s
+            d_fast.append((kt.eyring_strip_mu_nb(c, sgn * (s + h), u) - kt.eyring_strip_mu_nb(c, sgn * (s - h), u)) / (2 * h))
+            d_exact.append((kt.eyring_strip_mu_exact_nb(c, sgn * (s + h), u)
+                            - kt.eyring_strip_mu_exact_nb(c, sgn * (s - h), u)) / (2 * h))
+            if sgn > 0:
+                y, lz = _y_of_nodes(c, s, u)
+                state = (tuple(lz > tb.LOG_ASINH), tuple(lz < tb.LOG_ASINH_LOW), tuple(y >= tb.ONE_MINUS_EXP_END))
+                if prev is not None:
+                    for name, a, b in zip(("lz=17", "lz=-18", "y=40"), prev, state):
+                        if a != b:
+                            crossed.add(name)
+                prev = state
+        d_fast, d_exact = np.array(d_fast), np.array(d_exact)
+        scale = np.max(np.abs(d_exact))
+        assert np.max(np.abs(d_fast - d_exact)) <= 1e-6 * scale
+        # and the derivative itself has no jump between neighbouring slips beyond the exact law's own variation
+        jump_fast = np.abs(np.diff(d_fast))
+        jump_exact = np.abs(np.diff(d_exact))
+        assert np.max(jump_fast - jump_exact) <= 1e-6 * scale
+    assert crossed, "the scan crossed no switch point"
+
+
+def test_kernel_dispatch_uses_the_tabulated_twin():
+    c = _coefficients("4109", 80.0, 700.0, 16.0, "inner")
+    for s in (1e-4, -3e-3, 0.2):
+        assert kt.traction_mu_nb(kt.EYRING_LAW_ID, c, s, QU[0]) == kt.eyring_strip_mu_nb(c, s, QU[0])
