@@ -37,6 +37,16 @@ CLEAN_DOCS = (
     "docs/validation/quasistatic.md",
     "docs/validation/wire_race.md",
     "docs/validation/nasa_heat_generation.md",
+    "docs/traction.md",
+    "docs/power_loss.md",
+    "docs/thermal.md",
+    "docs/testing.md",
+    "docs/validation/summary.md",
+    "docs/validation/index.md",
+    "docs/guide/case_files.md",
+    "docs/guide/getting_started.md",
+    "docs/guide/lubricants.md",
+    "docs/guide/python_api.md",
 )
 
 #: lines that must keep an old word, with the reason: (file, text the line contains)
