@@ -38,26 +38,32 @@ the energy equation (tests/helpers/thermal_traction_fv.py); tolerances and resul
 
 References
 ----------
-[1] Roelands C. J. A., *Correlational aspects of the viscosity-temperature-pressure relationship of lubricating
-    oils*, PhD thesis, TH Delft (1966); the form with eta_R = 6.31e-5 Pa s (ln = -9.67), p_R = 1.96e8 Pa
-    (5.1e-9 1/Pa) and the temperature index S0 around 138 K is the one Stachowiak & Batchelor, *Engineering
-    Tribology*, Ch. 2, print beside their Table 2.3 (read through the search tool); Houpert L., J. Tribol. 107
+[1] Roelands C. J. A., Correlational aspects of the viscosity-temperature-pressure relationship of lubricating
+    oils, PhD thesis, TH Delft (1966); the form with eta_R = 6.31e-5 Pa s (ln = -9.67), p_R = 1.96e8 Pa
+    (5.1e-9 1/Pa) and the temperature index S0 around 138 K is the one Stachowiak & Batchelor, Engineering
+    Tribology, Ch. 2, print beside their Table 2.3 (read through the search tool); Houpert L., J. Tribol. 107
     (1985) uses the same form (not re-read here).
+
 [2] Eyring H., J. Chem. Phys. 4 (1936) 283-291 (rate theory: the stress scale k_B T / V).
+
 [3] Jaeger J. C., Proc. R. Soc. N.S.W. 76 (1942) (moving sources of heat; band source); Carslaw H. S., Jaeger J. C.,
-    *Conduction of Heat in Solids*, 2nd ed., Oxford 1959 (moving line source): the steady temperature of a
+    Conduction of Heat in Solids, 2nd ed., Oxford 1959 (moving line source): the steady temperature of a
     half-space moving at speed u under a line source Q per unit length, T = (Q / (pi k)) e^X K_0(|X|),
     X = u d / (2 kappa), d the distance downstream of the source (the kernel is checked here against its 1-D
     high-Peclet limit, which follows from the constant-flux solution of a semi-infinite solid).
+
 [4] Archard J. F., Wear 2 (1959) (flash temperatures: the high- and low-Peclet regimes).
+
 [5] Blok H., Proc. General Discussion on Lubrication, IMechE (1937) (flash temperature; the heat
     divides so that both surfaces reach the same temperature).
-[7] Nahme R., Ing.-Arch. 11 (1940) (as usually cited; not read here) (thermal Couette flow with viscosity exponential in temperature; the
-    closed form e^phi = cosh^2 xi / cosh^2(2 xi y / h) is derived in :func:`nahme_film`'s docstring and checked in
-    tests/models/test_traction_thermal.py against a finite-difference film).
+
 [6] Johnson K. L., Greenwood J. A., Wear 61 (1980) (thermal analysis of an Eyring fluid in EHL traction:
     conduction across the film to the surfaces, their flash temperatures) -- the structure followed here; its
     numbers could not be read through the search tools (docs/traction.md).
+
+[7] Nahme R., Ing.-Arch. 11 (1940) (as usually cited; not read here) (thermal Couette flow with viscosity exponential in temperature; the
+    closed form e^phi = cosh^2 xi / cosh^2(2 xi y / h) is derived in :func:`nahme_film`'s docstring and checked in
+    tests/models/test_traction_thermal.py against a finite-difference film).
 """
 
 from __future__ import annotations
