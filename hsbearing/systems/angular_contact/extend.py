@@ -32,6 +32,7 @@ from __future__ import annotations
 import json
 import math
 
+from hsbearing.analysis.stoprule import NEVER_STOP_KINDS
 from hsbearing.results import register
 
 __all__ = ["extend_until_determined", "next_step", "extension_wanted", "extension_summary", "MIN_STEP_FRACTION",
@@ -115,12 +116,21 @@ def extension_wanted(ds) -> tuple[bool, str]:
     return False, f"not extended: undetermined ({kind or 'no kind'}) without an estimate of the time it needs"
 
 
-def _converged(ds) -> tuple[bool, str]:
+def _case_of(ds):
+    """The run's case, read once from its archive text (None when it has none: a synthetic run)."""
+    if "case_toml" not in ds.attrs:
+        return None
+    from hsbearing.case import loads_case
+
+    return loads_case(ds.attrs["case_toml"], "extension")
+
+
+def _converged(ds, case=None) -> tuple[bool, str]:
     """The stop rule's convergence on the whole (extended) run (:func:`hsbearing.analysis.stoprule.converged`)."""
     from hsbearing.analysis import stoprule
 
     try:
-        stop, why, _ = stoprule.converged(ds)
+        stop, why, _ = stoprule.converged(ds, case)
     except (ValueError, KeyError, IndexError) as exc:  # a run the rule cannot read: not converged
         return False, f"stop rule not evaluated: {type(exc).__name__}: {exc}"
     return bool(stop), why
@@ -166,14 +176,15 @@ def extend_until_determined(ds, max_duration: float, *, continue_fn=None, progre
     wanted, why_not = extension_wanted(ds)
     if not wanted and ds.attrs.get("classification", "undetermined") == "undetermined":
         reason = why_not
+    case = _case_of(ds) if converge and wanted else None
     while not reason:
         label = ds.attrs.get("classification", "undetermined")
         t_end = float(ds["time"].values[-1])
         if label != "undetermined":
             reason = f"determined: {label}" + (f" after {len(steps)} extension(s)" if steps else " (no extension needed)")
             break
-        if steps and converge:
-            stop, why = _converged(ds)
+        if steps and converge and _details(ds).get("kind") not in NEVER_STOP_KINDS:  # the rule never stops on those
+            stop, why = _converged(ds, case)
             if stop:
                 reason = f"converged (stop rule) after {len(steps)} extension(s), still undetermined: {why}"
                 break
