@@ -84,6 +84,8 @@ ATTR_UNITS: dict[str, str] = {
     # dynamic run (hsbearing.systems.angular_contact.dynamics) and its annotation (hsbearing.analysis)
     "guide_clearance": "m", "pocket_clearance": "m", "theoretical_cage_speed_nominal": "rad/s",
     "transient_discarded": "s", "cage_slip_contact_angle": "rad",
+    # extension of an undetermined run (hsbearing.systems.angular_contact.extend)
+    "extension_max_duration": "s", "extension_growth_rate": "1/s",
     # solver statistics
     "solver_wall_time": "s", "solver_total_wall_time": "s", "solver_wall_time_s": "s", "solver_rtol": "1",
     "solver_atol": "SI unit of each state times its scale (hsbearing.models.ball_bearing.state.ATOL_SCALE)",

@@ -7,6 +7,8 @@ A system package exposes ``SYSTEM``, a :class:`System`:
 - ``build_model(case)``: the model object of that run (``y0``, ``rhs``, ``state_names``);
 - ``summary_lines(ds) -> list[str]``: lines the CLI prints after the scalars of one of its runs;
 - ``run_summary(ds) -> dict``: the scalars of one run for a sweep or study table;
+- ``extend(ds, max_duration, **kw) -> xarray.Dataset``: continue an undetermined run until it is determined or a
+  budget is spent (None: its runs are not extended; ``hsbearing map`` / ``study`` leave them as they are);
 - ``friction(case, args) -> int``: ``hsbearing friction CASE`` of a case of this system (``friction_archive``:
   whether it writes ``-o OUT.nc``);
 - ``archive_kind(ds) -> str | None``: the kind of an archive of this system that it draws (None: not its own);

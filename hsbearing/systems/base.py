@@ -27,6 +27,7 @@ class System:
     build_model: Callable | None = None
     summary_lines: Callable = _no_lines
     run_summary: Callable | None = None
+    extend: Callable | None = None  #: ``extend(ds, max_duration, **kw) -> ds``: continue an undetermined run
     archive_kind: Callable = _none
     figures: dict = field(default_factory=dict)
     register_outputs: Callable = _none

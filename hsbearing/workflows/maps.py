@@ -69,7 +69,7 @@ def _plan_vary(x, y) -> dict:
 def run_map(case, x, y, *, out_dir, jobs: int | None = None, scheduler: str | None = None, duration=None,
             progress: bool = True, point_fn: Callable | None = None, retry_failed: bool = False,
             figure: bool = True, warm_start: bool = False, cold_sample: int = 4,
-            stop: str | None = "converged", keep: str = "answer") -> xr.Dataset:
+            stop: str | None = "converged", keep: str = "answer", extend="default") -> xr.Dataset:
     """Run a two-key cage-stability map and write ``out_dir/map.nc`` (and ``map.png``).
 
     Parameters
@@ -82,6 +82,11 @@ def run_map(case, x, y, *, out_dir, jobs: int | None = None, scheduler: str | No
     stop : stop rule of every point, "converged" (default, as ``hsbearing map``; docs/sweeps.md "Stop rule") or
         "duration"; None = the case's ``[simulation] stop``.  Set in the case only when it changes it.
     keep : what each point archive keeps, "answer" (default) or "full" (:func:`hsbearing.workflows.sweeps.execute`).
+    extend : "default" (as ``hsbearing map``: 3 x the duration of each point,
+        :data:`hsbearing.systems.angular_contact.extend.WORKFLOW_BUDGET_FACTOR`), a budget [s] of total simulated
+        time, or None: a point whose label is undetermined with an estimate of the time it needs is continued in
+        its worker until determined, the stop rule's convergence or the budget (docs/sweeps.md "Extend until
+        determined").  Warm-started points are not extended.
     warm_start : experimental (docs/sweeps.md "Warm starts"): the seed points (every other value of each axis,
         and the last) run cold, every other point starts from the final state of its nearest seed
         (:class:`hsbearing.workflows.warmstart.WarmNearest`); ``cold_sample`` of the warm points are also run cold (in
@@ -105,7 +110,7 @@ def run_map(case, x, y, *, out_dir, jobs: int | None = None, scheduler: str | No
         point_fn, warm_attrs = _warm_waves(base, vary, out_dir=out_dir, jobs=jobs, scheduler=scheduler,
                                            duration=duration, progress=progress, retry_failed=retry_failed)
     ds = run_sweep(base, vary, jobs=jobs, scheduler=scheduler, out_dir=out_dir, kind="run", duration=duration,
-                   progress=progress, point_fn=point_fn, retry_failed=retry_failed, keep=keep)
+                   progress=progress, point_fn=point_fn, retry_failed=retry_failed, keep=keep, extend=extend)
     if warm_start:
         warm_attrs.update(_cold_sample(base, vary, ds, point_fn, out_dir=out_dir, jobs=jobs, scheduler=scheduler,
                                        duration=duration, progress=progress, n=cold_sample))
@@ -204,6 +209,10 @@ def wall_time_lines(ds: xr.Dataset) -> list[str]:
                     parts.append(f"{name}={v}")
         if INDICATOR in pt:
             parts.append(f"{INDICATOR}={float(pt[INDICATOR]):.3g}")
+        n_ext = float(pt["extension_count"]) if "extension_count" in pt else float("nan")
+        if n_ext > 0:
+            head = str(pt["extension_stop_reason"].values.item()).split(":")[0]
+            parts.append(f"extended={int(n_ext)}x to {float(pt['simulated_time']):.3g} s ({head})")
         wt = float(pt["wall_time"])
         parts.append(f"wall_time={wt:.2f} s" + (" (resumed: time of the original run)" if int(pt["resumed"]) else ""))
         lines.append("  ".join(parts))
@@ -214,6 +223,33 @@ def wall_time_lines(ds: xr.Dataset) -> list[str]:
         f"sum {a['map_point_wall_time_sum']:.1f} s, mean {a['map_point_wall_time_mean']:.2f} s, "
         f"max {a['map_point_wall_time_max']:.2f} s per point")
     return lines
+
+
+def extend_arg(args):
+    """``extend=`` of :func:`run_map` / ``run_study`` from ``--no-extend`` / ``--max-duration`` (CaseError for both)."""
+    no, text = bool(getattr(args, "no_extend", False)), getattr(args, "max_duration", None)
+    if no and text:
+        raise CaseError("--max-duration", "max_duration", "not with --no-extend")
+    if no:
+        return None
+    return text if text else "default"
+
+
+def extension_lines(ds: xr.Dataset) -> list[str]:
+    """What the extensions did over the points of a map or study table: counts by how they stopped."""
+    if "extension_stop_reason" not in ds:
+        return []
+    reasons = [str(r) for r in np.asarray(ds["extension_stop_reason"].values).ravel() if str(r)]
+    n = np.asarray(ds["extension_count"].values, float).ravel() if "extension_count" in ds else np.zeros(0)
+    heads = {}
+    for r in reasons:
+        head = r.split(":")[0].split(" (")[0]
+        if head.startswith("converged"):
+            head = "converged"
+        heads[head] = heads.get(head, 0) + 1
+    done = int(np.sum(np.nan_to_num(n) > 0))
+    text = "; ".join(f"{k} {v}" for k, v in sorted(heads.items(), key=lambda kv: -kv[1]))
+    return [f"extension: {done} point(s) extended; how each point ended: {text}"]
 
 
 def cli_main(args) -> int:
@@ -235,7 +271,8 @@ def cli_main(args) -> int:
                       + ([] if getattr(args, "no_figure", False) else [out / "map.png"]))
     if args.scheduler:
         check_scheduler_address(args.scheduler)
-    plan = plan_sweep(case, vary, duration=args.duration)
+    extend = extend_arg(args)
+    plan = plan_sweep(case, vary, duration=args.duration, extend=extend)  # a bad --max-duration: exit 2 here
     bad = [pt for pt in plan.points if pt.case is None]
     if bad:
         where = ", ".join(f"{k}={v}" for k, v in bad[0].overrides.items())
@@ -244,8 +281,8 @@ def cli_main(args) -> int:
                  duration=args.duration, progress=not getattr(args, "quiet", False),
                  figure=not getattr(args, "no_figure", False), warm_start=bool(getattr(args, "warm_start", False)),
                  cold_sample=int(getattr(args, "cold_sample", 4)), stop=None,
-                 keep=getattr(args, "keep", "answer"))  # --stop is already in the case
-    for line in wall_time_lines(ds):
+                 keep=getattr(args, "keep", "answer"), extend=extend)  # --stop is already in the case
+    for line in wall_time_lines(ds) + extension_lines(ds):
         print(line)
     for k in ("warm_start", "warm_start_agreement", "warm_start_differences"):
         if k in ds.attrs:

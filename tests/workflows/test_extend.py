@@ -89,3 +89,152 @@ def test_cli_extend_bad_input(tmp_path, extra, what):
                         "-o", str(tmp_path / "r.nc"), *extra], capture_output=True, text=True, timeout=300)
     assert r.returncode == 2 and what in r.stderr, r.stderr
     assert not list(tmp_path.iterdir())
+
+
+# ----------------------------------------------------------------------------- maps, sweeps and studies
+# Every point extended in its worker before its archive is reduced (keep="answer"), with a synthetic continuation
+# (tests/helpers/extendable_runs.py: a steady circle, a whirl that saturates, one that keeps growing).
+
+from extendable_runs import growing_whirl_run  # noqa: E402 - the helpers folder is on the path (conftest)
+
+from hsbearing.results import open_run  # noqa: E402
+from hsbearing.systems.angular_contact.extend import extension_wanted  # noqa: E402
+from hsbearing.workflows import sweeps  # noqa: E402
+from hsbearing.workflows.maps import run_map  # noqa: E402
+
+LOADS = "500,1000,2000N"
+
+
+def _map(out, **kw):
+    kw.setdefault("jobs", 1)
+    return run_map("zhang2016", ("operating.axial_load", LOADS), ("lubricant.oil", "4109"), out_dir=out,
+                   duration="0.3 s", point_fn=growing_whirl_run, progress=False, figure=False, **kw)
+
+
+def test_map_points_are_extended_in_the_worker_before_the_archive_is_reduced(tmp_path):
+    ds = _map(tmp_path / "m")
+    reasons = [str(r) for r in ds["extension_stop_reason"].values.ravel()]
+    counts = ds["extension_count"].values.ravel()
+    labels = [str(v) for v in ds["classification"].values.ravel()]
+    # 500 N: determined at 0.3 s, left alone
+    assert counts[0] == 0 and reasons[0] == "determined: 1 period (no extension needed)" and labels[0] == "1 period"
+    assert float(ds["simulated_time"].values.ravel()[0]) == pytest.approx(0.3, abs=DT)
+    # 1000 N: extended until its whirl saturated, classified on the saturated orbit (the saturation radius)
+    assert counts[1] >= 1 and reasons[1].startswith("determined: 1 period after") and labels[1] == "1 period"
+    assert float(ds["whirl_amplitude"].values.ravel()[1]) == pytest.approx(100e-6, rel=0.03)
+    assert ds["extension_growth_rate"].values.ravel()[1] > 0
+    # 2000 N: still growing when the default budget (3 x 0.3 s) is spent; its growth rate is reported
+    assert labels[2] == "undetermined" and reasons[2].startswith("budget: 0.9 s")
+    assert float(ds["simulated_time"].values.ravel()[2]) == pytest.approx(0.9, abs=DT)
+    assert ds["extension_growth_rate"].values.ravel()[2] == pytest.approx(5.0, rel=0.2)
+    assert ds["extension_growth_rate"].attrs["units"] == "1/s"
+    assert "0.9 s simulated time" in ds.attrs["sweep_extension"]
+    # the kept archive: the whole extended orbit, the extensions and why they stopped, the saturated orbit
+    a = open_run(tmp_path / "m" / str(ds["archive"].values.ravel()[1]))
+    assert a.attrs["keep"] == "answer" and "time_decimated" in a.dims
+    ext = json.loads(a.attrs["extensions"])
+    assert len(ext) == counts[1] and ext[0]["label_before"] == "undetermined" and ext[0]["growth_rate"] > 0
+    assert float(a["time"].values[-1]) == pytest.approx(ext[-1]["to"], abs=DT)
+    assert a.attrs["extension_saturated_orbit"].startswith("saturated orbit over ")
+    assert a.attrs["extension_max_duration"] == pytest.approx(0.9)
+
+
+def test_extended_map_resumes_and_equals_two_processes(tmp_path):
+    one = _map(tmp_path / "m")
+    again = _map(tmp_path / "m")
+    assert again.attrs["sweep_points_resumed"] == 3 and again.attrs["map_points_computed"] == 0
+    two = _map(tmp_path / "j2", jobs=2)
+    for v in ("classification", "extension_count", "extension_stop_reason", "simulated_time", "whirl_amplitude",
+              "archive"):
+        xr.testing.assert_identical(one[v].reset_coords(drop=True), two[v].reset_coords(drop=True))
+
+
+def test_extended_map_on_dask_equals_local(tmp_path):
+    import distributed  # a locked dependency: a missing one fails here, never skips
+
+    local = _map(tmp_path / "local")
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=True, host="127.0.0.1",
+                                  dashboard_address=None) as cluster:
+        remote = _map(tmp_path / "dask", scheduler=cluster.scheduler_address, jobs=None)
+    assert remote.attrs["sweep_backend"].startswith("dask tcp://127.0.0.1")
+    for v in ("classification", "extension_count", "extension_stop_reason", "simulated_time", "archive"):
+        xr.testing.assert_identical(local[v].reset_coords(drop=True), remote[v].reset_coords(drop=True))
+
+
+def test_the_budget_is_part_of_the_point_hash(tmp_path):
+    """Extended, differently extended and unextended points never share an archive (resume cannot mix them)."""
+    names = {}
+    for ext in ("default", "1.5 s", None):
+        plan = sweeps.plan_sweep("zhang2016", {"axial_load": "1000N"}, duration="0.3 s", point_fn=growing_whirl_run,
+                                 extend=ext)
+        names[ext] = plan.points[0].archive
+        want = {"default": 0.9, "1.5 s": 1.5}.get(ext) if ext else None
+        assert plan.points[0].extend == (pytest.approx(want) if want else None)
+    assert len(set(names.values())) == 3
+    # a stand-in point function without a continuation is never extended (and keeps its hash)
+    from study_fakes import fake_dynamics
+
+    a = sweeps.plan_sweep("zhang2016", {"axial_load": "1000N"}, duration="0.3 s", point_fn=fake_dynamics,
+                          extend="default").points[0]
+    b = sweeps.plan_sweep("zhang2016", {"axial_load": "1000N"}, duration="0.3 s", point_fn=fake_dynamics).points[0]
+    assert a.extend is None and a.archive == b.archive
+
+
+def test_a_budget_below_the_duration_is_an_input_error(tmp_path):
+    from hsbearing.case import CaseError
+
+    with pytest.raises(CaseError, match="max_duration.*at least the run's duration"):
+        _map(tmp_path / "bad", extend="0.1 s")
+    assert not (tmp_path / "bad").exists()
+
+
+def test_what_asks_for_an_extension():
+    grow = _orbit(0.3, lambda t: 1e-6 * np.exp(5.0 * t))
+    assert extension_wanted(grow)[0]
+    stopped = grow.copy()
+    stopped.attrs["stopped_at"] = 0.3  # the stop rule ended it as converged: not extended
+    assert not extension_wanted(stopped)[0]
+    irregular = grow.copy()
+    irregular.attrs.update(classification_details=json.dumps({"kind": "irregular"}),
+                           classification_reason="aperiodic irregular section, the chaos indicators do not agree")
+    ok, why = extension_wanted(irregular)
+    assert not ok and "without an estimate" in why
+    irregular.attrs["classification_reason"] += "; run longer"
+    assert extension_wanted(irregular)[0]
+    out = extend_until_determined(stopped, 3.0, continue_fn=lambda d, s: pytest.fail("extended a converged run"))
+    assert out.attrs["extension_stop_reason"].startswith("not extended: the stop rule")
+
+
+def test_a_failed_continuation_keeps_the_run_in_a_map_point():
+    from hsbearing.errors import SolverError
+
+    ds = _orbit(0.3, lambda t: 1e-6 * np.exp(5.0 * t))
+
+    def fails(d, s):
+        raise SolverError("CVODE: too much work", partial=None)
+
+    with pytest.raises(SolverError):
+        extend_until_determined(ds, 1.0, continue_fn=fails)
+    out = extend_until_determined(ds, 1.0, continue_fn=fails, keep_on_failure=True)
+    assert out.attrs["extension_stop_reason"].startswith("failed: the extension 0.3 -> ")
+    assert float(out["time"].values[-1]) == pytest.approx(0.3)
+
+
+def test_study_points_are_extended(tmp_path):
+    from hsbearing.workflows.study import run_study
+
+    res = run_study("zhang2016", tmp_path / "s", jobs=1, duration="0.3 s", point_fn=growing_whirl_run,
+                    progress=False, tables=["table3"])
+    ds = res["tables"]["table3"]
+    assert "extension_stop_reason" in ds and "0.9 s of simulated time" in res["extension"]
+    assert "- extension: " in res["report"].read_text()
+
+
+@pytest.mark.parametrize("extra,what", [(["--no-extend", "--max-duration", "3s"], "not with --no-extend"),
+                                        (["--max-duration", "0.01s"], "at least the run's duration")])
+def test_map_cli_extension_bad_input(tmp_path, extra, what):
+    r = subprocess.run([sys.executable, "-m", "hsbearing.cli", "map", "zhang2016", "--x", "axial_load=1,2kN",
+                        "--y", "inner_speed=1000,2000rpm", "--duration", "0.05s", "-o", str(tmp_path / "m"), *extra],
+                       capture_output=True, text=True, timeout=300)
+    assert r.returncode == 2 and what in r.stderr, r.stderr
+    assert not (tmp_path / "m").exists()

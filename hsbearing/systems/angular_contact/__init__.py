@@ -14,7 +14,8 @@ import numpy as np
 
 from hsbearing.systems.base import System
 
-__all__ = ["SYSTEM", "simulate", "build_model", "summary_lines", "run_summary", "friction_command", "archive_kind"]
+__all__ = ["SYSTEM", "simulate", "build_model", "extend", "summary_lines", "run_summary", "friction_command",
+           "archive_kind"]
 
 
 def simulate(case, duration=None, progress: bool = False, **kwargs):
@@ -31,6 +32,13 @@ def build_model(case, **kwargs):
     return dynamics.build_model(case, **kwargs)
 
 
+def extend(ds, max_duration, **kwargs):
+    """Continue an undetermined run until determined (:func:`hsbearing.systems.angular_contact.extend.extend_until_determined`)."""
+    from hsbearing.systems.angular_contact.extend import extend_until_determined
+
+    return extend_until_determined(ds, max_duration, **kwargs)
+
+
 def summary_lines(ds) -> list[str]:
     """Drive torque and power loss by source of a dynamic run (:func:`hsbearing.systems.angular_contact.balances.power_summary_lines`)."""
     if "drive_torque" not in ds:
@@ -43,8 +51,11 @@ def summary_lines(ds) -> list[str]:
 def run_summary(ds) -> dict:
     """Scalars of a dynamic run for a sweep table (:func:`hsbearing.analysis.summary`, without ``status``)."""
     from hsbearing import analysis
+    from hsbearing.systems.angular_contact.extend import extension_summary
 
-    return {k: v for k, v in dict(analysis.summary(ds)).items() if k != "status"}
+    out = {k: v for k, v in dict(analysis.summary(ds)).items() if k != "status"}
+    out.update(extension_summary(ds))  # a run extended until determined (maps, studies): how far and why it stopped
+    return out
 
 
 def friction_command(case, args) -> int:
@@ -172,6 +183,7 @@ def _plot_thermal(ds, path):
 def _register_outputs():
     import hsbearing.analysis.orbit  # noqa: F401 - the run summary variables
     import hsbearing.systems.angular_contact.balances  # noqa: F401 - power_loss, power_loss_<source>, drive_torque
+    import hsbearing.systems.angular_contact.extend  # noqa: F401 - what a sweep table carries of an extension
     import hsbearing.systems.angular_contact.rating  # noqa: F401 - the quasi-static sources and the lives
     import hsbearing.systems.angular_contact.thermal  # noqa: F401 - the thermal network variables
 
@@ -180,7 +192,7 @@ SYSTEM = System(
     name="angular_contact",
     description="angular-contact ball bearing: 6-DOF dynamics with cage (Zhang et al. 2016), quasi-static equilibrium",
     friction=friction_command, simulate=simulate, build_model=build_model, summary_lines=summary_lines,
-    run_summary=run_summary, archive_kind=archive_kind, fallback=True,
+    run_summary=run_summary, extend=extend, archive_kind=archive_kind, fallback=True,
     figures={"run": _plot_dynamic, "quasistatic": _plot_quasistatic, "thermal": _plot_thermal,
              "friction_angular_contact": _plot_friction},
     register_outputs=_register_outputs,

@@ -27,11 +27,15 @@ def cli_main(args, run_study: Callable | None = None) -> int:
     limit = getattr(args, "band_samples", None)
     if limit is not None and not bands:
         raise CaseError("--band-samples", None, "only with --bands")
+    from hsbearing.workflows.maps import extend_arg
+
+    extend = extend_arg(args)
     res = (run_study or _run_study)(args.name, out, jobs=args.jobs, scheduler=args.scheduler, duration=args.duration,
                                     progress=True, bands=bands, band_samples_limit=limit,
                                     tables=getattr(args, "tables", None),
                                     report_only=bool(getattr(args, "report_only", False)),
-                                    stop=getattr(args, "stop", None), keep=getattr(args, "keep", "answer"))
+                                    stop=getattr(args, "stop", None), keep=getattr(args, "keep", "answer"),
+                                    extend=extend)
     n_bad = sum(int(((ds["status"] != sweeps.STATUS_OK) & (ds["status"] != STATUS_MISSING)).sum())
                 for ds in res["tables"].values())
     print(f"study {args.name}{' (bands)' if bands else ''}: {res['n_unique_points']} distinct points, "

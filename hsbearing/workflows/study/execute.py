@@ -56,6 +56,7 @@ def run_study(
     report_only: bool = False,
     stop: str | None = "converged",
     keep: str = "answer",
+    extend="default",
 ) -> dict[str, Any]:
     """Run a study; returns ``{"tables": {id: Dataset}, "report": Path, "wall_time": s, ...}``.
 
@@ -75,7 +76,10 @@ def run_study(
     point (default converged, as ``hsbearing study``; "duration" or None: the
     study case's, i.e. the whole duration).  It is part of each point's case,
     hence of its archive hash: stopped and full-length runs never alias.  ``keep``: what each point archive
-    keeps, "answer" (default) or "full" (:func:`hsbearing.workflows.sweeps.execute`).
+    keeps, "answer" (default) or "full" (:func:`hsbearing.workflows.sweeps.execute`).  ``extend``: "default" (3 x
+    each point's duration), a budget [s] of total simulated time or None: a point whose label is undetermined with
+    an estimate of the time it needs is continued in its worker until determined, the stop rule's convergence or
+    the budget (:func:`hsbearing.workflows.sweeps.plan.extension_budget`); part of each extended point's hash.
     """
     study = load_study(name)
     # only "converged" is written into the cases: the study case stops at its duration, and a default left out of
@@ -94,9 +98,9 @@ def run_study(
     if bands:
         return run_banded(study, chosen, out, dur, jobs=jobs, scheduler=scheduler, progress=progress,
                            point_fn=point_fn, limit=band_samples_limit, report_only=report_only, stop_set=stop_set,
-                           keep=keep)
+                           keep=keep, extend=extend)
     plans = [_table_plan(study, t, _table_case(study, t, {}, stop_set), dur, point_fn,
-                         f"{study.source_path} [{t['id']}]") for t in chosen]
+                         f"{study.source_path} [{t['id']}]", extend) for t in chosen]
     with _computed(plans, out, jobs=jobs, scheduler=scheduler, progress=progress,
                    report_only=report_only, keep=keep) as (records, wall, backend_label):
         datasets = {}
@@ -115,7 +119,7 @@ def run_study(
 
 def run_banded(study: Study, chosen: list[dict], out: Path, dur, *, jobs, scheduler, progress, point_fn,
                 limit: int | None = None, report_only: bool = False, stop_set: dict | None = None,
-               keep: str = "answer") -> dict[str, Any]:
+               keep: str = "answer", extend="default") -> dict[str, Any]:
     """cells x band samples in one pass (one progress bar over all points); see :func:`run_study`."""
     from hsbearing.models.geometry import GuideLandError, guide_lands
 
@@ -133,7 +137,7 @@ def run_banded(study: Study, chosen: list[dict], out: Path, dur, *, jobs, schedu
             except (GuideLandError, CaseError) as exc:
                 raise CaseError(study.source_path, "bands", f"sample {smp.label} ({sample_text(smp)}) is not a "
                                 f"valid case for {t['id']}: {exc}") from None
-            plan = _table_plan(study, t, base, dur, point_fn, where)
+            plan = _table_plan(study, t, base, dur, point_fn, where, extend)
             bad = [pt for pt in plan.points if pt.case is None]
             if bad:
                 raise CaseError(study.source_path, "bands", f"sample {smp.label} ({sample_text(smp)}): "
@@ -166,10 +170,10 @@ def _table_case(study: Study, t: dict, overrides: dict, stop_set: dict):
     return load_case(study.spec["study"]["case"], **t.get("set", {}), **overrides, **stop_set)
 
 
-def _table_plan(study: Study, t: dict, base, dur, point_fn, source: str) -> sweeps.SweepPlan:
-    """A table as a product sweep ``oil x values`` of ``base``."""
+def _table_plan(study: Study, t: dict, base, dur, point_fn, source: str, extend=None) -> sweeps.SweepPlan:
+    """A table as a product sweep ``oil x values`` of ``base`` (its points extended with ``extend``)."""
     vary = {"lubricant.oil": study.oils, t["vary"]: list(t["values"])}
-    return sweeps.plan_sweep(base, vary, kind="run", duration=dur, point_fn=point_fn, source=source)
+    return sweeps.plan_sweep(base, vary, kind="run", duration=dur, point_fn=point_fn, source=source, extend=extend)
 
 
 def backend_or_none(jobs, scheduler, report_only: bool):
@@ -260,6 +264,14 @@ def _banded_table(study: Study, t: dict, parts: list[xr.Dataset], samples: list[
     return ds
 
 
+def _extension_info(plans) -> str:
+    budgets = sorted({pt.extend for plan in plans for pt in plan.points if pt.extend is not None})
+    if not budgets:
+        return "none"
+    return (f"undetermined runs with an estimate of the time they need continued until determined, the stop rule's "
+            f"convergence or {', '.join(f'{b:.6g}' for b in budgets)} s of simulated time in all")
+
+
 def _run_info(plans, records, *, wall: float, backend_label: str, dur, stop_set: dict | None, point_fn) -> dict:
     """What the report says of the invocation: wall time, backend, duration, stop rule, point function, and
     the distinct points planned and computed (a point shared by two tables counted once)."""
@@ -269,6 +281,7 @@ def _run_info(plans, records, *, wall: float, backend_label: str, dur, stop_set:
         "duration": dur,
         "stop": "converged" if stop_set else "duration",
         "point_fn": sweeps.fn_name(point_fn),
+        "extension": _extension_info(plans),
         "n_unique_points": len({pt.archive or id(pt) for plan in plans for pt in plan.points}),
         "n_computed": len({r.get("archive") or id(r) for recs in records for r in recs
                            if not r.get("resumed") and r.get("status") not in ("invalid", STATUS_MISSING)}),

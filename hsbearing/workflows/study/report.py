@@ -41,6 +41,7 @@ def write_report(study: Study, datasets: dict[str, xr.Dataset], out: Path, info:
               _duration_line(info, "a run stops when its answer has converged; its archive records `stopped_at` and "
                                    "`stop_reason`; docs/sweeps.md"),
               _execution_line(info, os.cpu_count()),
+              _extension_line(info, datasets),
               f"- points: {info['n_unique_points']} distinct cases ({info['n_computed']} computed in this invocation, "
               f"the others resumed from `{RUNS}/`)",
               _wall_line(info, "the whole study"),
@@ -382,6 +383,17 @@ def _duration_line(info: dict, stop_note: str) -> str:
     return (f"- simulated time per point: {fmt(dur * 1e3 if dur else float('nan'), '.4g')} ms"
             + ("" if dur else " (the case's `[simulation] duration`)")
             + (f" at most: stop rule `converged` ({stop_note})" if info.get("stop") == "converged" else ""))
+
+
+def _extension_line(info: dict, datasets: dict) -> str:
+    """The extension of undetermined runs, and how many cells were extended (each archive says how far and why it
+    stopped: ``extensions``, ``extension_stop_reason``)."""
+    text = info.get("extension", "none")
+    if text == "none":
+        return "- extension of undetermined runs: none"
+    n = sum(int((np.nan_to_num(np.asarray(ds["extension_count"].values, float)) > 0).sum())
+            for ds in datasets.values() if "extension_count" in ds)
+    return f"- extension: {text}; {n} table cell(s) extended (archives: `extensions`, `extension_stop_reason`)"
 
 
 def _execution_line(info: dict, cores) -> str:

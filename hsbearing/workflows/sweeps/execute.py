@@ -96,7 +96,8 @@ def execute(
             dup = sum(1 for p in plans for q in p.points if q.archive == name)
             bar.update(dup)
 
-    tasks = [(name, (pt.case, plan.kind, plan.duration, plan.point_fn, keep)) for name, (plan, pt) in todo.items()]
+    tasks = [(name, (pt.case, plan.kind, plan.duration, plan.point_fn, keep, pt.extend))
+             for name, (plan, pt) in todo.items()]
     owned = backend is None
     if owned:
         backend = make_backend(jobs, scheduler)
@@ -219,10 +220,21 @@ def assemble(plan: SweepPlan, records: Sequence[dict], *, archive_prefix: str = 
             "sweep_points_ok": len(records) - n_bad,
             "sweep_points_resumed": sum(1 for r in records if r.get("resumed")),
             "sweep_point_fn": fn_name(plan.point_fn),
+            "sweep_extension": _extension_text(plan),
         }
     )
     ds.attrs.update(dict(attrs or {}))
     return ds
+
+
+def _extension_text(plan: SweepPlan) -> str:
+    """How the sweep's points were extended (``attrs["sweep_extension"]``)."""
+    budgets = sorted({pt.extend for pt in plan.points if pt.extend is not None})
+    if not budgets:
+        return "none"
+    b = ", ".join(f"{x:.6g}" for x in budgets)
+    return (f"undetermined runs with an estimate of the time they need continued until determined, the stop rule's "
+            f"convergence or a budget of {b} s simulated time in all (at most 8 extensions)")
 
 
 def _grid(flat: np.ndarray, plan: SweepPlan, shape, dims, attrs) -> xr.Variable:
@@ -243,6 +255,7 @@ def run_sweep(
     point_fn: Callable | None = None,
     retry_failed: bool = False,
     keep: str = "answer",
+    extend=None,
 ) -> xr.Dataset:
     """Run a sweep and return (and write to ``out_dir/sweep.nc``) its Dataset.
 
@@ -265,10 +278,14 @@ def run_sweep(
         (module-level, picklable); part of the archive hash.
     retry_failed : recompute points whose archive records a status other than ok.
     keep : "answer" (default) or "full": what a dynamic point's archive keeps (:func:`execute`).
+    extend : None (default: no extension), "default" or a budget [s] (float or unit string) of total simulated
+        time: a run whose label is undetermined is continued in its worker until it is determined, the stop
+        rule's convergence holds or the budget is spent (:func:`hsbearing.workflows.sweeps.plan.extension_budget`,
+        docs/sweeps.md "Extend until determined").
     """
     out_dir = Path(out_dir)
     check_output_path(out_dir, source="output directory", directory=True)
-    plan = plan_sweep(case, vary, zip=zip, kind=kind, duration=duration, point_fn=point_fn)
+    plan = plan_sweep(case, vary, zip=zip, kind=kind, duration=duration, point_fn=point_fn, extend=extend)
     t0 = time.perf_counter()
     # bad -j / unreachable scheduler are reported before anything is written
     with make_backend(jobs, scheduler) as backend, dir_lock(out_dir):

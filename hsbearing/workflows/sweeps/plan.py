@@ -147,6 +147,7 @@ class Point:
     error: str = ""
     archive: str = ""  #: file name of the archive (in the archive directory)
     hash: str = ""
+    extend: float | None = None  #: budget [s] of total simulated time to extend an undetermined run (None: never)
 
 
 @dataclass
@@ -161,6 +162,7 @@ class SweepPlan:
     duration: float | None
     point_fn: Callable | None
     vary_spec: dict = field(default_factory=dict)
+    extend: Any = None  #: as asked of :func:`plan_sweep` (None, "default" or a budget [s]); per point: Point.extend
 
     @property
     def shape(self) -> tuple[int, ...]:
@@ -179,10 +181,45 @@ def fn_name(fn: Callable | None) -> str:
     return f"{getattr(fn, '__module__', '?')}.{getattr(fn, '__qualname__', repr(fn))}"
 
 
-def point_hash(case: Case, kind: str, duration: float | None, point_fn: Callable | None = None) -> str:
-    """SHA-1 (hex) of the point's full case TOML + kind + duration (+ point function name)."""
+def point_hash(case: Case, kind: str, duration: float | None, point_fn: Callable | None = None,
+               extend: float | None = None) -> str:
+    """SHA-1 (hex) of the point's full case TOML + kind + duration (+ point function name) (+ the extension
+    budget, only when the point is extended: the archives of points that are not keep their hashes)."""
     text = case.to_toml() + f"\n#kind={kind}\n#duration={duration!r}\n#point_fn={fn_name(point_fn)}\n"
+    if extend is not None:
+        text += f"#extend={float(extend)!r}\n"
     return hashlib.sha1(text.encode()).hexdigest()
+
+
+#: ``extend=`` of :func:`plan_sweep` that asks for the default budget (WORKFLOW_BUDGET_FACTOR x each point's duration)
+EXTEND_DEFAULT = "default"
+
+
+def extension_budget(case: Case, duration: float | None, extend, *, source: str = "--max-duration") -> float | None:
+    """The budget [s] of total simulated time of one point's extension (None: not extended).
+
+    ``extend``: None/False (no extension), :data:`EXTEND_DEFAULT` or True (the default:
+    :data:`hsbearing.systems.angular_contact.extend.WORKFLOW_BUDGET_FACTOR` x the point's duration), or a budget
+    (s or unit string) that must be at least the point's duration.  Only systems whose runs can be extended
+    (:attr:`hsbearing.systems.System.extend`) get one."""
+    if extend is None or extend is False:
+        return None
+    from hsbearing import systems
+
+    if systems.get(case).extend is None:
+        return None
+    d = float(duration) if duration is not None else float(case.simulation.duration)
+    if extend is True or extend == EXTEND_DEFAULT:
+        from hsbearing.systems.angular_contact.extend import WORKFLOW_BUDGET_FACTOR
+
+        budget = WORKFLOW_BUDGET_FACTOR * d
+    else:
+        budget = parse_quantity(extend, "time", source=source, key="max_duration") if isinstance(extend, str) \
+            else float(extend)
+        if not budget >= d * (1 - 1e-12):
+            raise CaseError(source, "max_duration", f"must be at least the run's duration {d:g} s, got {extend!r}")
+    check_output_samples(case, budget, source=source, key="max_duration")
+    return float(budget)
 
 
 def _base_case(case) -> Case:
@@ -198,8 +235,12 @@ def plan_sweep(
     duration=None,
     point_fn: Callable | None = None,
     source: str = "--vary",
+    extend=None,
 ) -> SweepPlan:
-    """Validate the varied keys and values and build every point's case (no computation)."""
+    """Validate the varied keys and values and build every point's case (no computation).
+
+    ``extend`` (kind "run"): extend every point whose label is undetermined until it is determined
+    (:func:`extension_budget`: None, "default" or a budget); part of each extended point's hash."""
     if kind not in KINDS:
         raise CaseError("--kind", None, f"unknown kind {kind!r} (allowed: {', '.join(KINDS)})")
     base = _base_case(case)
@@ -256,9 +297,12 @@ def plan_sweep(
         except CaseError as exc:
             points.append(Point(idx, overrides, None, error=str(exc)))
             continue
-        h = point_hash(pc, kind, duration, point_fn)
-        points.append(Point(idx, overrides, pc, archive=f"{pc.name}-{h[:12]}.nc", hash=h))
-    return SweepPlan(base, axes, zip, points, kind, duration, point_fn, dict(vary))
+        # a stand-in point function is extended only when it brings its own continuation (``continue_fn``)
+        extendable = kind == "run" and (point_fn is None or getattr(point_fn, "continue_fn", None) is not None)
+        budget = extension_budget(pc, duration, extend) if extendable else None
+        h = point_hash(pc, kind, duration, point_fn, budget)
+        points.append(Point(idx, overrides, pc, archive=f"{pc.name}-{h[:12]}.nc", hash=h, extend=budget))
+    return SweepPlan(base, axes, zip, points, kind, duration, point_fn, dict(vary), extend=extend)
 
 
 zip_ = zip  # the builtin, shadowed by the ``zip`` keyword inside plan_sweep/run_sweep

@@ -201,11 +201,39 @@ def keep_answer(ds: xr.Dataset) -> xr.Dataset:
     return out
 
 
-def compute_point(case: Case, kind: str, duration, point_fn, keep: str = "full") -> tuple[dict, xr.Dataset | None]:
+def extend_point(case: Case, ds: xr.Dataset, budget: float, point_fn, rec: dict) -> xr.Dataset:
+    """A run extended until its label is determined, the stop rule's convergence holds or ``budget`` [s] of
+    simulated time is spent (the system's :attr:`~hsbearing.systems.System.extend`, the stop rule's convergence
+    checked after each step); a continuation that fails numerically ends the extension and the run is kept as it
+    was before it.  ``point_fn.continue_fn(ds, duration)`` continues a stand-in point function's runs."""
+    from hsbearing import systems
+
+    system = systems.get(case)
+    if system.extend is None:
+        return ds
+    kw = {"converge": True, "keep_on_failure": True}
+    if point_fn is not None:
+        kw["continue_fn"] = point_fn.continue_fn
+    t0 = time.perf_counter()
+    try:
+        ds = system.extend(ds, budget, **kw)
+    except Exception as exc:  # noqa: BLE001 - the run itself is complete: keep it, say why it was not extended
+        tb = traceback.extract_tb(exc.__traceback__)
+        where = f" ({Path(tb[-1].filename).name}:{tb[-1].lineno})" if tb else ""
+        ds = ds.copy()
+        ds.attrs["extension_stop_reason"] = f"failed: {type(exc).__name__}: {exc}{where}; the run is kept unextended"
+        ds.attrs["extensions"] = "[]"
+    rec["extension_wall_time"] = time.perf_counter() - t0
+    return ds
+
+
+def compute_point(case: Case, kind: str, duration, point_fn, keep: str = "full",
+                  extend: float | None = None) -> tuple[dict, xr.Dataset | None]:
     """Compute one point; never raises for a point's own failure.  Returns (record, dataset).
 
-    ``keep="answer"``: the dataset is reduced by :func:`keep_answer` after its summary is computed (in the
-    worker, so only what is kept travels to the client)."""
+    ``extend``: budget [s] of total simulated time; a run whose label is undetermined is extended
+    (:func:`extend_point`) before its summary.  ``keep="answer"``: the dataset is reduced by :func:`keep_answer`
+    after its summary is computed (in the worker, so only what is kept travels to the client)."""
     t0 = time.perf_counter()
     ds = None
     rec: dict[str, Any] = {"status": STATUS_OK, "error": "", "summary": {}}
@@ -225,6 +253,8 @@ def compute_point(case: Case, kind: str, duration, point_fn, keep: str = "full")
 
             ds = simulate(case, duration=duration)
         rec["status"] = str(ds.attrs.get("status", STATUS_OK))
+        if extend is not None and kind == "run" and rec["status"] == STATUS_OK:
+            ds = extend_point(case, ds, extend, point_fn, rec)
         if rec["status"] != STATUS_OK and ds.attrs.get("error"):  # a result that says why it is not ok (e.g. thermal runaway)
             rec["error"] = str(ds.attrs["error"])
     except CaseError as exc:
