@@ -101,7 +101,7 @@ def _quantity(value, kind: str, name: str):
 @_api
 def simulate(case, duration=None, *, overrides=None, stop=None, section=None, rtol=None, atol=None,
              thermal: bool = False, extend: bool = False, max_duration=None, progress: bool = False,
-             cvode_settings=None):
+             cvode_settings=None, wall_limit=None):
     """Run the dynamic model the case's system selects and return its Dataset (``hsbearing run CASE``).
 
     Parameters
@@ -132,6 +132,9 @@ def simulate(case, duration=None, *, overrides=None, stop=None, section=None, rt
         tqdm progress bar of the simulated time (the CLI's default unless ``-q``).
     cvode_settings : dict, optional
         CVODE optional inputs of the angular-contact model (``{}``: CVODE's own defaults; docs/dynamics.md).
+    wall_limit : str, pint.Quantity or float, optional
+        Stop the integration with a :class:`SolverError` (its ``.partial`` kept) after this much wall-clock time
+        (angular-contact model); None = no limit.
 
     Returns
     -------
@@ -177,6 +180,15 @@ def simulate(case, duration=None, *, overrides=None, stop=None, section=None, rt
     if thermal:
         c = _thermal_start(c)
     kw = {} if cvode_settings is None else {"cvode_settings": cvode_settings}
+    limit = _quantity(wall_limit, "time", "wall_limit")
+    if limit is not None:
+        if not limit > 0:
+            raise CaseError("wall_limit", "wall_limit", f"must be positive, got {wall_limit!r}")
+        from hsbearing.systems.angular_contact.rating import require_angular_contact
+
+        require_angular_contact(c, "wall_limit= is an option of the angular-contact model", source="simulate",
+                                key="wall_limit")
+        kw["wall_limit"] = limit
     ds = systems.simulate(c, duration=duration, progress=progress, **kw)
     if extend:
         from hsbearing.systems.angular_contact.extend import DEFAULT_BUDGET_FACTOR, extend_until_determined

@@ -101,6 +101,7 @@ def test_benchmark_positions_only_short(noise):
     assert _misses("short", noise) == []
 
 
+@pytest.mark.slow  # long: default tier kept under ~10 min (docs/testing.md)
 def test_benchmark_positions_only_long_noisy():
     assert _misses("long", 0.01) == []
 

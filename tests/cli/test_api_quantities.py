@@ -14,6 +14,7 @@ from hsbearing.systems.angular_contact.rating import friction_angular_contact
 from hsbearing.units import _ureg
 
 
+@pytest.mark.slow  # long: default tier kept under ~10 min (docs/testing.md)
 def test_speed_as_unit_string_quantity_or_si_float_gives_one_answer():
     case = hsbearing.load_case("zhang2016")
     si = friction_angular_contact(case, np.array([10000 * math.pi / 30])).qs_power_loss.values

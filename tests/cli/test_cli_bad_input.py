@@ -133,6 +133,7 @@ def test_ball_guided_cage_power_loss_is_a_number(work, capsys):
     assert all(map(lambda v: v == v, r.values())) and r["power_loss"] > 0
 
 
+@pytest.mark.slow  # long: default tier kept under ~10 min (docs/testing.md)
 def test_sfmo_and_whirl_frequency_reasons(work, capsys):
     """A short oscillation run of the gyro bearing (no complete reversal window) and a short angular-contact
     run (< 16 orbit samples): the summary says why instead of printing nan."""

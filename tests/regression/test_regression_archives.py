@@ -66,3 +66,20 @@ def test_compare_sees_a_change():
     c.attrs["status"] = "failed"
     d = reg.compare(a, c, "zhang2016_life")
     assert any("only stored ['y']" in x for x in d) and any("attrs[status]" in x for x in d)
+
+
+def test_json_attrs_of_an_ode_run_compare_their_numbers_within_the_ode_tolerance():
+    """The classifier's details of an ODE run are JSON whose numbers move with the trajectory (a fresh numba compile
+    against a cached one moved a growth radius by 5e-7 relative): compared number by number within ODE_RTOL; a
+    changed label, key or a number beyond the tolerance is still a difference; exact for non-ODE archives."""
+    d1 = '{"kind": "too-few-points", "growth": {"radii": [5.0928456751814645e-06, 1.0], "direction": ""}, "n": 0}'
+    d2 = '{"kind": "too-few-points", "growth": {"radii": [5.092848355345589e-06, 1.0], "direction": ""}, "n": 0}'
+    a = xr.Dataset({"x": ("t", np.array([1.0, 2.0]))}, attrs={"classification_details": d1})
+    b = a.copy(deep=True)
+    b.attrs["classification_details"] = d2
+    assert reg.compare(a, b, "zhang2016_run") == []
+    assert reg.compare(a, b, "zhang2016_friction") != []  # non-ODE: exact text
+    for changed in (d2.replace("too-few-points", "1 period"), d2.replace('"n": 0', '"m": 0'),
+                    d2.replace("1.0]", f"{1.0 + 2 * reg.ODE_RTOL}]")):
+        b.attrs["classification_details"] = changed
+        assert reg.compare(a, b, "zhang2016_run") != [], changed

@@ -84,6 +84,7 @@ def test_map_cli_resume_computes_nothing(local_map):
     assert "(4 resumed)" in r.stdout
 
 
+@pytest.mark.slow  # long: default tier kept under ~10 min (docs/testing.md)
 def test_map_through_dask_localcluster_matches_local(local_map, tmp_path):
     import distributed  # a locked dependency (dask[distributed]): a missing one fails here, never skips
     out_local, r0 = local_map

@@ -54,6 +54,7 @@ def test_normalise_label(paper, ours):
     assert study.normalise_label(paper) == ours
 
 
+@pytest.mark.slow  # long: default tier kept under ~10 min (docs/testing.md)
 def test_study_end_to_end_with_synthetic_runs(tmp_path):
     res = study.run_study("zhang2016", tmp_path, jobs=2, duration="10 ms", point_fn=fake_dynamics, progress=False)
     # 39 cells, 36 distinct cases: (130 degC, 1000 N, Fy = 0) is in Tables 3 and 4 for each oil
