@@ -148,12 +148,12 @@ def test_integrator_callback_stops_on_the_exact_prefix():
 @pytest.mark.slow
 def test_simulate_stops_and_records_why():
     """A real run (~80 s with compilation on a loaded 2-core machine): relaxed thresholds so it stops early."""
-    import hsbearing
     from hsbearing.case import load_case
+    from hsbearing.systems.angular_contact.dynamics import simulate  # the engine: stop_rule is not an API keyword
 
     case = load_case("zhang2016", **{"simulation.stop": "converged"})
     rule = dict(min_time=0.1, interval=0.05, min_points=5, growth_t_min=0.0)  # growth measurable from 0.15 s
-    ds = hsbearing.simulate(case, duration=0.35, stop_rule=rule)
+    ds = simulate(case, duration=0.35, stop_rule=rule)
     assert ds.attrs["stopped_at"] < 0.35 - 1e-9
     assert float(ds["time"][-1]) == pytest.approx(ds.attrs["stopped_at"])
     assert ds.attrs["stop_reason"].startswith("converged") and ds.attrs["stop_rule"].startswith("converged")
