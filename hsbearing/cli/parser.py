@@ -35,6 +35,16 @@ class _Parser(argparse.ArgumentParser):
         self.exit(2, f"hsbearing: error: {message}{hint}\n")
 
 
+def _add_extension_options(sp) -> None:
+    """--max-duration and --no-extend of the map and the study (the extension of undetermined points)."""
+    sp.add_argument("--max-duration", dest="max_duration", metavar="T",
+                    help="budget of the extension of undetermined points: total simulated time of a point, e.g. 3s "
+                         "(default: 3 x the duration); a point whose cage-motion label is undetermined with an estimate "
+                         "of the time it needs is continued in its worker until determined, the stop rule's "
+                         "convergence or this budget (docs/sweeps.md)")
+    sp.add_argument("--no-extend", dest="no_extend", action="store_true",
+                    help="do not extend undetermined points (each runs its duration, or less with the stop rule)")
+
 def build_parser() -> argparse.ArgumentParser:
     p = _Parser(prog="hsbearing", description="Dynamics and friction of rolling ball bearings.")
     p.add_argument("--version", action="version", version=f"hsbearing {__version__}")
@@ -156,13 +166,7 @@ def build_parser() -> argparse.ArgumentParser:
                          "trajectory)")
     sp.add_argument("--stop", choices=("duration", "converged"), default='converged',
                     help="stop rule: duration (run the whole duration) or converged (stop when the cage-motion label, its kind and the summaries have held over a confirming check; the duration is the upper bound; docs/sweeps.md); default converged")
-    sp.add_argument("--max-duration", dest="max_duration", metavar="T",
-                    help="budget of the extension of undetermined points: total simulated time of a point, e.g. 3s "
-                         "(default: 3 x the duration); a point whose cage-motion label is undetermined with an estimate "
-                         "of the time it needs is continued in its worker until determined, the stop rule's "
-                         "convergence or this budget (docs/sweeps.md)")
-    sp.add_argument("--no-extend", dest="no_extend", action="store_true",
-                    help="do not extend undetermined points (each runs its duration, or less with the stop rule)")
+    _add_extension_options(sp)
     sp.add_argument("-o", "--output", required=True, help="output directory (resumable: rerun to finish)")
     sp.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     sp.add_argument("--no-figure", "--no-plot", dest="no_figure", action="store_true", help="do not draw DIR/map.png")
@@ -195,13 +199,7 @@ def build_parser() -> argparse.ArgumentParser:
                          "trajectory)")
     sp.add_argument("--stop", choices=("duration", "converged"), default='converged',
                     help="stop rule: duration (run the whole duration) or converged (stop when the cage-motion label, its kind and the summaries have held over a confirming check; the duration is the upper bound; docs/sweeps.md); default converged")
-    sp.add_argument("--max-duration", dest="max_duration", metavar="T",
-                    help="budget of the extension of undetermined points: total simulated time of a point, e.g. 3s "
-                         "(default: 3 x the duration); a point whose cage-motion label is undetermined with an estimate "
-                         "of the time it needs is continued in its worker until determined, the stop rule's "
-                         "convergence or this budget (docs/sweeps.md)")
-    sp.add_argument("--no-extend", dest="no_extend", action="store_true",
-                    help="do not extend undetermined points (each runs its duration, or less with the stop rule)")
+    _add_extension_options(sp)
     grp = sp.add_mutually_exclusive_group()
     grp.add_argument("--bands", dest="bands", action="store_true", default=False,
                      help="run every cell over the study's [bands] samples of the unknown inputs (guide clearance, "
