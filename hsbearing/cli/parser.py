@@ -35,6 +35,36 @@ class _Parser(argparse.ArgumentParser):
         self.exit(2, f"hsbearing: error: {message}{hint}\n")
 
 
+def _add_keep_option(sp) -> None:
+    """--keep of the sweep, the map and the study: what each point archive keeps."""
+    sp.add_argument("--keep", choices=("answer", "full"), default="answer",
+                    help="what each point archive keeps: answer (default: summaries, label and reasons, section points, "
+                         "the cage-centre orbit, decimated histories, the final state for --continue) or full (the whole "
+                         "trajectory)")
+
+
+def _add_stop_option(sp, default: str | None) -> None:
+    """--stop of run, sweep, map and study; ``default`` None: the case's [simulation] stop."""
+    said = "default converged" if default == "converged" else "default: [simulation] stop of the case, duration"
+    sp.add_argument("--stop", choices=("duration", "converged"), default=default,
+                    help="stop rule: duration (run the whole duration) or converged (stop when the cage-motion label, "
+                         "its kind and the summaries have held over a confirming check; the duration is the upper "
+                         f"bound; docs/sweeps.md); {said}")
+
+
+def _add_opt_in_extension_options(sp, what: str) -> None:
+    """--extend and --max-duration of ``hsbearing run`` and ``hsbearing sweep`` (opt-in; map and study extend by
+    default: :func:`_add_extension_options`)."""
+    each = "the run" if what == "run" else "each point's run (kind run)"
+    sp.add_argument("--extend", action="store_true",
+                    help=f"while the cage-motion label is undetermined, continue {each} from its last state in steps "
+                         "(an e-folding time of a growing whirl, the classifier's estimate, or half the run) until it "
+                         "is determined or --max-duration is reached; the extensions and why they stopped are in the "
+                         "archive (attrs extensions, extension_stop_reason)")
+    sp.add_argument("--max-duration", dest="max_duration", metavar="T",
+                    help="budget of --extend: total simulated time, e.g. 3s (default: 3 x the run's duration)")
+
+
 def _add_extension_options(sp) -> None:
     """--max-duration and --no-extend of the map and the study (the extension of undetermined points)."""
     sp.add_argument("--max-duration", dest="max_duration", metavar="T",
@@ -71,8 +101,7 @@ def build_parser() -> argparse.ArgumentParser:
     with_case(sp)
     sp.add_argument("-o", "--output", help="netCDF archive (default runs/<case>-<hash>.nc)")
     sp.add_argument("--duration", help="simulated time, e.g. 0.2s (default: [simulation] duration)")
-    sp.add_argument("--stop", choices=("duration", "converged"), default=None,
-                    help="stop rule: duration (run the whole duration) or converged (stop when the cage-motion label, its kind and the summaries have held over a confirming check; the duration is the upper bound; docs/sweeps.md); default: [simulation] stop, duration")
+    _add_stop_option(sp, None)
     sp.add_argument("--section", choices=("transverse", "cage_revolution", "plane"),
                     help="Poincare section of the cage-motion label (default: [simulation] section, transverse: "
                          "one point per loop of the cage-centre orbit; cage_revolution: once per cage revolution)")
@@ -81,13 +110,7 @@ def build_parser() -> argparse.ArgumentParser:
     sp.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     sp.add_argument("--thermal", action="store_true", help="solve the thermal network first (hsbearing thermal) and run "
                     "at its lubricant temperature (traction and viscosity); needs lubricant.oil_flow_rate")
-    sp.add_argument("--extend", action="store_true",
-                    help="while the cage-motion label is undetermined, continue the run from its last state in steps "
-                         "(an e-folding time of a growing whirl, the classifier's estimate, or half the run) until it "
-                         "is determined or --max-duration is reached; the extensions and why they stopped are in the "
-                         "archive (attrs extensions, extension_stop_reason)")
-    sp.add_argument("--max-duration", dest="max_duration", metavar="T",
-                    help="budget of --extend: total simulated time, e.g. 3s (default: 3 x the run's duration)")
+    _add_opt_in_extension_options(sp, "run")
     sp.add_argument("--continue", dest="continue_from", metavar="ARCHIVE.nc",
                     help="extend the run in ARCHIVE.nc from its last state by --duration (default: to the duration "
                          "it was started with, e.g. after Ctrl-C); written back to ARCHIVE.nc unless -o")
@@ -114,12 +137,9 @@ def build_parser() -> argparse.ArgumentParser:
                     help="what each point computes: run (dynamics), quasistatic (equilibrium), thermal (steady "
                          "thermal network at its power loss, as 'hsbearing thermal')")
     sp.add_argument("--duration", help="simulated time of each run, e.g. 0.05s")
-    sp.add_argument("--keep", choices=("answer", "full"), default="answer",
-                    help="what each point archive keeps: answer (default: summaries, label and reasons, section points, "
-                         "the cage-centre orbit, decimated histories, the final state for --continue) or full (the whole "
-                         "trajectory)")
-    sp.add_argument("--stop", choices=("duration", "converged"), default=None,
-                    help="stop rule: duration (run the whole duration) or converged (stop when the cage-motion label, its kind and the summaries have held over a confirming check; the duration is the upper bound; docs/sweeps.md); default: [simulation] stop of the case, duration")
+    _add_keep_option(sp)
+    _add_stop_option(sp, None)
+    _add_opt_in_extension_options(sp, "point")
     sp.add_argument("-o", "--output", required=True, help="output directory")
     sp.add_argument("--no-figure", "--no-plot", dest="no_figure", action="store_true",
                     help="do not draw DIR/sweep.png (--no-plot is accepted as in 'hsbearing run')")
@@ -160,12 +180,8 @@ def build_parser() -> argparse.ArgumentParser:
     sp.add_argument("-j", "--jobs", type=int, default=None, help="worker processes (default: cores)")
     sp.add_argument("--scheduler", default=None, help="dask.distributed scheduler address tcp://host:port")
     sp.add_argument("--duration", help="simulated time of each run, e.g. 0.6s (default: [simulation] duration)")
-    sp.add_argument("--keep", choices=("answer", "full"), default="answer",
-                    help="what each point archive keeps: answer (default: summaries, label and reasons, section points, "
-                         "the cage-centre orbit, decimated histories, the final state for --continue) or full (the whole "
-                         "trajectory)")
-    sp.add_argument("--stop", choices=("duration", "converged"), default='converged',
-                    help="stop rule: duration (run the whole duration) or converged (stop when the cage-motion label, its kind and the summaries have held over a confirming check; the duration is the upper bound; docs/sweeps.md); default converged")
+    _add_keep_option(sp)
+    _add_stop_option(sp, "converged")
     _add_extension_options(sp)
     sp.add_argument("-o", "--output", required=True, help="output directory (resumable: rerun to finish)")
     sp.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
@@ -193,12 +209,8 @@ def build_parser() -> argparse.ArgumentParser:
                     help="address tcp://host:port of a running dask.distributed scheduler; the points run on its "
                          "workers instead of local processes")
     sp.add_argument("--duration", help="simulated time of each run (default: the study's, e.g. 1.2 s)")
-    sp.add_argument("--keep", choices=("answer", "full"), default="answer",
-                    help="what each point archive keeps: answer (default: summaries, label and reasons, section points, "
-                         "the cage-centre orbit, decimated histories, the final state for --continue) or full (the whole "
-                         "trajectory)")
-    sp.add_argument("--stop", choices=("duration", "converged"), default='converged',
-                    help="stop rule: duration (run the whole duration) or converged (stop when the cage-motion label, its kind and the summaries have held over a confirming check; the duration is the upper bound; docs/sweeps.md); default converged")
+    _add_keep_option(sp)
+    _add_stop_option(sp, "converged")
     _add_extension_options(sp)
     grp = sp.add_mutually_exclusive_group()
     grp.add_argument("--bands", dest="bands", action="store_true", default=False,

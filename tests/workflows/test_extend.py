@@ -238,3 +238,43 @@ def test_map_cli_extension_bad_input(tmp_path, extra, what):
                        capture_output=True, text=True, timeout=300)
     assert r.returncode == 2 and what in r.stderr, r.stderr
     assert not (tmp_path / "m").exists()
+
+
+@pytest.mark.parametrize("extra,what", [(["--max-duration", "3s"], "only with --extend"),
+                                        (["--extend", "--max-duration", "0.01s"], "at least the run's duration"),
+                                        (["--extend", "--kind", "quasistatic"], "only with --kind run")])
+def test_sweep_cli_extension_bad_input(tmp_path, extra, what):
+    r = subprocess.run([sys.executable, "-m", "hsbearing.cli", "sweep", "zhang2016", "--vary", "axial_load=1,2kN",
+                        "--duration", "0.05s", "-o", str(tmp_path / "s"), *extra],
+                       capture_output=True, text=True, timeout=300)
+    assert r.returncode == 2 and what in r.stderr, r.stderr
+    assert len(r.stderr.strip().splitlines()) == 1
+    assert not (tmp_path / "s").exists()
+
+
+def test_sweep_cli_extension_of_another_system_is_an_input_error(tmp_path):
+    r = subprocess.run([sys.executable, "-m", "hsbearing.cli", "sweep", "dgbb_6206", "--vary", "radial_load=1,2kN",
+                        "--extend", "-o", str(tmp_path / "s")], capture_output=True, text=True, timeout=300)
+    assert r.returncode == 2 and "cannot be extended" in r.stderr, r.stderr
+    assert not (tmp_path / "s").exists()
+
+
+@pytest.mark.parametrize("extra,expected", [([], None), (["--extend"], "default"),
+                                            (["--extend", "--max-duration", "2s"], "2s")])
+def test_sweep_cli_passes_the_extension_to_the_sweep(tmp_path, monkeypatch, extra, expected):
+    """``hsbearing sweep --extend [--max-duration T]`` (opt-in, as ``run --extend``) reaches run_sweep's ``extend=``."""
+    from hsbearing.cli.parser import build_parser
+    from hsbearing.workflows.sweeps import cli as sweep_cli
+
+    seen = {}
+
+    def fake_run_sweep(case, vary, **kw):
+        seen.update(kw)
+        raise SystemExit(0)
+
+    monkeypatch.setattr(sweep_cli, "run_sweep", fake_run_sweep)
+    args = build_parser().parse_args(["sweep", "zhang2016", "--vary", "axial_load=1,2kN", "-o", str(tmp_path / "s"),
+                                      *extra])
+    with pytest.raises(SystemExit):
+        sweep_cli.cli_main(args)
+    assert seen["extend"] == expected

@@ -102,6 +102,26 @@ def cli_base_case(args) -> Case:
     return case
 
 
+def sweep_extend_arg(args, case):
+    """``extend=`` of :func:`run_sweep` from ``hsbearing sweep --extend [--max-duration T]`` (opt-in, as for
+    ``hsbearing run``): None, "default" (3 x the duration) or the budget text.  Bad input (``--max-duration`` without
+    ``--extend``, ``--extend`` with another kind than run or a system whose runs cannot be extended) is a CaseError
+    before anything is computed or written; the budget itself is checked by :func:`plan_sweep`."""
+    extend, text = bool(getattr(args, "extend", False)), getattr(args, "max_duration", None)
+    if not extend:
+        if text:
+            raise CaseError("--max-duration", "max_duration", "only with --extend")
+        return None
+    if getattr(args, "kind", "run") != "run":
+        raise CaseError("--extend", None, f"only with --kind run (dynamic runs), not --kind {args.kind}")
+    from hsbearing import systems
+
+    if systems.get(case).extend is None:
+        raise CaseError("--extend", "case.system", f"runs of the {case.system!r} system cannot be extended (only the "
+                                                   "angular-contact model's)")
+    return text if text else "default"
+
+
 def cli_main(args) -> int:
     """``hsbearing sweep CASE --vary KEY=V1,V2 [--zip] [-j N] [--scheduler ADDR] [--kind] [--duration] -o DIR``.
 
@@ -112,6 +132,7 @@ def cli_main(args) -> int:
     """
     case = cli_base_case(args)
     vary = _parse_vary(args.vary)
+    extend = sweep_extend_arg(args, case)
     out = Path(args.output)
     check_output_path(out, directory=True)
     if args.scheduler:
@@ -119,7 +140,7 @@ def cli_main(args) -> int:
     if not getattr(args, "keep_going", False):
         # On the command line a value that makes an invalid case is bad input: exit 2 before anything is
         # computed or written (the library, and --keep-going, record such points as "invalid" and go on).
-        plan = plan_sweep(case, vary, zip=args.zip, kind=args.kind, duration=args.duration)
+        plan = plan_sweep(case, vary, zip=args.zip, kind=args.kind, duration=args.duration, extend=extend)
         bad = [pt for pt in plan.points if pt.case is None]
         if bad:
             where = ", ".join(f"{k}={v}" for k, v in bad[0].overrides.items())
@@ -129,7 +150,7 @@ def cli_main(args) -> int:
     try:
         ds = run_sweep(case, vary, zip=args.zip, jobs=args.jobs, scheduler=args.scheduler, out_dir=out,
                        kind=args.kind, duration=args.duration, progress=True,
-                       keep=getattr(args, "keep", "answer"))
+                       keep=getattr(args, "keep", "answer"), extend=extend)
     except SolverError as exc:
         if exc.partial is None:
             raise
