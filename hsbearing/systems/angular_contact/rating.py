@@ -361,6 +361,7 @@ def _starvation_band(case, m, out, aux):
     X = float(m.info["cavity_oil_fraction"])
     out["ehl_rolling_band_high"] = out["ehl_rolling"]
     low = low_inf = 0.0
+    seen = []  # (Hbar, m, m*) of every loaded contact, for the investigation tools
     qs = m.info["quasistatic"]
     st = quasi_static_contact_state(case, qs)
     g = derive(case)
@@ -383,9 +384,11 @@ def _starvation_band(case, m, out, aux):
             low += P[j] * band["force"]
             low_inf += P[j] * band["force_vs_infinite_inlet"]
             worst = min(worst, band["film"])
+            seen.append((2.0 * float(hc[j]) * float(Rx[j]) / (b * b), band["m"], band["m_star"]))
         out[f"{side}_starved_film_ratio_low"] = worst
     out["ehl_rolling_band_low"] = low
     out["ehl_rolling_band_low_infinite_inlet"] = low_inf
+    out["starvation_contacts"] = seen
 
 
 # ----------------------------------------------------------------------------- hsbearing friction CASE (every ball bearing)
