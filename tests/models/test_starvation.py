@@ -6,7 +6,7 @@ Tolerances set before comparing: the law's Grubin ratios within 2e-3 (relative) 
 law's 1500-node trapezoid is second order: ~3e-4 expected), over the regime the bearings visit (Hbar = h_c 2 R_x / b^2
 from 0.01 to 2: the TP-2275 and zhang2016 contacts sit at 0.03-0.5) and m from 1.02 to 50; both directions; the
 flooded limit exactly 1.  The Hamrock-Dowson point-contact film [1] against the line-contact Grubin film is a
-comparison of two models, not a proof: its tolerance (0.2 absolute where the Hamrock-Dowson ratio is >= 0.5, both
+comparison of two models, not a proof: its tolerance (0.1 absolute where the Hamrock-Dowson ratio is >= 0.5, both
 -> 1 when flooded) was set after a first look at the two curves, and is reported as such in docs/power_loss.md.
 """
 
@@ -89,7 +89,7 @@ def test_hamrock_dowson_film_against_the_grubin_line_inlet(Hbar):
             worst = max(worst, abs(hd - gr))
         if m >= ms:
             assert hd == 1.0 and gr > 0.9
-    assert worst < 0.2
+    assert worst < 0.1
 
 
 @pytest.mark.parametrize("X", [0.0, 0.01, 0.05, 0.3, 0.9, 1.0])
