@@ -169,19 +169,39 @@ def grubin_inlet(H0, m, n=GRUBIN_NODES):
 
 
 def _grubin_starved_film(Hbar, m, I_target, n):
-    """Central film H0 of the inlet cut at m that builds the same pressure as the flooded one (I = I_target)."""
-    lo, hi = 0.0, Hbar
-    if grubin_inlet(hi, m, n)[0] >= I_target:
+    """Central film H0 of the inlet cut at m that builds the same pressure as the flooded one (I = I_target):
+    I falls monotonically as H0 rises; Brent's method on log H0 over (1e-12 Hbar, Hbar], relative tolerance 1e-11."""
+    from scipy.optimize import brentq
+
+    if grubin_inlet(Hbar, m, n)[0] >= I_target:
         return Hbar
-    for _ in range(100):  # I falls as H0 rises: bisection on log H0 over (1e-12 Hbar, Hbar)
-        mid = math.sqrt(max(lo, 1e-12 * Hbar) * hi)
-        if grubin_inlet(mid, m, n)[0] > I_target:
-            lo = mid
-        else:
-            hi = mid
-        if hi - max(lo, 1e-12 * Hbar) < 1e-10 * hi:
-            break
-    return math.sqrt(max(lo, 1e-12 * Hbar) * hi)
+    lo = math.log(1e-12 * Hbar)
+    f = lambda s: grubin_inlet(math.exp(s), m, n)[0] - I_target  # noqa: E731
+    if f(lo) <= 0.0:
+        return 1e-12 * Hbar
+    return math.exp(brentq(f, lo, math.log(Hbar), xtol=1e-11, rtol=1e-13))
+
+
+def _force_ratios(m, Hbar, m_refs, n):
+    """Grubin rolling force of the inlet cut at m over that of the inlets cut at each m_ref (>= m, or FLOODED_M)."""
+    m, Hbar = float(m), float(Hbar)
+    if not Hbar > 0.0:
+        raise ValueError("need Hbar > 0")
+    refs = [min(float(r), FLOODED_M) for r in m_refs]
+    if m <= 1.0:
+        return [0.0 for _ in refs]
+    I_ff, F_ff = grubin_inlet(Hbar, FLOODED_M, n)
+    F_m = None
+    out = []
+    for r in refs:
+        if m >= r:
+            out.append(1.0)
+            continue
+        if F_m is None:
+            F_m = grubin_inlet(_grubin_starved_film(Hbar, m, I_ff, n), m, n)[1]
+        F_ref = F_ff if r >= FLOODED_M else grubin_inlet(_grubin_starved_film(Hbar, r, I_ff, n), r, n)[1]
+        out.append(min(F_m / F_ref, 1.0))
+    return out
 
 
 def starved_rolling_force_ratio(m, Hbar, m_ref=FLOODED_M, n=GRUBIN_NODES):
@@ -189,17 +209,7 @@ def starved_rolling_force_ratio(m, Hbar, m_ref=FLOODED_M, n=GRUBIN_NODES):
     (derived, module docstring; ASSUMED to carry over to Houpert's F_R).  Hbar = h_c,flooded 2 R_x / b^2 [-], the
     film of the inlet at :data:`FLOODED_M`, which fixes the pressure integral I of the contact; each cut inlet's
     film solves Grubin's condition with that I.  1 for m >= m_ref; falls to 0 as m -> 1."""
-    m, Hbar, m_ref = float(m), float(Hbar), min(float(m_ref), FLOODED_M)
-    if not Hbar > 0.0:
-        raise ValueError("need Hbar > 0")
-    if m >= m_ref:
-        return 1.0
-    if m <= 1.0:
-        return 0.0
-    I_ff, F_ff = grubin_inlet(Hbar, FLOODED_M, n)
-    F_ref = F_ff if m_ref >= FLOODED_M else grubin_inlet(_grubin_starved_film(Hbar, m_ref, I_ff, n), m_ref, n)[1]
-    Hs = _grubin_starved_film(Hbar, m, I_ff, n)
-    return min(grubin_inlet(Hs, m, n)[1] / F_ref, 1.0)
+    return _force_ratios(m, Hbar, (m_ref,), n)[0]
 
 
 def starvation_band(oil_fraction, h_c, Rx, b):
@@ -211,6 +221,6 @@ def starvation_band(oil_fraction, h_c, Rx, b):
     h_oil = mixture_oil_layer(oil_fraction, h_c, Rx, b)
     ms = float(critical_inlet_distance(h_c, Rx, b))
     m = inlet_meniscus(h_oil, h_c, Rx, b)
-    return {"m": m, "m_star": ms, "h_oil": h_oil, "film": float(starved_film_ratio(m, ms)),
-            "force": starved_rolling_force_ratio(m, 2.0 * h_c * Rx / (b * b), m_ref=ms),
-            "force_vs_infinite_inlet": starved_rolling_force_ratio(m, 2.0 * h_c * Rx / (b * b))}
+    force, force_inf = _force_ratios(m, 2.0 * h_c * Rx / (b * b), (ms, FLOODED_M), GRUBIN_NODES)
+    return {"m": m, "m_star": ms, "h_oil": h_oil, "film": float(starved_film_ratio(m, ms)), "force": force,
+            "force_vs_infinite_inlet": force_inf}

@@ -362,6 +362,7 @@ def _starvation_band(case, m, out, aux):
     out["ehl_rolling_band_high"] = out["ehl_rolling"]
     low = low_inf = 0.0
     seen = []  # (Hbar, m, m*) of every loaded contact, for the investigation tools
+    cache = {}
     qs = m.info["quasistatic"]
     st = quasi_static_contact_state(case, qs)
     g = derive(case)
@@ -380,7 +381,10 @@ def _starvation_band(case, m, out, aux):
                 low_inf += P[j]
                 continue
             b = 1.5 * Q[j] / (math.pi * a[j] * p[j])  # p_max = 3 Q / (2 pi a b)
-            band = starvation.starvation_band(min(max(X, 0.0), 1.0), float(hc[j]), float(Rx[j]), b)
+            key = (min(max(X, 0.0), 1.0), float(hc[j]), float(Rx[j]), b)
+            if key not in cache:  # balls in the same state (a pure axial load) share one evaluation
+                cache[key] = starvation.starvation_band(*key)
+            band = cache[key]
             low += P[j] * band["force"]
             low_inf += P[j] * band["force_vs_infinite_inlet"]
             worst = min(worst, band["film"])
