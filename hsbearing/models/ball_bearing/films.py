@@ -16,7 +16,8 @@ isothermal, flooded laws of the kernel (:func:`hsbearing.models.ball_bearing.cag
   fraction is not known (it depends on how the jet's oil reaches the land and the pockets); it is reported as a
   bounded band: from the oil volume fraction of the cavity mixture the film is fed from (a film holding the
   mixture as it is: the low end) to a flooded film (fill 1: the high end, the kernel's assumption).  Starved EHL
-  race contacts (Chevalier et al. 1998; Damiens, Venner, Cann & Lubrecht 2004 [2]) are NOT treated here.
+  race contacts (Chevalier et al. 1998; Damiens, Venner, Cann & Lubrecht 2004 [2]): a band of their own,
+  :mod:`hsbearing.models.ball_bearing.starvation`.
 
 References
 ----------
@@ -32,7 +33,8 @@ References
 [2] Damiens B., Venner C. H., Cann P. M. E., Lubrecht A. A., "Starved lubrication of elliptical EHD contacts",
     ASME J. Tribol. 126 (2004) 105-111 (abstract read: a single parameter, the fully flooded inlet length,
     governs the starved film); Chevalier F., Lubrecht A. A., Cann P. M. E., Colin F., Dalmaz G., "Film thickness in
-    starved EHL point contacts", ASME J. Tribol. 120 (1998) 126-133 (not read).  Named for what is left out.
+    starved EHL point contacts", ASME J. Tribol. 120 (1998) 126-133 (not read).  The race contacts' starvation:
+    models/ball_bearing/starvation.py.
 """
 
 from __future__ import annotations

@@ -112,7 +112,12 @@ def friction_command(case, args) -> int:
                                                                                ds[f"{key}_film_wall_temperature_b"].values))
                   + f" degC), viscosity x {', '.join(f'{f:.3g}' for f in ds[f'{key}_film_viscosity_factor'].values)} "
                   "(friction.thermal_films)")
-    print("total band [W] (drag band; land and pocket films part-filled at the cavity oil fraction .. flooded): "
+    print("EHL rolling starvation band [W] (race inlets fed only by the cavity mixture .. flooded): "
+          + ", ".join(f"{lo:.4g}..{hi:.4g}" for lo, hi in zip(ds.qs_ehl_rolling_band_low.values, ds.qs_ehl_rolling_band_high.values))
+          + "; starved/flooded central film at the low end, thinnest inner/outer contact: "
+          + ", ".join(f"{a:.3g}/{b:.3g}" for a, b in zip(ds.inner_starved_film_ratio_low.values, ds.outer_starved_film_ratio_low.values)))
+    print("total band [W] (drag band; land and pocket films part-filled at the cavity oil fraction; race contacts "
+          "starved .. flooded): "
           + ", ".join(f"{lo:.4g}..{hi:.4g}" for lo, hi in zip(ds.qs_total_band_low.values, ds.qs_total_band_high.values)))
     if "contact_inlet_temperature" in ds:
         print("--thermal: contact inlet temperature " + ", ".join(f"{t - 273.15:.4g}" for t in ds.contact_inlet_temperature.values)

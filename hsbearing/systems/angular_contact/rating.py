@@ -216,7 +216,8 @@ def quasi_static_power_loss(case, speed=None, with_state: bool = False, walls: d
     zero (no approach rate).  Needs the dynamic model's data (outer-ring guided cage, land).
 
     The guide-land and pocket films are then taken at their film temperature and reported over a fill-fraction
-    band (:func:`_film_corrections`, ``friction.thermal_films``).
+    band (:func:`_film_corrections`, ``friction.thermal_films``); the EHL rolling loss over a starvation band
+    (:func:`_starvation_band`).
 
     Parameters
     ----------
@@ -244,6 +245,7 @@ def quasi_static_power_loss(case, speed=None, with_state: bool = False, walls: d
         out[key] = float(m.info[key])
     _cavity_losses(case, m, out)
     _film_corrections(case, m, out, walls)
+    _starvation_band(case, m, out, aux)
     w = abs(case.operating.inner_speed - case.operating.outer_speed)
     out["friction_torque"] = out["power_loss"] / w if w > 0 else float("nan")
     if with_state:  # the quasi-static Dataset the state comes from, and the case at that speed
@@ -340,13 +342,67 @@ def _film_corrections(case, m, out, walls=None):
         out[f"{src}_band_low"], out[f"{src}_band_high"] = low * f * iso, high * f * iso
 
 
+def _starvation_band(case, m, out, aux):
+    """EHL rolling loss and central films of the race contacts over the starvation band (in place).
+
+    High end: flooded (the kernel's F_R, today's ``ehl_rolling``).  Low end: each race contact's inlet fed only by
+    the cavity mixture at its oil fraction X (:func:`~hsbearing.models.ball_bearing.starvation.starvation_band`):
+    that contact's kernel EHL rolling power times its rolling-force ratio, summed; the film ratio of the thinnest
+    loaded contact of each race reported.  Contact inputs at the quasi-static state: load, Hertz semi-axes and the
+    flooded Hamrock-Dowson central film of :func:`~hsbearing.systems.angular_contact.contact_state.quasi_static_contact_state`
+    (with the inlet-heating factor when ``friction.inlet_heating = on``, as the kernel's F_R), R_x at the contact
+    angle.  Nothing changes in the kernel or in ``power_loss``.
+    """
+    from hsbearing.models.ball_bearing import starvation
+    from hsbearing.models.ball_bearing.kernel_io import AUX_INDEX
+    from hsbearing.models.geometry import curvature_radii, derive
+    from hsbearing.systems.angular_contact.contact_state import quasi_static_contact_state
+
+    X = float(m.info["cavity_oil_fraction"])
+    out["ehl_rolling_band_high"] = out["ehl_rolling"]
+    low = low_inf = 0.0
+    seen = []  # (Hbar, m, m*) of every loaded contact, for the investigation tools
+    cache = {}
+    qs = m.info["quasistatic"]
+    st = quasi_static_contact_state(case, qs)
+    g = derive(case)
+    for side, col in (("inner", "P_ehl_i"), ("outer", "P_ehl_o")):
+        P = aux[:, AUX_INDEX[col]]
+        Q = qs[f"{side}_contact_load"].values
+        al = qs[f"{side}_contact_angle"].values
+        Rxi, _, Rxo, _ = curvature_radii(g.D, g.dm, al, g.fi, g.fo)
+        Rx = Rxi if side == "inner" else Rxo
+        hc, a, p = (st.get(f"{side}_{k}") for k in ("film_thickness_central", "contact_semimajor", "contact_pressure"))
+        worst = 1.0
+        for j in range(len(P)):
+            ok = hc is not None and Q[j] > 0.0 and np.isfinite(hc[j]) and hc[j] > 0.0 and math.isfinite(X)
+            if not ok or P[j] == 0.0:
+                low += P[j]
+                low_inf += P[j]
+                continue
+            b = 1.5 * Q[j] / (math.pi * a[j] * p[j])  # p_max = 3 Q / (2 pi a b)
+            key = (min(max(X, 0.0), 1.0), float(hc[j]), float(Rx[j]), b)
+            if key not in cache:  # balls in the same state (a pure axial load) share one evaluation
+                cache[key] = starvation.starvation_band(*key)
+            band = cache[key]
+            low += P[j] * band["force"]
+            low_inf += P[j] * band["force_vs_infinite_inlet"]
+            worst = min(worst, band["film"])
+            seen.append((2.0 * float(hc[j]) * float(Rx[j]) / (b * b), band["m"], band["m_star"]))
+        out[f"{side}_starved_film_ratio_low"] = worst
+    out["ehl_rolling_band_low"] = low
+    out["ehl_rolling_band_low_infinite_inlet"] = low_inf
+    out["starvation_contacts"] = seen
+
+
 # ----------------------------------------------------------------------------- hsbearing friction CASE (every ball bearing)
 
 NOTE_QS = ("quasi-static model: (ours) power lost at the quasi-static state with the dynamic model's contact laws: race "
             "traction (rolling, transverse slip and spin, the oil's traction law), EHL rolling couple (with its inlet-shear-heating "
             "factor if friction.inlet_heating = on), the pocket film of the "
             "centred balls (entraining shear of the turning ball in its pocket), guide-land film of the centred cage (both "
-            "films at their Couette film temperature, friction.thermal_films; flooded, the fill band reported), ball "
+            "films at their Couette film temperature, friction.thermal_films; flooded, the fill band reported; the race "
+            "contacts flooded, a starvation band of the EHL rolling loss reported), ball "
             "drag in the air-oil mixture (cavity oil fraction above; relative to the mixture carried round at friction.mixture_corotation "
             "of the cage speed), the jet oil's acceleration to the cage pitch speed (m_dot v^2) and the cage-face windage "
             "(rotating-disc estimate; friction.cavity_losses); excludes pocket boundary friction and contact damping "
@@ -442,10 +498,19 @@ def _register_qs_power():
                  "cavity oil fraction (low end of the fill band; docs/power_loss.md)")
         register(f"qs_{src}_band_high", ("speed",), "W", f"qs_power_loss_{src} with the film flooded (high end "
                  "of the fill band = qs_power_loss_{src})")
-    register("qs_total_band_low", ("speed",), "W", "qs_power_loss with the drag at its band's low end and the land and "
-             "pocket films at their fill band's low end")
-    register("qs_total_band_high", ("speed",), "W", "qs_power_loss with the drag at its band's high end and the land "
-             "and pocket films at their fill band's high end")
+    register("qs_ehl_rolling_band_low", ("speed",), "W", "qs_power_loss_ehl_rolling with every race contact's inlet "
+             "fed only by the cavity mixture at the cavity oil fraction (low end of the starvation band: Hamrock-Dowson "
+             "meniscus, Grubin inlet rolling-force ratio; models/ball_bearing/starvation.py, docs/power_loss.md)")
+    register("qs_ehl_rolling_band_high", ("speed",), "W", "qs_power_loss_ehl_rolling with flooded race contacts (high "
+             "end of the starvation band = qs_power_loss_ehl_rolling)")
+    for side in ("inner", "outer"):
+        register(f"{side}_starved_film_ratio_low", ("speed",), "1", f"central film of the thinnest loaded {side} race "
+                 "contact at the low end of the starvation band over its flooded film (Hamrock-Dowson starved film; "
+                 "1 at the high end)")
+    register("qs_total_band_low", ("speed",), "W", "qs_power_loss with the drag at its band's low end, the land and "
+             "pocket films at their fill band's low end and the EHL rolling loss at its starvation band's low end")
+    register("qs_total_band_high", ("speed",), "W", "qs_power_loss with the drag at its band's high end, the land "
+             "and pocket films at their fill band's high end and the EHL rolling loss flooded (its band's high end)")
 
 
 _register_qs_power()
@@ -552,13 +617,16 @@ def friction_angular_contact(case, speeds, *, thermal: bool = False):
         data[f"{key}_film_viscosity_factor"] = np.array([r[f"{key}_film_factor"] for r in rows])
         data[f"{key}_film_wall_temperature_a"] = np.array([r.get(f"{key}_film_wall_temperatures", (nan, nan))[0] for r in rows])
         data[f"{key}_film_wall_temperature_b"] = np.array([r.get(f"{key}_film_wall_temperatures", (nan, nan))[1] for r in rows])
-    for src in ("guide_land", "pocket_film"):
+    for src in ("guide_land", "pocket_film", "ehl_rolling"):
         for end in ("low", "high"):
             data[f"qs_{src}_band_{end}"] = np.array([r[f"{src}_band_{end}"] for r in rows])
+    for side in ("inner", "outer"):
+        data[f"{side}_starved_film_ratio_low"] = np.array([r[f"{side}_starved_film_ratio_low"] for r in rows])
     for end in ("low", "high"):
         data[f"qs_total_band_{end}"] = np.array([
             r["power_loss"] - r["drag"] + r[f"drag_band_{end}"]
-            - r["guide_land"] - r["pocket_film"] + r[f"guide_land_band_{end}"] + r[f"pocket_film_band_{end}"] for r in rows])
+            - r["guide_land"] - r["pocket_film"] + r[f"guide_land_band_{end}"] + r[f"pocket_film_band_{end}"]
+            - r["ehl_rolling"] + r[f"ehl_rolling_band_{end}"] for r in rows])
     data["qs_friction_torque"] = np.array([r["friction_torque"] for r in rows])
     data.update(skf2004.skf_moments(case, w))
     for term, srcs in OURS_AS_SKF.items():
