@@ -25,7 +25,8 @@ strips y = a sin(phi) (Gauss-Legendre in phi, not the law's strips or weights), 
 uniform (n_x steps, fine at both edges where the pressure changes fastest), by backward Euler (L-stable: the
 relaxation length eta U / G is far below a step where the viscosity is low), the implicit equation of every step solved
 by bisection on [0, min(tau_n + dx G gdot / U, tau_L)) (gdot_v rises monotonically to infinity at tau_L, so the root
-is bracketed and unique).  mu = sum_y w int tau dx / sum_y w int p dx (trapezoid in x).  It shares with the law only the
+is bracketed and unique), Richardson-extrapolated from n_x and n_x / 2 steps.  mu = sum_y w int tau dx /
+sum_y w int p dx (trapezoid in x).  It shares with the law only the
 rheology (thermal.roelands_viscosity or barus_viscosity, tau0, Lambda, G_eff) and the contact's parameters
 (thermal.contact_parameters).
 
@@ -62,8 +63,18 @@ def contact_mu(S, W, U, Ep, Rx, k, a, T, eta_in, alpha, beta_in, prm=None, *, n_
     """mu of a whole contact by the Maxwell-Eyring equation integrated along x, isothermal [-] (odd in S).
 
     Arguments as thermal.contact_mu (K is not needed: no heat).  prm must have thermal = False.
-    Vectorised in S (all slips march together).
+    Vectorised in S (all slips march together).  Backward Euler is first order in the step: the result is the
+    Richardson extrapolation 2 mu(n_x) - mu(n_x / 2) (measured: the plain n_x = 400 march is 1.1e-3 off the closed
+    form of a constant-viscosity film, the extrapolated one 2.5e-5).
     """
+    fine = _contact_mu(S, W, U, Ep, Rx, k, a, T, eta_in, alpha, beta_in, prm, n_y=n_y, n_x=n_x, h=h)
+    coarse = _contact_mu(S, W, U, Ep, Rx, k, a, T, eta_in, alpha, beta_in, prm, n_y=n_y, n_x=n_x // 2, h=h)
+    mu = 2.0 * fine[0] - coarse[0]
+    return (mu, fine[1]) if return_strips else mu
+
+
+def _contact_mu(S, W, U, Ep, Rx, k, a, T, eta_in, alpha, beta_in, prm, *, n_y, n_x, h):
+    """One backward-Euler march (:func:`contact_mu`); returns (mu, parameters)."""
     prm = prm or th.PhysicalParameters(thermal=False)
     if prm.thermal:
         raise ValueError("the Maxwell-Eyring reference is isothermal: use PhysicalParameters(thermal=False)")
@@ -105,7 +116,7 @@ def contact_mu(S, W, U, Ep, Rx, k, a, T, eta_in, alpha, beta_in, prm=None, *, n_
             eta = eta_of(np.maximum(p, 1.0))
             lo = np.zeros_like(tau)
             base = tau + dx * A
-            for _ in range(52):
+            for _ in range(46):
                 mid = 0.5 * (lo + hi)
                 F = mid - base + dx * B * viscous_rate(mid, eta, t0, tauL)
                 pos = F > 0.0
@@ -118,6 +129,4 @@ def contact_mu(S, W, U, Ep, Rx, k, a, T, eta_in, alpha, beta_in, prm=None, *, n_
     load = 0.5 * math.pi * bu * p0u                      # int p dx of each strip
     mu = np.sum(wy * integral, axis=1) / float(np.sum(wy * load))
     mu = np.copysign(mu, Sa.ravel()).reshape(Sa.shape)
-    if return_strips:
-        return mu, dict(b=b, p0=p0, h=h, Ge=Ge, tau0=t0, Lambda=Lam)
-    return mu
+    return mu, dict(b=b, p0=p0, h=h, Ge=Ge, tau0=t0, Lambda=Lam)
