@@ -1,0 +1,172 @@
+"""The physical traction law's viscoelastic build-up against the Maxwell-Eyring equation integrated along x.
+
+The finite-volume reference of test_traction_thermal_reference.py shares the law's closed-form Maxwell build-up
+tau = tau_f (1 - exp(-tel / tau_f)); this one does not: tests/helpers/maxwell_eyring_reference.py integrates Johnson
+& Tevaarwerk's Maxwell-Eyring equation gdot = (1/G) dtau/dt + gdot_v(tau) along every streamline of the Hertz ellipse,
+with gdot_v the inverse of the law's own steady flow curve, isothermal.  Tolerances (docs/traction.md, "The
+viscoelastic build-up against the Maxwell-Eyring equation", written before the grid was run): |mu_law - mu_ref| <=
+0.10 |mu_ref| + 3e-4; the reference against the closed form of a constant-viscosity linear Maxwell film 1e-3 and
+against itself on a 4x finer path 1e-3.
+
+Result (tools/investigations/traction_maxwell_reference_grid.py): the law holds the tolerance in the viscous regime,
+in the linear elastic range and on the plateau, but not at the elastic-plastic knee, where its closed form rises more
+softly than the equation (e.g. the default contact, S = 1e-3: law 0.0216, reference 0.0271, -20 %).  Those cases are
+strict xfails: a law that comes to meet the tolerance there turns them into failures, to be moved to the passing set.
+"""
+
+import math
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+from scipy.integrate import quad
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "helpers"))
+import maxwell_eyring_reference as mx  # noqa: E402
+
+import hsbearing  # noqa: E402
+from hsbearing.models import hertz  # noqa: E402
+from hsbearing.models.traction import thermal as th  # noqa: E402
+
+EP = 228.6e9  # steel on steel, reduced modulus [Pa]
+RX, RY = 3.87e-3, 0.124  # the default case's inner contact (zhang2016 bearing)
+REL, ABS = 0.10, 3e-4
+KNEE = "the closed-form build-up is softer than the Maxwell-Eyring equation at the elastic-plastic knee " \
+       "(docs/traction.md, the viscoelastic build-up)"
+
+
+def _contact(oil="4106", W=182.0, U=16.3, T_C=130.0, Rx=RX, Ry=RY, prm=None):
+    T = T_C + 273.15
+    eta, alpha, beta, K, _ = hsbearing._oil_at(oil, T)
+    c = hertz.point_contact(Rx, Ry, W, EP, 0.0, EP, 0.0)
+    return dict(W=W, U=U, Ep=EP, Rx=Rx, k=float(c.ellipticity), a=float(c.a), T=T, eta_in=eta, alpha=alpha,
+                beta_in=beta, prm=prm or th.PhysicalParameters(thermal=False)), K
+
+
+def _law(S, c, K):
+    return th.contact_mu(np.atleast_1d(S), c["W"], c["U"], c["Ep"], c["Rx"], c["k"], c["a"], c["T"], c["eta_in"],
+                         c["alpha"], c["beta_in"], K, c["prm"])
+
+
+def _ref(S, c, **kw):
+    return mx.contact_mu(np.atleast_1d(S), c["W"], c["U"], c["Ep"], c["Rx"], c["k"], c["a"], c["T"], c["eta_in"],
+                         c["alpha"], c["beta_in"], c["prm"], **kw)
+
+
+def test_reference_matches_the_closed_form_of_a_constant_viscosity_linear_maxwell_film():
+    """eta constant (Barus, alpha -> 0), flow linear (tau0 large), no cap (Lambda large): the Maxwell equation has the
+    closed form tau = eta gdot (1 - exp(-G_eff (x - x_in) / (eta U))); integrated over the ellipse by quadrature."""
+    prm = th.PhysicalParameters(thermal=False, pressure_viscosity="barus", tau0=1e12, Lambda=1e3)
+    c, _ = _contact(T_C=130.0, prm=prm)
+    c["alpha"] = 1e-15
+    c["eta_in"] = 2.0  # a viscous film: relaxation length eta U / G of the order of the contact
+    S = np.array([1e-4, 1e-3, 0.01])
+    ref = _ref(S, c)
+    b, p0, h, Ge, _ = th.contact_parameters(c["W"], c["U"], EP, RX, c["k"], c["a"], c["eta_in"], c["alpha"], prm,
+                                            c["T"])
+    # closed form: along a strip of half-width b_u the stress integrates to
+    # eta gdot [2 b_u - lam (1 - exp(-2 b_u / lam))], lam = eta U / G_eff; then over y by adaptive quadrature
+    lam = c["eta_in"] * c["U"] / Ge
+    W = 2.0 * math.pi * c["a"] * b * p0 / 3.0
+    for s, r in zip(S, ref):
+        g = s * c["U"] / h
+
+        def strip(y, g=g):
+            bu = b * math.sqrt(max(1.0 - (y / c["a"]) ** 2, 0.0))
+            return c["eta_in"] * g * (2.0 * bu + lam * math.expm1(-2.0 * bu / lam))
+
+        exact = quad(strip, -c["a"], c["a"], epsabs=0.0, epsrel=1e-10, limit=200)[0] / W
+        assert r == pytest.approx(exact, rel=1e-3)
+
+
+@pytest.mark.slow
+def test_reference_is_converged_along_the_path():
+    c, _ = _contact()
+    S = np.array([1e-4, 1e-3, 0.05])
+    assert np.allclose(_ref(S, c, n_x=400), _ref(S, c, n_x=1600), rtol=1e-3, atol=0)
+
+
+def test_law_and_reference_are_odd_in_slip():
+    c, K = _contact()
+    S = np.array([-0.01, 0.01])
+    ref, law = _ref(S, c), _law(S, c, K)
+    assert np.allclose(ref[::-1], -ref, rtol=0, atol=1e-15)
+    assert np.allclose(law[::-1], -law, rtol=0, atol=1e-15)
+
+
+def _check(c, K, S):
+    S = np.atleast_1d(S)
+    law, ref = _law(S, c, K), _ref(S, c)
+    out = [(float(s), float(m), float(r)) for s, m, r in zip(S, law, ref) if not abs(m - r) <= REL * abs(r) + ABS]
+    assert not out, out
+
+
+def test_law_within_tolerance_at_the_default_contact():
+    """The default contact (4106, 182 N, 16.3 m/s, 130 degC, p0 1.28 GPa) at the bearing's slips and beyond."""
+    c, K = _contact()
+    _check(c, K, [1e-4, 3e-3, 0.01, 0.05, 0.3])
+
+
+@pytest.mark.xfail(strict=True, reason=KNEE)
+def test_law_at_the_elastic_plastic_knee_of_the_default_contact():
+    c, K = _contact()
+    _check(c, K, 1e-3)
+
+
+GRID = [(W, U, T) for W in (182.0, 100.0, 5000.0) for U in (16.3, 1.0, 100.0) for T in (130.0, 27.0, 230.0)]
+SLIPS = (1e-4, 1e-3, 3e-3, 0.01, 0.05, 0.3)
+GEOMETRY = {100.0: (RX, RY), 182.0: (RX, RY), 5000.0: (8.5e-3, 0.35)}
+# cases outside the tolerance, read from the grid run (tools/investigations/traction_maxwell_reference_grid.py)
+KNEE_CASES = {
+    (182.0, 16.3, 130, 0.001),
+    (182.0, 16.3, 27, 0.001),
+    (182.0, 16.3, 230, 0.001),
+    (182.0, 1, 130, 0.001),
+    (182.0, 1, 230, 0.001),
+    (182.0, 100, 130, 0.001),
+    (182.0, 100, 130, 0.003),
+    (182.0, 100, 27, 0.003),
+    (182.0, 100, 27, 0.01),
+    (182.0, 100, 230, 0.001),
+    (182.0, 100, 230, 0.003),
+    (100.0, 16.3, 130, 0.001),
+    (100.0, 16.3, 230, 0.001),
+    (100.0, 1, 230, 0.001),
+    (100.0, 100, 130, 0.001),
+    (100.0, 100, 130, 0.003),
+    (100.0, 100, 27, 0.003),
+    (100.0, 100, 27, 0.01),
+    (100.0, 100, 230, 0.001),
+    (100.0, 100, 230, 0.003),
+    (5000.0, 16.3, 130, 0.001),
+    (5000.0, 16.3, 130, 0.003),
+    (5000.0, 16.3, 27, 0.001),
+    (5000.0, 16.3, 27, 0.003),
+    (5000.0, 16.3, 230, 0.001),
+    (5000.0, 16.3, 230, 0.003),
+    (5000.0, 1, 130, 0.001),
+    (5000.0, 1, 27, 0.001),
+    (5000.0, 1, 230, 0.001),
+    (5000.0, 100, 130, 0.001),
+    (5000.0, 100, 130, 0.003),
+    (5000.0, 100, 27, 0.001),
+    (5000.0, 100, 27, 0.003),
+    (5000.0, 100, 27, 0.01),
+    (5000.0, 100, 230, 0.001),
+    (5000.0, 100, 230, 0.003),
+}
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("W,U,T_C", GRID)
+def test_law_against_reference_over_the_regime(W, U, T_C):
+    Rx, Ry = GEOMETRY[W]
+    c, K = _contact("4106", W, U, T_C, Rx, Ry)
+    S = np.array(SLIPS)
+    law, ref = _law(S, c, K), _ref(S, c)
+    out = [(s, float(m), float(r)) for s, m, r in zip(SLIPS, law, ref)
+           if not abs(m - r) <= REL * abs(r) + ABS]
+    expected = {s for (w, u, t, s) in KNEE_CASES if (w, u, t) == (W, U, T_C)}
+    assert {s for s, _, _ in out} == expected, out
+    assert all(math.copysign(1.0, m) == 1.0 for m in law)
