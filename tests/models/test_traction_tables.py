@@ -1,6 +1,7 @@
 """The tabulated strip integrand of the physical traction model (models/traction/tables.py, the kernel's
 ``eyring_strip_mu_nb``) against its exact twin (libm exp/asinh/expm1 at every node, ``eyring_strip_mu_exact_nb``)
-and the Python evaluation (``eyring.strip_mu``).
+and the Python evaluation (``eyring.strip_mu``).  The kernel evaluates the flow stress once per mirror pair of theta
+nodes and divides once per pair (exact rearrangements, rounding only): the bounds below hold for it unchanged.
 
 Bounds set before measuring, from the tables' own asserted relative errors (asinh(e^x): 1.5e-13, (1-e^-y)/y: 3e-13):
 |dmu| <= 5e-13 |mu| + 1e-16 and |dmu| <= 2e-14 over the whole regime the model visits (slide-roll 1e-4 ... 0.3, both
