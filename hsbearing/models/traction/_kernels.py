@@ -134,7 +134,7 @@ def eyring_coefficients_nb(W, U, Ep, Rx, k, a, eta_in, alpha, tau0, Lam, G):
     """Scalar numba twin of :func:`hsbearing.models.traction.eyring.contact_coefficients`:
     (Lambda, tau_0/p_0, ln(eta_in U/(h tau_0)), alpha p_0, G_eff b/(h p_0)) [-]; floors W >= 1e-9 N, U >= 1e-6 m/s.
 
-    The Hamrock-Dowson central film (eyring.central_film, Hamrock & Dowson 1977 Eq. for h_c)
+    The Hamrock-Dowson central film (eyring.central_film; Hamrock & Dowson, models/ehl.py [1] Eq. 69)
     h = 2.69 Rx Ub^0.67 (alpha E')^0.53 Wb^-0.067 (1 - 0.61 e^(-0.73 k)) is formed in logarithms (four logs and
     two exps instead of three pows, an exp and a log; ln h serves ln(eta U/(h tau_0)) directly): the same
     numbers within a few ulp (tests/models/test_traction_eyring.py compares with the Python evaluation).
