@@ -1,6 +1,7 @@
 """The tabulated strip integrand of the physical traction model (models/traction/tables.py, the kernel's
 ``eyring_strip_mu_nb``) against its exact twin (libm exp/asinh/expm1 at every node, ``eyring_strip_mu_exact_nb``)
-and the Python evaluation (``eyring.strip_mu``).
+and the Python evaluation (``eyring.strip_mu``).  The kernel evaluates the flow stress once per mirror pair of theta
+nodes and divides once per pair (exact rearrangements, rounding only): the bounds below hold for it unchanged.
 
 Bounds set before measuring, from the tables' own asserted relative errors (asinh(e^x): 1.5e-13, (1-e^-y)/y: 3e-13):
 |dmu| <= 5e-13 |mu| + 1e-16 and |dmu| <= 2e-14 over the whole regime the model visits (slide-roll 1e-4 ... 0.3, both
@@ -172,6 +173,49 @@ def test_derivative_in_slip_continuous_and_equal_to_the_exact_law(oil, T_C, W, U
         jump_exact = np.abs(np.diff(d_exact))
         assert np.max(jump_fast - jump_exact) <= 1e-6 * scale
     assert crossed, "the scan crossed no switch point"
+
+
+def test_mirror_node_pairs_are_exact():
+    """The kernel evaluates the flow stress once per mirror pair (+-theta_j share p/p0 = su cos theta_j): this needs
+    nodes symmetric to the last bit, which Gauss-Legendre nodes are; an odd or asymmetric set is refused."""
+    N = ey.MINOR_NODES
+    assert np.array_equal(N[:, 0], -N[::-1, 0]) and np.array_equal(N[:, 1], N[::-1, 1])
+    assert np.array_equal(N[:, 2], N[::-1, 2])
+    P = kt._node_pairs(N)
+    m = N.shape[0] // 2
+    assert P.shape == (m, 5)
+    np.testing.assert_array_equal(P[:, 0], N[:m, 1])
+    np.testing.assert_array_equal(P[:, 1], 1.0 + N[:m, 0])
+    np.testing.assert_array_equal(P[:, 2], 1.0 + N[::-1, 0][:m])  # the mirror node's 1 + sin theta
+    np.testing.assert_array_equal(P[:, 3], N[:m, 2])
+    assert kt._SUM_WCS == pytest.approx(float(np.sum(N[:, 2] * N[:, 1])), rel=1e-15)
+    with pytest.raises(ValueError, match="mirror-symmetric"):
+        kt._node_pairs(ey._minor_nodes(7))
+    bad = N.copy()
+    bad[0, 1] = np.nextafter(bad[0, 1], 1.0)
+    with pytest.raises(ValueError, match="mirror-symmetric"):
+        kt._node_pairs(bad)
+
+
+@pytest.mark.parametrize("oil", OILS)
+def test_contact_coefficients_in_logarithms_equal_the_python_evaluation_over_the_regime(oil):
+    """eyring_coefficients_nb forms the Hamrock-Dowson film in logarithms; the Python twin (eyring.contact_coefficients,
+    central_film with pows) agrees within 1e-13 relative over 100-5000 N, +-1-100 m/s, 27-230 degC, two contacts."""
+    lub = load_lubricant(bundled_path(oil))
+    worst = 0.0
+    for T_C in (27.0, 80.0, 150.0, 230.0):
+        T = T_C + 273.15
+        eta, alpha = lub.dynamic_viscosity(T, 960.0), lub.alpha(T, 960.0)
+        tau0 = ey.eyring_stress_default(ey.DEFAULT_LAMBDA, alpha)
+        for Rx, k, acoef in CONTACTS.values():
+            for W in (100.0, 700.0, 5000.0):
+                a = acoef * W ** (1.0 / 3.0)
+                for U in (1.0, -1.0, 10.0, 100.0, -100.0):
+                    args = (W, U, EP, Rx, k, a, eta, alpha, tau0, ey.DEFAULT_LAMBDA, ey.DEFAULT_SHEAR_MODULUS)
+                    cn = np.array(kt.eyring_coefficients_nb(*args))
+                    cp = np.array(ey.contact_coefficients(*args))
+                    worst = max(worst, float(np.max(np.abs(cn - cp) / np.abs(cp))))
+    assert worst <= 1e-13, worst
 
 
 def test_kernel_dispatch_uses_the_tabulated_twin():

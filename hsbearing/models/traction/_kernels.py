@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 
 import numba
+import numpy as np
 
 from hsbearing.compile_cache import check_compile_cache
 from hsbearing.models.traction.eyring import LOG_ASINH, MINOR_NODES
@@ -131,18 +132,26 @@ _LN2 = math.log(2.0)
 @numba.njit(cache=True, nogil=True)
 def eyring_coefficients_nb(W, U, Ep, Rx, k, a, eta_in, alpha, tau0, Lam, G):
     """Scalar numba twin of :func:`hsbearing.models.traction.eyring.contact_coefficients`:
-    (Lambda, tau_0/p_0, ln(eta_in U/(h tau_0)), alpha p_0, G_eff b/(h p_0)) [-]; floors W >= 1e-9 N, U >= 1e-6 m/s."""
+    (Lambda, tau_0/p_0, ln(eta_in U/(h tau_0)), alpha p_0, G_eff b/(h p_0)) [-]; floors W >= 1e-9 N, U >= 1e-6 m/s.
+
+    The Hamrock-Dowson central film (eyring.central_film; Hamrock & Dowson, models/ehl.py [1] Eq. 69)
+    h = 2.69 Rx Ub^0.67 (alpha E')^0.53 Wb^-0.067 (1 - 0.61 e^(-0.73 k)) is formed in logarithms (four logs and
+    two exps instead of three pows, an exp and a log; ln h serves ln(eta U/(h tau_0)) directly): the same
+    numbers within a few ulp (tests/models/test_traction_eyring.py compares with the Python evaluation).
+    """
     W = max(W, W_FLOOR)
     U = max(abs(U), U_FLOOR)
     b = a / k
     p0 = 1.5 * W / (math.pi * a * b)
-    Ub = eta_in * U / (Ep * Rx)
-    Wb = W / (Ep * Rx * Rx)
-    h = Rx * 2.69 * Ub**0.67 * (alpha * Ep) ** 0.53 * Wb**-0.067 * (1.0 - 0.61 * math.exp(-0.73 * k))  # Hamrock-Dowson
+    ERx = Ep * Rx
+    lUb = math.log(eta_in * U / ERx)  # ln Ub
+    lh = (math.log(2.69 * Rx * (1.0 - 0.61 * math.exp(-0.73 * k))) + 0.67 * lUb + 0.53 * math.log(alpha * Ep)
+          - 0.067 * math.log(W / (ERx * Rx)))  # ln h, Hamrock-Dowson
+    h = math.exp(lh)
     Ef = 4.0 * G * b / (math.pi * h * p0)  # elastic film slope
     Cc = 2.0 * Rx / b  # Carter creep slope
     Ge = G * Cc / (Ef + Cc)
-    return Lam, tau0 / p0, math.log(eta_in * U / (h * tau0)), alpha * p0, Ge * b / (h * p0)
+    return Lam, tau0 / p0, lUb + math.log(ERx / tau0) - lh, alpha * p0, Ge * b / (h * p0)
 
 
 # quintic Hermite tables of the strip integrand's one-variable functions (models.traction.tables), captured as
@@ -167,18 +176,68 @@ def table_eval_nb(coef, x0, inv_h, x):
     return coef[i, 0] + t * (coef[i, 1] + t * (coef[i, 2] + t * (coef[i, 3] + t * (coef[i, 4] + t * coef[i, 5]))))
 
 
+def _node_pairs(nodes):
+    """The theta nodes (an even count) as mirror pairs (theta_j, -theta_j), j < n/2: rows (cos theta_j,
+    1 + sin theta_j, 1 - sin theta_j, w_j cos theta_j, 1 / cos theta_j).  Gauss-Legendre nodes are symmetric to
+    the last bit (numpy symmetrises them; sin is odd and cos even in libm), so the two nodes of a pair share their
+    pressure and hence their flow stress exactly; anything else is refused."""
+    n = nodes.shape[0]
+    sn, cs, w = nodes[:, 0], nodes[:, 1], nodes[:, 2]
+    if n % 2 or not (np.array_equal(sn, -sn[::-1]) and np.array_equal(cs, cs[::-1]) and np.array_equal(w, w[::-1])):
+        raise ValueError("eyring.MINOR_NODES must be an even number of mirror-symmetric nodes (the paired strip "
+                         "integrand of _kernels.eyring_strip_mu_nb)")
+    m = n // 2
+    return np.ascontiguousarray(np.stack([cs[:m], 1.0 + sn[:m], 1.0 - sn[:m], w[:m], 1.0 / cs[:m]], axis=1))
+
+
+_PAIRS = _node_pairs(MINOR_NODES)
+_NPAIR = _PAIRS.shape[0]
+_SUM_WCS = float(np.sum(MINOR_NODES[:, 2] * MINOR_NODES[:, 1]))  # sum_j w_j cos^2 theta_j: den = su * this
+
+
+@numba.njit(cache=True, nogil=True, inline="always", error_model="numpy")
+def _asinh_exp_nb(lz):
+    """asinh(e^lz) [-]: lz + ln 2 above LOG_ASINH, the table ASINH_EXP on [LOG_ASINH_LOW, LOG_ASINH], e^lz below."""
+    if lz > LOG_ASINH:
+        return lz + _LN2
+    if lz >= _G_LO:
+        return table_eval_nb(_G_TAB, _G_X0, _G_IH, lz)
+    return math.exp(lz)
+
+
+@numba.njit(cache=True, nogil=True, inline="always", error_model="numpy")
+def _maxwell_nb(tel, itf):
+    """Maxwell build-up tau_f (1 - e^-y), y = tau_el / tau_f, from tau_el and 1/tau_f [Pa]: tau_el q(y) with
+    q(y) = (1 - e^-y)/y from the table ONE_MINUS_EXP_OVER_X below y = 40, tau_f from there on."""
+    y = tel * itf
+    if y < _Q_END:
+        return tel * table_eval_nb(_Q_TAB, _Q_X0, _Q_IH, y)
+    return 1.0 / itf
+
+
 @numba.njit(cache=True, nogil=True, error_model="numpy")
 def eyring_strip_mu_nb(c, S, u):
-    """:func:`eyring_strip_mu_exact_nb` with the node's transcendental functions from tables (odd in S) [-].
+    """:func:`eyring_strip_mu_exact_nb` with the node's transcendental functions from tables, node pairs sharing
+    their flow stress, and one division per pair (odd in S) [-].
 
-    Per node: asinh(e^lz) = lz + ln 2 above :data:`LOG_ASINH` (exact to double precision), the table
+    Tables: asinh(e^lz) = lz + ln 2 above :data:`LOG_ASINH` (exact to double precision), the table
     ``tables.ASINH_EXP`` on [LOG_ASINH_LOW, LOG_ASINH] (relative error <= 1.5e-13), e^lz below (exact to double
     precision: asinh z = z (1 - z^2/6 ...)); the Maxwell build-up tau_f (1 - e^-y), y = tau_el / tau_f, as
     tau_el q(y) with q(y) = (1 - e^-y)/y from ``tables.ONE_MINUS_EXP_OVER_X`` (relative error <= 3e-13, so also
     in the elastic limit y -> 0), and tau_f itself from y = 40 on (1 - e^-40 rounds to 1).  One libm log per
-    strip (ln|S|).  Every switch point joins its two sides within round-off, and the tables are C2, so mu stays
-    smooth in S (tests/models/test_traction_tables.py: the bound against this function's exact twin over the
-    whole regime, and finite-difference derivatives across the switch points).
+    strip (ln|S|).
+
+    Same arithmetic as the exact twin up to rounding (the reorganisation is exact algebra):
+    - the mirror nodes +-theta_j have the same pressure p/p0 = su cos theta_j, hence the same Eyring stress tau_v
+      and smooth minimum tau_f; only tau_el = ce s su (1 +- sin theta_j) differs: the asinh table, the smooth
+      minimum and its roots are evaluated once per pair (4 times per strip, not 8);
+    - the smooth minimum (tau_v^-4 + tau_L^-4)^(-1/4) as tau_v / g with g = (1 + r^4)^(1/4), r = tau_v / tau_L
+      (r = tau_v (1/(Lambda su)) (1/cos theta_j): one division per strip), so 1/tau_f = g / tau_v is the
+      pair's only division and y = tau_el / tau_f a product;
+    - den = sum_j w_j p_j/p0 = su sum_j w_j cos theta_j (a constant of the nodes).
+    Every switch point joins its two sides within round-off, and the tables are C2, so mu stays smooth in S
+    (tests/models/test_traction_tables.py: the bound against the exact twin over the whole regime, and
+    finite-difference derivatives across the switch points).
     """
     if S == 0.0:
         return 0.0
@@ -187,32 +246,17 @@ def eyring_strip_mu_nb(c, S, u):
     su = math.sqrt(max(1.0 - u * u, 0.0))
     lS = lv + math.log(s)
     cel = ce * s * su
+    csu = cp * su
+    iLs = 1.0 / (Lam * su)  # 1 / tau_L = iLs / cos theta_j
     num = 0.0
-    den = 0.0
-    for j in range(_MN.shape[0]):
-        sn, cs, w = _MN[j, 0], _MN[j, 1], _MN[j, 2]
-        pi_ = su * cs
-        tL = Lam * pi_
-        lz = lS + cp * pi_
-        if lz > LOG_ASINH:
-            asn = lz + _LN2
-        elif lz >= _G_LO:
-            asn = table_eval_nb(_G_TAB, _G_X0, _G_IH, lz)
-        else:
-            asn = math.exp(lz)
-        tv = r0 * asn
-        lo, hi = min(tv, tL), max(tv, tL)  # smooth minimum (tv^-4 + tL^-4)^(-1/4) (eyring.smooth_min)
-        r = lo / hi
+    for j in range(_NPAIR):
+        cs, opn, omn, w, ics = _PAIRS[j, 0], _PAIRS[j, 1], _PAIRS[j, 2], _PAIRS[j, 3], _PAIRS[j, 4]
+        tv = r0 * _asinh_exp_nb(lS + csu * cs)
+        r = tv * (iLs * ics)  # tau_v / tau_L
         r2 = r * r
-        tf = lo / math.sqrt(math.sqrt(1.0 + r2 * r2))
-        tel = cel * (1.0 + sn)
-        y = tel / tf
-        if y < _Q_END:
-            num += w * (tel * table_eval_nb(_Q_TAB, _Q_X0, _Q_IH, y))
-        else:
-            num += w * tf
-        den += w * pi_
-    mu = num / den
+        itf = math.sqrt(math.sqrt(1.0 + r2 * r2)) / tv  # 1 / tau_f (smooth minimum, eyring.smooth_min)
+        num += w * (_maxwell_nb(cel * opn, itf) + _maxwell_nb(cel * omn, itf))
+    mu = num / (su * _SUM_WCS)
     return mu if S > 0.0 else -mu
 
 

@@ -112,7 +112,8 @@ def _minor_nodes(n):
     return np.ascontiguousarray(np.stack([np.sin(th), np.cos(th), w * np.cos(th)], axis=1))
 
 
-#: (sin theta_j, cos theta_j, w_j cos theta_j) of the N_MINOR nodes (captured by the numba kernel).
+#: (sin theta_j, cos theta_j, w_j cos theta_j) of the N_MINOR nodes (captured by the numba kernel, which pairs the
+#: mirror nodes +-theta_j: they must stay an even, bit-symmetric set, _kernels._node_pairs checks it).
 MINOR_NODES = _minor_nodes(N_MINOR)
 MINOR_NODES.setflags(write=False)
 

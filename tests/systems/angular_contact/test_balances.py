@@ -94,6 +94,8 @@ REGIMES = {
     "inner_guided": {"cage.guidance": "inner_ring"},
     # the inlet-shear-heating factor on the EHL rolling force (friction.inlet_heating): its couple's power is a source
     "inlet_heating": {"friction.inlet_heating": "on", "operating.inner_speed": "30000 rpm"},
+    # the physical traction model (models.traction.eyring; the kernel's tabulated, node-paired strip integrand)
+    "physical_traction": {"lubricant.traction_law": "eyring"},
 }
 
 
