@@ -52,6 +52,7 @@ References
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -130,7 +131,7 @@ def _newton(r, L, s, n, phi, sig0, Gb, tol=1e-12, maxit=60):
     return phi, sig0, Gb
 
 
-def local_factor_table(r, L, s, n=128, steps_per_decade=8):
+def local_factor_table(r, L, s, n=128, steps_per_decade=4):
     """Local thermal factor Phi(r; L', s) = Gb / (12 (1 - r)) along a continuation path ending at L.
 
     Returns (Ls, Phi) with Ls the path (ascending, last = L) and Phi of shape (len(Ls), len(r)).
@@ -143,7 +144,7 @@ def local_factor_table(r, L, s, n=128, steps_per_decade=8):
     phi = np.zeros((r.size, n + 1))
     if L <= 0.0:
         return np.array([0.0]), np.ones((1, r.size))
-    L0 = 1e-4
+    L0 = 1e-2
     k = max(1, int(math.ceil(steps_per_decade * math.log10(max(L / L0, 10.0)))))
     Ls = np.geomspace(min(L0, L), L, k + 1)
     out = []
@@ -200,6 +201,15 @@ def _invert(g, target, b, R):
     return 0.5 * (lo + hi)
 
 
+@functools.lru_cache(maxsize=8)
+def _r_nodes(nq):
+    """Nodes r = sin^2(pi v / 2) and weights (Gauss-Legendre in v on (0, 1), times dr/dv)."""
+    v, wv = np.polynomial.legendre.leggauss(nq)
+    v = 0.5 * (v + 1.0)
+    r = np.sin(0.5 * math.pi * v) ** 2
+    return r, 0.5 * wv * 0.5 * math.pi * np.sin(math.pi * v)
+
+
 def _reduced_pressure(h0, eta0, u, b, R, Phi_of_r, gap, nq=200):
     """q(-b) = (12 eta0 u / h0) int_0^1 (1 - r) Phi(r) / g'(x(r)) dr [Pa].
 
@@ -207,13 +217,9 @@ def _reduced_pressure(h0, eta0, u, b, R, Phi_of_r, gap, nq=200):
     the Hertz edge r -> 1); nq-point Gauss-Legendre in v.
     """
     g, dg = _gap(gap, b, R)
-    v, wv = np.polynomial.legendre.leggauss(nq)
-    v = 0.5 * (v + 1.0)
-    wv = 0.5 * wv
-    r = np.sin(0.5 * math.pi * v) ** 2
-    drdv = 0.5 * math.pi * np.sin(math.pi * v)
+    r, wr = _r_nodes(nq)
     xi = _invert(g, h0 * (1.0 / r - 1.0), b, R)
-    val = np.sum(wv * drdv * (1.0 - r) * Phi_of_r(r) / dg(xi))
+    val = np.sum(wr * (1.0 - r) * Phi_of_r(r) / dg(xi))
     return 12.0 * eta0 * u / h0 * val
 
 
