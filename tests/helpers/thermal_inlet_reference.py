@@ -284,3 +284,84 @@ def murch_wilson_curve(L):
     """Murch & Wilson's published curve fit phi_T = 3.94 / (3.94 + L^0.62) [1] (pure rolling) [-]."""
     L = np.asarray(L, dtype=float)
     return 3.94 / (3.94 + L**0.62)
+
+
+# --- full dissipation: the heating with the pressure-dependent viscosity ---------------------------------------
+
+
+def full_dissipation_ratio(eta0, alpha, beta, k, u, s, R, b, p_edge, *, gap="hertz", n=64, nr=48, nv=400,
+                           L_cap=1e4):
+    """h0_thermal / h0_isothermal with the dissipation of the real viscosity, tau^2 / eta = e^(alpha p) tau~^2 /
+    (eta0 theta): the local problem at L_eff = L e^(alpha p) = L / (1 - alpha q), coupled along x through q.
+
+    Inlet condition at a finite pressure (the Ertel-Grubin equivalent): alpha q(-b) = 1 - exp(-alpha p_edge)
+    (p_edge = p_h; with heating in a sliding inlet the reduced pressure may never reach 1/alpha, because the
+    Couette heating grows as e^(alpha p)).  The local factor is tabulated on (r, log L_eff) along the
+    continuation path up to min(L e^(alpha p_edge), L_cap) (beyond L_cap: the factor at L_cap, which
+    underestimates the heating there; the returned ``capped`` says whether the cap was reached).  Along x: RK4 in
+    v (r = sin^2(pi v / 2)), nv steps; h0 by bisection.  Returns dict(ratio, h_iso, h_thermal, L, capped).
+    """
+    u = abs(float(u))
+    L = beta * eta0 * u * u / k
+    target = -math.expm1(-alpha * p_edge)
+    t = (np.arange(nr) + 0.5) / nr
+    rn = 0.5 * (1.0 - np.cos(math.pi * t))
+    Lmax = min(max(L, 1e-12) * math.exp(min(alpha * p_edge, 700.0)), L_cap)
+    Ls, Phi = local_factor_table(rn, Lmax, s, n=n)
+    if Ls.size < 2:
+        Ls, Phi = np.array([0.0, 1.0]), np.ones((2, rn.size))
+    lL = np.log(np.maximum(Ls, 1e-300))
+    spline = interpolate.RectBivariateSpline(rn, lL, Phi.T, kx=3, ky=1)
+    capped = {"hit": False}
+    g, dg = _gap(gap, b, R)
+
+    def Phi_at(r, y):
+        Le = L / max(1.0 - y, 1e-300)
+        if Le >= Ls[-1]:
+            capped["hit"] = Le > Ls[-1] * (1 + 1e-9)
+            Le = Ls[-1]
+        if Le <= Ls[0]:
+            return float(spline(r, lL[0])[0, 0]) if L > 0 else 1.0
+        return float(spline(r, math.log(Le))[0, 0])
+
+    vv = np.linspace(0.0, 1.0, 2 * nv + 1)[1:-1]  # RK4 nodes and midpoints, ends excluded (integrand 0 there)
+    rr = np.sin(0.5 * math.pi * vv) ** 2
+    jac = 0.5 * math.pi * np.sin(math.pi * vv)
+    hstep = 1.0 / nv
+
+    def shoot(h0, thermal):
+        xi = _invert(g, h0 * (1.0 / rr - 1.0), b, R)
+        base = np.concatenate([[0.0], 12.0 * eta0 * u * alpha / h0 * (1.0 - rr) / dg(xi) * jac, [0.0]])
+        rfull = np.concatenate([[0.0], rr, [1.0]])
+
+        def f(j, y):
+            if base[j] == 0.0:
+                return 0.0
+            return base[j] * (Phi_at(rfull[j], y) if thermal else 1.0)
+
+        y = 0.0
+        for i in range(nv):
+            j0, jm, j1 = 2 * i, 2 * i + 1, 2 * i + 2
+            k1 = f(j0, y)
+            k2 = f(jm, min(y + 0.5 * hstep * k1, target))
+            k3 = f(jm, min(y + 0.5 * hstep * k2, target))
+            k4 = f(j1, min(y + hstep * k3, target))
+            y += hstep * (k1 + 2 * k2 + 2 * k3 + k4) / 6.0
+            if y >= target:
+                return True
+        return False
+
+    def solve(thermal, lo=1e-12, hi=1e-3):
+        for _ in range(80):
+            mid = math.sqrt(lo * hi)
+            if shoot(mid, thermal):
+                lo = mid
+            else:
+                hi = mid
+            if hi / lo < 1.0 + 1e-7:
+                break
+        return math.sqrt(lo * hi)
+
+    h_iso = solve(False)
+    h_th = solve(True, 1e-3 * h_iso, h_iso * 1.0001)
+    return {"ratio": h_th / h_iso, "h_iso": h_iso, "h_thermal": h_th, "L": L, "capped": capped["hit"]}

@@ -1,6 +1,6 @@
 """phi_T of models/ehl.py (Gupta et al. 1992) and the Murch & Wilson curve against our own thermal inlet solution.
 
-Run: ``PYTHONPATH=. python tools/investigations/thermal_inlet_comparison.py [--quick]``
+Run: ``PYTHONPATH=. python tools/investigations/thermal_inlet_comparison.py [--quick | --full-dissipation]``
 
 Grid (docs/power_loss.md, "Inlet heating: proof against our own thermal inlet"): oils 4109/4106/4050 at 27, 130,
 230 degC (viscosity and its slope beta = -d ln eta / dT from the Walther law, density 920 kg/m^3 as in
@@ -62,8 +62,35 @@ def grid(quick=False):
     return rows
 
 
+def full_dissipation_table():
+    """The two readings of the dissipation against phi_T and the Murch-Wilson curve (docs/power_loss.md): line
+    contact R = 4 mm, u = 10 m/s, alpha = 1.3e-8 /Pa, beta = 0.03 /K, k = 0.1 W/(m K), eta0 set by L."""
+    u, alpha, beta, k = 10.0, 1.3e-8, 0.03, 0.1
+    print("| p_h [GPa] | s | L | reference, reduced dissipation | reference, full dissipation (cap reached) | "
+          "phi_T (ehl, Gupta) | Murch-Wilson |")
+    print("|---|---|---|---|---|---|---|")
+    for ph in (0.5e9, 3.0e9):
+        b = 4.0 * R * ph / EP
+        for s in (0.0, 0.3):
+            for L in (1.0, 10.0, 100.0):
+                eta0 = L * k / (beta * u * u)
+                try:
+                    res = ref.full_dissipation_ratio(eta0, alpha, beta, k, u, s, R, b, ph, nv=200)
+                    fd = f"{res['ratio']:.3f} ({'yes' if res['capped'] else 'no'})"
+                except RuntimeError:
+                    fd = "no solution"
+                red = ref.thermal_ratio(eta0, alpha, beta, k, u, s, R, b, n=64)["ratio"]
+                phi = float(ehl.thermal_reduction_factor(L, ph, EP, s))
+                print(f"| {ph / 1e9:.1f} | {s:.1f} | {L:g} | {red:.3f} | {fd} | {phi:.3f} | "
+                      f"{float(ref.murch_wilson_curve(L)):.3f} |", flush=True)
+
+
 def main(argv=None):
-    quick = "--quick" in (argv or sys.argv[1:])
+    args = argv or sys.argv[1:]
+    if "--full-dissipation" in args:
+        full_dissipation_table()
+        return
+    quick = "--quick" in args
     rows = grid(quick)
     print("| oil | T [degC] | u [m/s] | p_h [GPa] | s | L | h_iso [nm] | reference | phi_T (ehl) | error | Murch-Wilson |")
     print("|---|---|---|---|---|---|---|---|---|---|---|")
