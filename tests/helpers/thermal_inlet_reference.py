@@ -27,6 +27,10 @@ from first principles):
   Poiseuille flow (pure rolling) plus the Couette shear of the sliding;
 * inlet condition (Grubin / Ertel-Grubin): the reduced pressure, integrated from far upstream (q = 0), reaches
   1 / alpha at the contact edge x = -b; h0 by bisection on q(-b) = 1/alpha.
+* variant :func:`full_dissipation_ratio`: the dissipation of the real viscosity, e^(alpha p) tau~^2 / (eta0 theta),
+  i.e. the local problem at L e^(alpha p) = L / (1 - alpha q), marched along x with q; inlet condition at the
+  finite edge pressure p_h (alpha q = 1 - e^(-alpha p_h)).  This reading reproduces the published Murch-Wilson
+  curve in pure rolling (docs/power_loss.md); which of the two the papers used was not read.
 
 Dimensionless local problem (at each x; z in units of h, velocities of u, phi = beta (T - T0)):
   phi'' = -L sigma^2 e^phi,  phi(0) = phi(1) = 0,  sigma = sigma0 + Gb z,
@@ -66,6 +70,7 @@ __all__ = [
     "rigid_isothermal_h0",
     "grubin_h0",
     "murch_wilson_curve",
+    "full_dissipation_ratio",
 ]
 
 

@@ -234,3 +234,24 @@ def test_phi_T_against_the_reference_over_the_regime():
     err = np.array([r["err_phi_T"] for r in rows])
     assert np.all(err <= 0.0)  # the direction holds everywhere: phi_T never above the reference
     assert np.all(np.abs(err) <= 0.10)
+
+
+def _full(L, ph, s=0.0):
+    beta, k, u, alpha = 0.03, 0.1, 10.0, 1.3e-8
+    eta0 = L * k / (beta * u * u)
+    return ref.full_dissipation_ratio(eta0, alpha, beta, k, u, s, R, 4.0 * R * ph / EP, ph, nv=200)["ratio"]
+
+
+def test_full_dissipation_reference_meets_the_murch_wilson_curve():
+    """With the heating of the real viscosity (e^(alpha p)) the reference meets the published Murch & Wilson
+    (1975) curve 3.94 / (3.94 + L^0.62) within the 10 % set in docs/power_loss.md: 3 GPa, L = 10, s = 0
+    (measured 0.484 against 0.486)."""
+    assert _full(10.0, 3.0e9) == pytest.approx(float(ref.murch_wilson_curve(10.0)), rel=0.10)
+
+
+@pytest.mark.slow
+@pytest.mark.xfail(strict=True, reason="measured: 0.537 against 0.486 at 0.5 GPa, L = 10 (+10.5 %); 0.870 against "
+                   "0.798 at L = 1 (+9 %); 0.849 / 0.798 at 3 GPa, L = 1 (+6 %)")
+def test_full_dissipation_reference_meets_the_curve_at_low_pressure():
+    for L, ph in ((1.0, 3.0e9), (1.0, 0.5e9), (10.0, 0.5e9)):
+        assert _full(L, ph) == pytest.approx(float(ref.murch_wilson_curve(L)), rel=0.10)
