@@ -194,7 +194,12 @@ def _race_contact(p, qu, qw, load, ball, race, shape):
     spin_roll = -((wx - Wx) * nx + (wy - Wr) * nr + (wz - Wt) * nt) * D2 / U
     if p.switches.friction:
         a = acoef * np.cbrt(Q)  # semi-major axis, constant ellipticity
-        tc = traction_coefficients_nb(p, Q, U, Rx, ke, a)  # per-contact coefficients of the law (traction/_kernels)
+        phi_film = 1.0
+        if p.switches.inlet_heating:  # the physical traction law's film sees the inlet factor (slip 0, like the
+            # reported films: the centre slip is an output of this traction)
+            phi_film = inlet_heating_factor(p.lubricant.eta_in, p.lubricant.beta_T, p.lubricant.K_oil, U,
+                                            1.5 * Q * ke / (math.pi * a * a), p.race.Ep, 0.0)
+        tc = traction_coefficients_nb(p, Q, U, Rx, ke, a, phi_film)  # per-contact coefficients (traction/_kernels)
         iU = 1.0 / U
         seps = p.traction.s_eps
         # symmetric nodes (qu[n-1-k] = -qu[k], Gauss-Legendre): phi of the mirror node is exactly -phi, so its

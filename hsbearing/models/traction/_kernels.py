@@ -130,12 +130,13 @@ _LN2 = math.log(2.0)
 
 
 @numba.njit(cache=True, nogil=True)
-def eyring_coefficients_nb(W, U, Ep, Rx, k, a, eta_in, alpha, tau0, Lam, G):
-    """Scalar numba twin of :func:`hsbearing.models.traction.eyring.contact_coefficients`:
+def eyring_coefficients_nb(W, U, Ep, Rx, k, a, eta_in, alpha, tau0, Lam, G, phi_T=1.0):
+    """Scalar numba twin of :func:`hsbearing.models.traction.eyring.contact_coefficients` (phi_T: the inlet-heating
+    film factor, 1 = isothermal):
     (Lambda, tau_0/p_0, ln(eta_in U/(h tau_0)), alpha p_0, G_eff b/(h p_0)) [-]; floors W >= 1e-9 N, U >= 1e-6 m/s.
 
     The Hamrock-Dowson central film (eyring.central_film; Hamrock & Dowson, models/ehl.py [1] Eq. 69)
-    h = 2.69 Rx Ub^0.67 (alpha E')^0.53 Wb^-0.067 (1 - 0.61 e^(-0.73 k)) is formed in logarithms (four logs and
+    h = phi_T 2.69 Rx Ub^0.67 (alpha E')^0.53 Wb^-0.067 (1 - 0.61 e^(-0.73 k)) is formed in logarithms (four logs and
     two exps instead of three pows, an exp and a log; ln h serves ln(eta U/(h tau_0)) directly): the same
     numbers within a few ulp (tests/models/test_traction_eyring.py compares with the Python evaluation).
     """
@@ -145,8 +146,8 @@ def eyring_coefficients_nb(W, U, Ep, Rx, k, a, eta_in, alpha, tau0, Lam, G):
     p0 = 1.5 * W / (math.pi * a * b)
     ERx = Ep * Rx
     lUb = math.log(eta_in * U / ERx)  # ln Ub
-    lh = (math.log(2.69 * Rx * (1.0 - 0.61 * math.exp(-0.73 * k))) + 0.67 * lUb + 0.53 * math.log(alpha * Ep)
-          - 0.067 * math.log(W / (ERx * Rx)))  # ln h, Hamrock-Dowson
+    lh = (math.log(phi_T * 2.69 * Rx * (1.0 - 0.61 * math.exp(-0.73 * k))) + 0.67 * lUb + 0.53 * math.log(alpha * Ep)
+          - 0.067 * math.log(W / (ERx * Rx)))  # ln h, Hamrock-Dowson (x phi_T)
     h = math.exp(lh)
     Ef = 4.0 * G * b / (math.pi * h * p0)  # elastic film slope
     Cc = 2.0 * Rx / b  # Carter creep slope
@@ -294,12 +295,13 @@ def eyring_strip_mu_exact_nb(c, S, u):
 
 
 @numba.njit(cache=True, nogil=True)
-def traction_coefficients_nb(p, W, U, Rx, k, a):
+def traction_coefficients_nb(p, W, U, Rx, k, a, phi_T=1.0):
     """Per-contact coefficients of the case's traction law (p: the kernel's parameter record, ``P[0]``).
 
     Registered seed laws (law_id >= 0): (A, B, C, D, 0) of :func:`coefficients_nb` (unchanged); user
     coefficients: (c_A, c_B, c_C, c_D, 0); the physical model: :func:`eyring_coefficients_nb`.
-    W normal load [N], U rolling speed [m/s], Rx [m], k = a/b [-], a semi-major axis [m].
+    W normal load [N], U rolling speed [m/s], Rx [m], k = a/b [-], a semi-major axis [m]; phi_T the contact's
+    inlet-heating film factor (the physical model's central film only; 1 = isothermal).
     """
     lid = p.traction.law_id
     if lid >= 0:
@@ -308,7 +310,7 @@ def traction_coefficients_nb(p, W, U, Rx, k, a):
     if lid == COEFFICIENTS_LAW_ID:
         return p.traction.c_A, p.traction.c_B, p.traction.c_C, p.traction.c_D, 0.0
     return eyring_coefficients_nb(W, U, p.race.Ep, Rx, k, a, p.lubricant.eta_in, p.lubricant.alpha,
-                                  p.traction.tau0, p.traction.Lambda, p.traction.G)
+                                  p.traction.tau0, p.traction.Lambda, p.traction.G, phi_T)
 
 
 @numba.njit(cache=True, nogil=True)

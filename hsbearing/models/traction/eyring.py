@@ -155,15 +155,18 @@ class EyringParameters:
         return float(tau0), float(lam), float(self.G)
 
 
-def central_film(W, U, Ep, Rx, k, eta_in, alpha):
-    """Hamrock-Dowson central film thickness h_c [m] ([4]; :func:`hsbearing.models.ehl.central_film_thickness`).
+def central_film(W, U, Ep, Rx, k, eta_in, alpha, phi_T=1.0):
+    """Hamrock-Dowson central film thickness h_c [m] ([4]; :func:`hsbearing.models.ehl.central_film_thickness`),
+    times the inlet-shear-heating factor phi_T [-] (:func:`hsbearing.models.ehl.thermal_reduction_factor`,
+    Gupta et al. 1992; 1 = isothermal, the default; the kernel passes the contact's factor at slip 0 when
+    ``friction.inlet_heating = on``, like the reported films).
 
     W normal load [N], U rolling speed [m/s] (|U| used), Ep reduced modulus [Pa], Rx [m], k = a/b [-],
     eta_in [Pa s], alpha [1/Pa].
     """
     Ub = eta_in * abs(U) / (Ep * Rx)
     Wb = W / (Ep * Rx * Rx)
-    return Rx * 2.69 * Ub**0.67 * (alpha * Ep) ** 0.53 * Wb**-0.067 * (1.0 - 0.61 * math.exp(-0.73 * k))
+    return phi_T * Rx * 2.69 * Ub**0.67 * (alpha * Ep) ** 0.53 * Wb**-0.067 * (1.0 - 0.61 * math.exp(-0.73 * k))
 
 
 def effective_shear_modulus(G, b, h, p0, Rx):
@@ -179,16 +182,16 @@ def effective_shear_modulus(G, b, h, p0, Rx):
     return G * C / (Ef + C)
 
 
-def contact_coefficients(W, U, Ep, Rx, k, a, eta_in, alpha, tau0, Lambda, G):
+def contact_coefficients(W, U, Ep, Rx, k, a, eta_in, alpha, tau0, Lambda, G, phi_T=1.0):
     """Per-contact coefficients (Lambda, r0, lv, cp, ce) of :func:`strip_mu` [-].
 
     r0 = tau_0 / p_0, lv = ln(eta_in |U| / (h tau_0)), cp = alpha p_0, ce = G_eff b / (h p_0), with p_0 the
     Hertz peak pressure 3 W / (2 pi a b), b = a / k the semi-axis along the rolling direction, h the
-    central film (:func:`central_film`).  Scalars.
+    central film (:func:`central_film`, times the inlet-heating factor phi_T).  Scalars.
     """
     b = a / k
     p0 = 1.5 * W / (math.pi * a * b)
-    h = central_film(W, U, Ep, Rx, k, eta_in, alpha)
+    h = central_film(W, U, Ep, Rx, k, eta_in, alpha, phi_T)
     Ge = effective_shear_modulus(G, b, h, p0, Rx)
     return Lambda, tau0 / p0, math.log(eta_in * abs(U) / (h * tau0)), alpha * p0, Ge * b / (h * p0)
 
@@ -233,14 +236,14 @@ def strip_mu(c, S, u, nodes=None):
     return math.copysign(num / den, S)
 
 
-def contact_mu(S, W, U, Ep, Rx, k, a, eta_in, alpha, tau0, Lambda, G, n_major=5):
+def contact_mu(S, W, U, Ep, Rx, k, a, eta_in, alpha, tau0, Lambda, G, n_major=5, phi_T=1.0):
     """mu of a whole contact: :func:`strip_mu` summed over the kernel's strips (strip_load_weights) [-].
 
     The Python twin of what the kernel does per contact (one slip S for every strip: no spin).  Vectorised in S.
     """
     from hsbearing.models.ball_bearing.ball import strip_load_weights
 
-    c = contact_coefficients(W, U, Ep, Rx, k, a, eta_in, alpha, tau0, Lambda, G)
+    c = contact_coefficients(W, U, Ep, Rx, k, a, eta_in, alpha, tau0, Lambda, G, phi_T)
     qu, qw = strip_load_weights(n_major)
     S = np.asarray(S, dtype=float)
     out = np.array([sum(w * strip_mu(c, s, u) for u, w in zip(qu, qw)) for s in S.ravel()])
