@@ -89,20 +89,20 @@ def march_film(xc, p, gdot, U, G, tauL, rate_of, x_in, n_sub=2, guess=None):
             continue
         ds = (float(xc[i]) - xp) / n_sub
         xp = float(xc[i])
-        iL4 = tL ** -4
         for _ in range(n_sub):
             base = tau + ds * B * gdot
             lo, hi = 0.0, min(base, tL * (1.0 - 1e-12))
             t = float(guess[i]) if guess is not None and 0.0 < guess[i] < hi else 0.5 * hi
             for _ in range(200):
-                tv = (t ** -4 - iL4) ** -0.25
+                q = 1.0 - (t / tL) ** 4
+                tv = t * q ** -0.25  # (t^-4 - tL^-4)^(-1/4) without overflow at small t
                 g, dg = rate_of(i, tv)
                 f = t - base + ds * B * g
                 if f > 0.0:
                     hi = t
                 else:
                     lo = t
-                tn = t - f / (1.0 + ds * B * dg * (tv / t) ** 5)
+                tn = t - f / (1.0 + ds * B * dg * q ** -1.25)
                 if not lo < tn < hi:
                     tn = 0.5 * (lo + hi)
                 if abs(tn - t) <= 1e-12 * t or hi - lo <= 1e-13 * hi:
@@ -274,7 +274,7 @@ def strip_reference(S, U, p0u, b_u, h, T_in, oil, prm, *, Ge, tau0_in, n_x=120, 
             break
         tv_z = np.maximum(tau, 1e-300)[:, None]
         lsv = np.minimum(tv_z, tauL[:, None] * (1.0 - 1e-12))
-        tvv = (lsv ** -4 - tauL[:, None] ** -4) ** -0.25  # viscous stress of each cell at its stress
+        tvv = lsv * (1.0 - (lsv / tauL[:, None]) ** 4) ** -0.25  # viscous stress of each cell at its stress
         rate = (t0_z / eta_z) * np.sinh(np.minimum(tvv / t0_z, 700.0))
         share = rate / np.maximum(rate.sum(axis=1, keepdims=True), 1e-300)
         w = (tau * dU)[:, None] * share * dxc  # W per unit y-length in each film cell

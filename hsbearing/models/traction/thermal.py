@@ -252,18 +252,17 @@ def maxwell_eyring_march(x, p, eta, tau0, tauL, G, gdot, U, x_in, tau_guess=None
         hi = min(base, tL * (1.0 - 1e-12))
         lo = 0.0
         c, t0 = dx * B * t0s[i] / es[i], t0s[i]
-        iL4 = tL ** -4
         t = gs[i] if gs is not None and 0.0 < gs[i] < hi else 0.5 * hi
         for _ in range(100):
-            q = t ** -4 - iL4
-            tv = q ** -0.25 if q > 0.0 else 1e300
+            q = 1.0 - (t / tL) ** 4  # tv = (t^-4 - tL^-4)^(-1/4) = t q^(-1/4), no overflow at small t
+            tv = t * q ** -0.25 if q > 0.0 else 1e300
             r = min(tv / t0, 700.0)
             f = t - base + c * sinh(r)
             if f > 0.0:
                 hi = t
             else:
                 lo = t
-            df = 1.0 + c * cosh(r) / t0 * (tv / t) ** 5 if r < 700.0 else math.inf
+            df = 1.0 + c * cosh(r) / t0 * q ** -1.25 if r < 700.0 else math.inf
             tn = t - f / df
             if not lo < tn < hi:
                 tn = 0.5 * (lo + hi)
