@@ -124,3 +124,17 @@ def test_reference_buildup_is_converged_in_its_sub_steps():
     m2 = fv.strip_reference(*args, Ge=c["Ge"], tau0_in=c["tau0"], n_sub=2)[0]
     m8 = fv.strip_reference(*args, Ge=c["Ge"], tau0_in=c["tau0"], n_sub=8)[0]
     assert m2 == pytest.approx(m8, rel=0.01)
+
+
+def test_reference_sees_the_closed_form_buildup_at_the_knee():
+    """Independence of the build-up: the law's former closed form (buildup = "closed") falls outside the tolerance
+    against this reference at the knee of the default contact (4106, S = 1e-3, centre strip), the marched law
+    inside it."""
+    c = _contact("4106", 182.0, 16.3, 130.0)
+    c["U"] = 16.3
+    args = (1e-3, c["U"], c["p0"], c["b"], c["h"], c["T"], c["oil"])
+    mr = fv.strip_reference(*args, c["prm"], Ge=c["Ge"], tau0_in=c["tau0"])[0]
+    march = th.strip_mu(*args, c["prm"], Ge=c["Ge"], tau0_in=c["tau0"])
+    closed = th.strip_mu(*args, c["prm"].with_(buildup="closed"), Ge=c["Ge"], tau0_in=c["tau0"])
+    assert abs(march - mr) <= REL * abs(mr) + ABS, (march, mr)
+    assert closed < mr - (REL * abs(mr) + ABS), (closed, mr)

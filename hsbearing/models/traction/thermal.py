@@ -36,8 +36,10 @@ Registered as the law ``"physical"`` of every oil (:mod:`hsbearing.models.tracti
    the elastic-plastic knee (tests/validation/test_traction_maxwell_reference.py, docs/traction.md).
 
 Proof: tests/validation/test_traction_thermal_reference.py against an independent finite-volume solution of
-the energy equation (tests/helpers/thermal_traction_fv.py); tolerances and results: docs/traction.md,
-"Thermal physical model".
+the energy equation with its own march of the Maxwell-Eyring equation (tests/helpers/thermal_traction_fv.py);
+tests/validation/test_traction_maxwell_reference.py (isothermal) against the Maxwell-Eyring equation integrated to
+convergence along every streamline (tests/helpers/maxwell_eyring_reference.py); tolerances and results:
+docs/traction.md, "Thermal physical model".
 
 References
 ----------
