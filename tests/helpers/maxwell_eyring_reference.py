@@ -1,8 +1,9 @@
 """Independent reference for the viscoelastic build-up of the traction law "physical": the Maxwell-Eyring equation
 integrated along the streamlines of the Hertz ellipse.
 
-The law (hsbearing.models.traction.thermal.local_stress, the same closed form as the kernel law "eyring") takes the
-stress at every point in closed form,
+The law's first build-up (hsbearing.models.traction.thermal.local_stress, the same closed form as the kernel law
+"eyring"; since replaced in "physical" by a cell-by-cell march of the equation below, thermal.maxwell_eyring_march,
+which this reference checks) takes the stress at every point in closed form,
 
     tau = tau_f (1 - exp(-tel / tau_f)),   tel = G_eff |S| (x - x_in) / h,
 

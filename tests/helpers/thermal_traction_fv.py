@@ -12,9 +12,16 @@ Hertz ellipse (x along the rolling direction):
   its two walls joined to the two solids' surface cells through the series conductance of the half cells;
 * the heat w(z) = tau gdot(z): the shear stress tau is uniform across the film, the local Eyring flow rate
   gdot(z) = (tau0(T)/eta(p, T)) sinh(tau/tau0(T)) varies with the film temperature T(z), and the viscous flow
-  stress tau_v solves mean(gdot) = dU / h (bisection); the limiting shear and the Maxwell build-up act on tau_v
-  as in the law (the same rheology: thermal.roelands_viscosity, thermal.eyring_stress_at, the smooth minimum and
-  the Maxwell closed form); the heat tau dU per area is distributed across the film as gdot(z);
+  stress tau_v solves mean(gdot) = dU / h (bisection); the limiting shear acts on it as in the law (the same
+  rheology: thermal.roelands_viscosity, thermal.eyring_stress_at, the smooth minimum with Lambda p); the heat
+  tau dU per area is distributed across the film as gdot(z);
+* the viscoelastic build-up by its own integration of Johnson & Tevaarwerk's Maxwell-Eyring equation
+  gdot = (U / G) dtau/dx + gdot_v(tau) along the strip (:func:`march_film`): gdot_v(tau) is the film's *mean*
+  viscous rate over its n_film cells at their own temperatures (tau_v(tau) = (tau^-4 - tau_L^-4)^(-1/4), the
+  inverse of the smooth minimum), not Nahme's factor; backward Euler with ``n_sub`` sub-steps on each of the n_x
+  uniform cells (the law: one step on each of 16 cells uniform in theta), the implicit step solved by Newton
+  safeguarded by its bracket.  (Before, this reference took the law's closed form tau_f (1 - exp(-tel / tau_f)) and
+  could not see that it was 11-25 % low at the elastic-plastic knee; docs/traction.md.)
 
 one sparse linear system for all temperatures (factorised once), and a relaxed fixed point between the
 temperatures and the stress.  mu = sum tau dx / sum p dx on a uniform grid of n_x cells.
@@ -62,6 +69,49 @@ def _tau_v(Tf, p, gdot, eta_fn, tau0_fn, iters=80):
         lo = np.where(big, lo, mid)
     tv = 0.5 * (lo + hi)
     return tv, rate(tv)
+
+
+def march_film(xc, p, gdot, U, G, tauL, rate_of, x_in, n_sub=2, guess=None):
+    """Maxwell-Eyring stress along the strip's uniform cells [Pa]: backward Euler, ``n_sub`` sub-steps per cell.
+
+    rate_of(i, tv) -> the mean viscous rate of cell i's film at the viscous stress tv and its derivative d/dtv
+    (the film's own temperatures); tauL (nc,) the cap of each cell.  Each implicit step solves
+    tau - tau_prev - ds G gdot / U + ds (G / U) gdot_v(tau) = 0 on (0, min(tau_prev + ds G gdot / U, tau_L)):
+    increasing in tau, so Newton safeguarded by bisection.  The sub-steps of cell i run from the previous cell's
+    centre (x_in for the first) to xc[i] with that cell's film."""
+    out = np.zeros(len(xc))
+    B = G / abs(U)
+    tau, xp = 0.0, float(x_in)
+    for i in range(len(xc)):
+        tL = float(tauL[i])
+        if p[i] <= 0.0 or tL <= 0.0:
+            tau, xp = 0.0, float(xc[i])
+            continue
+        ds = (float(xc[i]) - xp) / n_sub
+        xp = float(xc[i])
+        for _ in range(n_sub):
+            base = tau + ds * B * gdot
+            lo, hi = 0.0, min(base, tL * (1.0 - 1e-12))
+            t = float(guess[i]) if guess is not None and 0.0 < guess[i] < hi else 0.5 * hi
+            for _ in range(200):
+                q = 1.0 - (t / tL) ** 4
+                tv = t * q ** -0.25  # (t^-4 - tL^-4)^(-1/4) without overflow at small t
+                g, dg = rate_of(i, tv)
+                f = t - base + ds * B * g
+                if f > 0.0:
+                    hi = t
+                else:
+                    lo = t
+                tn = t - f / (1.0 + ds * B * dg * q ** -1.25)
+                if not lo < tn < hi:
+                    tn = 0.5 * (lo + hi)
+                if abs(tn - t) <= 1e-12 * t or hi - lo <= 1e-13 * hi:
+                    t = tn
+                    break
+                t = tn
+            tau = t
+        out[i] = tau
+    return out
 
 
 def _solid_block(xe, ze, u, k, kappa):
@@ -120,7 +170,7 @@ def _solid_block(xe, ze, u, k, kappa):
     return rows, cols, vals, nx * nz
 
 
-def strip_reference(S, U, p0u, b_u, h, T_in, oil, prm, *, Ge, tau0_in, n_x=120, n_film=12, tol=1e-4,
+def strip_reference(S, U, p0u, b_u, h, T_in, oil, prm, *, Ge, tau0_in, n_x=120, n_film=12, n_sub=2, tol=1e-4,
                     max_iter=4000):
     """Reference mu of one strip and its fields (same arguments as thermal.strip_mu).  Returns (mu, fields)."""
     if S == 0.0:
@@ -181,7 +231,6 @@ def strip_reference(S, U, p0u, b_u, h, T_in, oil, prm, *, Ge, tau0_in, n_x=120, 
     lu = spla.splu(A)
     xc = -b_u + dxc * (np.arange(n_x) + 0.5)
     p = p0u * np.sqrt(np.maximum(1.0 - (xc / b_u) ** 2, 0.0))
-    tel = Ge * s * (xc + b_u) / h
     dU = s * Ua
     gdot = dU / h
     eta_in, alpha, beta_in = oil["eta_in"], oil["alpha"], oil["beta_in"]
@@ -199,19 +248,34 @@ def strip_reference(S, U, p0u, b_u, h, T_in, oil, prm, *, Ge, tau0_in, n_x=120, 
         return th.eyring_stress_at(tau0_in, TT, T_in, prm.eyring_temperature)
 
     Tf = np.full((n_x, nf), float(T_in))
+    tau_prev = None
     omega = 0.5
     last = np.inf
     it = 0
     for it in range(1, max_iter + 1):
-        tv, rate = _tau_v(Tf, p, gdot, eta_fn, tau0_fn)
         Tm = Tf.mean(axis=1)
         tauL = prm.limiting_shear(Tm) * p
-        lo, hi = np.minimum(tv, tauL), np.maximum(tv, tauL)
-        with np.errstate(invalid="ignore", divide="ignore"):
-            tf = np.where(hi > 0.0, lo / np.sqrt(np.sqrt(1.0 + (lo / np.where(hi > 0, hi, 1.0)) ** 4)), 0.0)
-            tau = np.where(tf > 0.0, -tf * np.expm1(-tel / np.where(tf > 0, tf, 1.0)), 0.0)
+        eta_z = eta_fn(p[:, None], Tf)
+        t0_z = tau0_fn(Tf)
+        c_z = (t0_z / eta_z).tolist()
+        it0_z = (1.0 / t0_z).tolist()
+
+        def rate_of(i, tv, c_z=c_z, it0_z=it0_z):
+            g = dg = 0.0
+            for cc, ii in zip(c_z[i], it0_z[i]):
+                r = min(tv * ii, 700.0)
+                g += cc * math.sinh(r)
+                dg += cc * ii * math.cosh(r)
+            return g / nf, dg / nf
+
+        tau = march_film(xc, p, gdot, Ua, Ge, tauL, rate_of, -b_u, n_sub=n_sub, guess=tau_prev)
+        tau_prev = tau
         if not prm.thermal:
             break
+        tv_z = np.maximum(tau, 1e-300)[:, None]
+        lsv = np.minimum(tv_z, tauL[:, None] * (1.0 - 1e-12))
+        tvv = lsv * (1.0 - (lsv / tauL[:, None]) ** 4) ** -0.25  # viscous stress of each cell at its stress
+        rate = (t0_z / eta_z) * np.sinh(np.minimum(tvv / t0_z, 700.0))
         share = rate / np.maximum(rate.sum(axis=1, keepdims=True), 1e-300)
         w = (tau * dU)[:, None] * share * dxc  # W per unit y-length in each film cell
         rhs = np.zeros(nunk)

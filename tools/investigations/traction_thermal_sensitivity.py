@@ -9,7 +9,8 @@ E' = 228.6 GPa, p0 = 1.28 GPa), 130 degC, the three oils.  Prints (markdown):
    = 17.5/27.0, applied to Table 1's alpha; ILLUSTRATIVE: no ester alpha(T) could be read); tau0 constant in T;
    tau0 = 2.5 MPa (the lower part of the 2-20 MPa range quoted for EHL oils); Lambda(T) falling 0.2 %/K from 40 degC
    (ILLUSTRATIVE: no measured Lambda(T) of these oils was read); Lambda = 0.035 (lower end of the ester bracket);
-   thermal off.
+   thermal off; the closed-form Maxwell build-up tau_f (1 - exp(-tel / tau_f)) the law had before it marched the
+   Maxwell-Eyring equation.
 2. the shape: slide-roll ratio of the maximum, mu(0.3)/mu_max and mu(1)/mu_max for the seed laws and "physical".
 
 Run: PYTHONPATH=. .venv/bin/python tools/investigations/traction_thermal_sensitivity.py  (about a minute)
@@ -56,6 +57,8 @@ def main():
         ("  Lambda(T) -0.2 %/K from 40 degC (illustrative)", lambda o: physical(o, 0.05, T, P.with_(k_Lambda=-0.002))),
         ("  Lambda = 0.035", lambda o: physical(o, 0.05, T, P.with_(Lambda=0.035))),
         ("  thermal off", lambda o: physical(o, 0.05, T, P.with_(thermal=False))),
+        ("  closed-form Maxwell build-up (the law before the march)", lambda o: physical(o, 0.05, T,
+                                                                                   P.with_(buildup="closed"))),
     ]
     oils = list(traction.OILS)
     print("mu at S = 0.05, 130 degC, 182 N, 16.3 m/s (p0 1.28 GPa)\n")
