@@ -123,12 +123,12 @@ def test_map_points_are_extended_in_the_worker_before_the_archive_is_reduced(tmp
     assert counts[1] >= 1 and reasons[1].startswith("determined: 1 period after") and labels[1] == "1 period"
     assert float(ds["whirl_amplitude"].values.ravel()[1]) == pytest.approx(100e-6, rel=0.03)
     assert ds["extension_growth_rate"].values.ravel()[1] > 0
-    # 2000 N: still growing when the default budget (3 x 0.3 s) is spent; its growth rate is reported
-    assert labels[2] == "undetermined" and reasons[2].startswith("budget: 0.9 s")
-    assert float(ds["simulated_time"].values.ravel()[2]) == pytest.approx(0.9, abs=DT)
+    # 2000 N: still growing when the default budget (6 x 0.3 s) is spent; its growth rate is reported
+    assert labels[2] == "undetermined" and reasons[2].startswith("budget: 1.8 s")
+    assert float(ds["simulated_time"].values.ravel()[2]) == pytest.approx(1.8, abs=DT)
     assert ds["extension_growth_rate"].values.ravel()[2] == pytest.approx(5.0, rel=0.2)
     assert ds["extension_growth_rate"].attrs["units"] == "1/s"
-    assert "0.9 s simulated time" in ds.attrs["sweep_extension"]
+    assert "1.8 s simulated time" in ds.attrs["sweep_extension"]
     # the kept archive: the whole extended orbit, the extensions and why they stopped, the saturated orbit
     a = open_run(tmp_path / "m" / str(ds["archive"].values.ravel()[1]))
     assert a.attrs["keep"] == "answer" and "time_decimated" in a.dims
@@ -136,7 +136,7 @@ def test_map_points_are_extended_in_the_worker_before_the_archive_is_reduced(tmp
     assert len(ext) == counts[1] and ext[0]["label_before"] == "undetermined" and ext[0]["growth_rate"] > 0
     assert float(a["time"].values[-1]) == pytest.approx(ext[-1]["to"], abs=DT)
     assert a.attrs["extension_saturated_orbit"].startswith("saturated orbit over ")
-    assert a.attrs["extension_max_duration"] == pytest.approx(0.9)
+    assert a.attrs["extension_max_duration"] == pytest.approx(1.8)
 
 
 def test_extended_map_resumes_and_equals_two_processes(tmp_path):
@@ -168,7 +168,7 @@ def test_the_budget_is_part_of_the_point_hash(tmp_path):
         plan = sweeps.plan_sweep("zhang2016", {"axial_load": "1000N"}, duration="0.3 s", point_fn=growing_whirl_run,
                                  extend=ext)
         names[ext] = plan.points[0].archive
-        want = {"default": 0.9, "1.5 s": 1.5}.get(ext) if ext else None
+        want = {"default": 1.8, "1.5 s": 1.5}.get(ext) if ext else None
         assert plan.points[0].extend == (pytest.approx(want) if want else None)
     assert len(set(names.values())) == 3
     # a stand-in point function without a continuation is never extended (and keeps its hash)
@@ -226,7 +226,7 @@ def test_study_points_are_extended(tmp_path):
     res = run_study("zhang2016", tmp_path / "s", jobs=1, duration="0.3 s", point_fn=growing_whirl_run,
                     progress=False, tables=["table3"])
     ds = res["tables"]["table3"]
-    assert "extension_stop_reason" in ds and "0.9 s of simulated time" in res["extension"]
+    assert "extension_stop_reason" in ds and "1.8 s of simulated time" in res["extension"]
     assert "- extension: " in res["report"].read_text()
 
 

@@ -58,10 +58,10 @@ MAX_EXTENSIONS = 8
 #: Default budget of ``--max-duration``: this many times the run's own duration.
 DEFAULT_BUDGET_FACTOR = 3.0
 #: Default budget of a map or study point (``hsbearing map`` / ``study``): this many times the point's duration
-#: (docs/sweeps.md, "Extend until determined": the growing whirls of the load x temperature map have e-folding
-#: times of 0.3-1.2 s; the transient rule discards at most 60 % of a run, so a whirl that saturates by ~1.4 s is
-#: read on its saturated orbit in 3.6 s).
-WORKFLOW_BUDGET_FACTOR = 3.0
+#: (docs/sweeps.md, "Extend until determined": the slowest growing whirls of the load x temperature map grow at
+#: 0.72/s; fast-forwarded at 1.2 s to 0.1 x the clearance they need (ln 10 + 0.5)/0.72 = 3.9 s to saturate and
+#: 3.9/0.6 = 6.5 s for the transient rule to leave the saturated orbit: 7.2 s in all is 6 x the 1.2 s duration).
+WORKFLOW_BUDGET_FACTOR = 6.0
 #: Fast-forward target: the whirl amplitude (RMS radius about the orbit centre) after the scaling, as a fraction of
 #: the radial guide clearance.  Why 0.1: in the map cells whose whirls saturated naturally (docs/sweeps.md) the
 #: amplitude grew by a constant factor per 0.2 s (within 2 %) up to 13-17 % of the clearance; the non-linearity of
@@ -251,12 +251,12 @@ def apply_fast_forward(ds, plan: dict):
 def _step_after_fast_forward(plan: dict) -> float:
     """The extension after a fast-forward: the growth from the target to saturation, (ln(1/fraction) + 0.5)/sigma
     (the 0.5/sigma: the approach to the saturated radius, 0.3-0.5/sigma in the map cells that saturated
-    naturally), divided by 1 - the largest transient fraction so that the saturated orbit is what the transient
-    rule leaves."""
+    naturally), divided by the largest transient fraction of the automatic rule (60 %): the growth then lies
+    within the part the transient rule may discard and what it keeps is the saturated orbit."""
     from hsbearing.analysis.poincare import MAX_TRANSIENT_FRACTION
 
     sat = (math.log(1.0 / plan["fraction_of_clearance"]) + 0.5) / plan["sigma"]
-    return sat / (1.0 - MAX_TRANSIENT_FRACTION)
+    return sat / MAX_TRANSIENT_FRACTION
 
 
 def annotate_after_fast_forward(ds, t_jump: float):
