@@ -244,12 +244,10 @@ def test_map_cli_extension_bad_input(tmp_path, extra, what):
 # (tests/helpers/extendable_runs.py: the Stuart-Landau whirl, limit cycle of radius SL_A at SL_W - SL_BETA, exact;
 # its continuation starts from the stored final_state, so the scaled state is what is continued).
 
-from extendable_runs import (  # noqa: E402
-    SL_A, SL_BETA, SL_R0, SL_SIGMA, SL_W, continue_hopf_whirl, hopf_whirl_run, sl_integrate)
+from extendable_runs import SL_A, SL_BETA, SL_R0, SL_SIGMA, SL_W, continue_hopf_whirl, hopf_whirl_run, sl_integrate  # noqa: E402
 
 from hsbearing.case import load_case  # noqa: E402
-from hsbearing.systems.angular_contact.extend import (  # noqa: E402
-    FAST_FORWARD_FRACTION, apply_fast_forward, plan_fast_forward)
+from hsbearing.systems.angular_contact.extend import FAST_FORWARD_FRACTION, apply_fast_forward, plan_fast_forward  # noqa: E402
 
 
 def _hopf(duration=0.3):
