@@ -39,7 +39,7 @@ def _add_extension_options(sp) -> None:
     """--max-duration and --no-extend of the map and the study (the extension of undetermined points)."""
     sp.add_argument("--max-duration", dest="max_duration", metavar="T",
                     help="budget of the extension of undetermined points: total simulated time of a point, e.g. 3s "
-                         "(default: 3 x the duration); a point whose cage-motion label is undetermined with an estimate "
+                         "(default: 6 x the duration); a point whose cage-motion label is undetermined with an estimate "
                          "of the time it needs is continued in its worker until determined, the stop rule's "
                          "convergence or this budget (docs/sweeps.md)")
     sp.add_argument("--no-extend", dest="no_extend", action="store_true",
