@@ -247,7 +247,12 @@ def test_map_cli_extension_bad_input(tmp_path, extra, what):
 from extendable_runs import SL_A, SL_BETA, SL_R0, SL_SIGMA, SL_W, continue_hopf_whirl, hopf_whirl_run, sl_integrate  # noqa: E402
 
 from hsbearing.case import load_case  # noqa: E402
-from hsbearing.systems.angular_contact.extend import FAST_FORWARD_FRACTION, apply_fast_forward, plan_fast_forward  # noqa: E402
+from hsbearing.systems.angular_contact.extend import (  # noqa: E402
+    FAST_FORWARD_FRACTION,
+    FAST_FORWARD_TWIN_TIME,
+    apply_fast_forward,
+    plan_fast_forward,
+)
 
 
 def _hopf(duration=0.3):
@@ -266,10 +271,14 @@ def test_fast_forward_reaches_the_limit_cycle_of_the_full_run():
     ff = extend_until_determined(ds, 6.0, continue_fn=continue_hopf_whirl, fast_forward=True)
     full = extend_until_determined(ds, 6.0, continue_fn=continue_hopf_whirl)
     plan = json.loads(ff.attrs["fast_forward"])
-    # the rule: scaled to FAST_FORWARD_FRACTION of the 200 um clearance, k = target / amplitude at 0.3 s
-    r03 = SL_R0 * math.exp(SL_SIGMA * 0.3)
-    assert plan["at"] == pytest.approx(0.3) and plan["amplitude_after"] == pytest.approx(FAST_FORWARD_FRACTION * 200e-6)
-    assert plan["amplitude_before"] == pytest.approx(r03, rel=0.06)  # RMS over the last 0.1/sigma: 5 % below the end
+    # the rule: the run and its kicked twin continued FAST_FORWARD_TWIN_TIME, then moved along their difference to
+    # FAST_FORWARD_FRACTION of the 200 um clearance; k = target / amplitude at that time
+    t1 = 0.3 + FAST_FORWARD_TWIN_TIME
+    r1 = SL_R0 * math.exp(SL_SIGMA * t1)
+    assert plan["at"] == pytest.approx(t1) and plan["amplitude_after"] == pytest.approx(FAST_FORWARD_FRACTION * 200e-6)
+    assert plan["amplitude_before"] == pytest.approx(r1, rel=0.06)  # RMS over the last tau/2: 5 % below the end
+    # one mode: exactly aligned; the end radius is e^(sigma tau/4) = 2.5 % above the RMS over the last tau/2
+    assert plan["radius_after"] == pytest.approx(plan["amplitude_after"] * math.exp(SL_SIGMA * FAST_FORWARD_TWIN_TIME / 4), rel=0.005)
     assert plan["sigma"] == pytest.approx(SL_SIGMA, rel=0.01)
     assert plan["equivalent_time"] == pytest.approx(math.log(plan["factor"]) / plan["sigma"])
     # same answer as the full run and as the exact limit cycle: label, radius (1 %), frequency (1 %)
@@ -299,7 +308,7 @@ def test_fast_forward_reaches_the_limit_cycle_of_the_full_run():
     assert "fast_forward" not in full.attrs  # only on request
 
 
-def test_fast_forward_scales_only_the_cage_centre_about_its_orbit_centre():
+def test_the_twin_kick_scales_only_the_cage_centre_about_its_orbit_centre():
     ds = _hopf(0.3)
     plan, why = plan_fast_forward(ds)
     assert why == "planned"
@@ -353,5 +362,5 @@ def test_map_points_are_fast_forwarded(tmp_path):
     assert str(ds["classification"].values.ravel()[0]) == "1 period"
     a = open_run(tmp_path / "m" / str(ds["archive"].values.ravel()[0]))
     plan = json.loads(a.attrs["fast_forward"])
-    assert plan["factor"] > 10 and plan["at"] == pytest.approx(0.3)
+    assert plan["factor"] > 10 and plan["at"] == pytest.approx(0.3 + FAST_FORWARD_TWIN_TIME)
     assert float(a["whirl_amplitude"]) == pytest.approx(SL_A, rel=0.01)

@@ -48,7 +48,7 @@ from hsbearing.analysis.stoprule import NEVER_STOP_KINDS
 from hsbearing.results import register
 
 __all__ = ["extend_until_determined", "next_step", "plan_fast_forward", "apply_fast_forward",
-           "annotate_after_fast_forward", "FAST_FORWARD_FRACTION", "FAST_FORWARD_MIN_FACTOR", "extension_wanted", "extension_summary", "MIN_STEP_FRACTION",
+           "annotate_after_fast_forward", "twin_fast_forward", "FAST_FORWARD_FRACTION", "FAST_FORWARD_TWIN_TIME", "FAST_FORWARD_MIN_FACTOR", "extension_wanted", "extension_summary", "MIN_STEP_FRACTION",
            "MAX_EXTENSIONS", "DEFAULT_BUDGET_FACTOR", "WORKFLOW_BUDGET_FACTOR", "ESTIMATE_KINDS"]
 
 #: A step is at least this fraction of the simulated time so far.
@@ -248,14 +248,68 @@ def apply_fast_forward(ds, plan: dict):
     return out
 
 
+#: Time [s] the run and its kicked twin are continued before their difference is taken (the fast modes the kick
+#: excites decay in 2-5 ms in the map cells: measured, docs/sweeps.md).
+FAST_FORWARD_TWIN_TIME = 0.02
+
+
+def twin_fast_forward(ds, plan: dict, continue_fn, tau: float = FAST_FORWARD_TWIN_TIME):
+    """The fast-forward along the growing mode of the whole state, found from a kicked twin.
+
+    The run ``a`` and a twin ``b`` whose cage-centre deviation was scaled (:func:`apply_fast_forward`) are both
+    continued ``tau``; the kick's components on the decaying modes die out, so the difference of the final states
+    b - a lies along the growing (unstable) mode of the whole state -- balls, cage, ring -- not only the cage centre
+    (a cage-centre kick alone projects by ~1 % on it and decays back within milliseconds).  The new final state is
+    a + gamma (b - a), gamma = (target - A_a) / |b - a|_cage, with |b - a|_cage the RMS of the difference of the two
+    cage-centre orbits over the last tau/2 and A_a the amplitude of ``a`` there.  Returns ``a`` (the run continued
+    by ``tau``) with that final state, and the record (the plan with the twin's numbers).
+    """
+    import numpy as np
+
+    a = continue_fn(ds, tau)
+    b = continue_fn(apply_fast_forward(ds, plan), tau)
+    ta, tb = a["time"].values, b["time"].values
+    if ta.size != tb.size or not np.allclose(ta, tb):
+        raise ValueError("the twin continuation is not on the run's time grid")
+    m = ta >= ta[-1] - 0.5 * tau
+    cy, cz = plan["orbit_centre"]
+    ay, az = a["cage_center_y"].values[m] - cy, a["cage_center_z"].values[m] - cz
+    dy, dz = b["cage_center_y"].values[m] - a["cage_center_y"].values[m], b["cage_center_z"].values[m] - a["cage_center_z"].values[m]
+    amp_a = float(np.sqrt(np.mean(ay ** 2 + az ** 2)))
+    d_amp = float(np.sqrt(np.mean(dy ** 2 + dz ** 2)))
+    target = plan["amplitude_after"]
+    if not d_amp > 0 or amp_a >= target:
+        raise ValueError("the twin did not separate from the run")
+    gamma = (target - amp_a) / d_amp
+    ya, yb = np.asarray(a["final_state"].values, float), np.asarray(b["final_state"].values, float)
+    y = ya + gamma * (yb - ya)
+    names = [str(n) for n in a["state"].values]
+    r_new = math.hypot(y[names.index("y_c")] - cy, y[names.index("z_c")] - cz)
+    out = a.copy()
+    out["final_state"] = (a["final_state"].dims, y)
+    out["final_state"].attrs = dict(a["final_state"].attrs)
+    rec = dict(plan)
+    k = target / amp_a
+    rec.update(at=float(ta[-1]), amplitude_before=amp_a, factor=k, equivalent_time=math.log(k) / plan["sigma"],
+               twin_time=tau, twin_kick=plan["factor"], twin_difference_amplitude=d_amp, gamma=gamma,
+               radius_after=r_new, states="all (along b - a)",
+               twin_rhs_evals=b.attrs.get("solver_rhs_evals"),
+               why=(f"growing whirl in the linear regime: amplitude {amp_a * 1e6:.3g} um = {amp_a / plan['guide_clearance']:.2g} x "
+                    f"the guide clearance, growth rate {plan['sigma']:.3g} 1/s; the whole state moved along the growing "
+                    f"mode (a twin with the cage-centre deviation scaled by {plan['factor']:.3g}, both continued "
+                    f"{tau:g} s; {gamma:.3g} x their difference added) to {plan['fraction_of_clearance']:g} x the "
+                    f"clearance, equivalent to {math.log(k) / plan['sigma']:.3g} s of growth"))
+    return out, rec
+
+
 def _step_after_fast_forward(plan: dict) -> float:
-    """The extension after a fast-forward: the growth from the target to saturation, (ln(1/fraction) + 0.5)/sigma
-    (the 0.5/sigma: the approach to the saturated radius, 0.3-0.5/sigma in the map cells that saturated
-    naturally), divided by the largest transient fraction of the automatic rule (60 %): the growth then lies
-    within the part the transient rule may discard and what it keeps is the saturated orbit."""
+    """The extension after a fast-forward: the growth from the target to saturation, (ln(1/fraction) + 2)/sigma
+    (the 2/sigma: the approach to the saturated radius, within 1 %: 1.2/sigma for the Stuart-Landau whirl, ~1.8/sigma
+    in the map cell 27 degC/2000 N), divided by the largest transient fraction of the automatic rule (60 %): the
+    growth then lies within the part the transient rule may discard and what it keeps is the saturated orbit."""
     from hsbearing.analysis.poincare import MAX_TRANSIENT_FRACTION
 
-    sat = (math.log(1.0 / plan["fraction_of_clearance"]) + 0.5) / plan["sigma"]
+    sat = (math.log(1.0 / plan["fraction_of_clearance"]) + 2.0) / plan["sigma"]
     return sat / MAX_TRANSIENT_FRACTION
 
 
@@ -332,15 +386,23 @@ def extend_until_determined(ds, max_duration: float, *, continue_fn=None, progre
         rec = {"from": t_end, "to": t_end + step, "why": why, "label_before": label,
                "reason_before": ds.attrs.get("classification_reason", ""),
                "growth_rate": float(g) if g is not None and math.isfinite(float(g)) else None}
-        if fast_forward and jump is None:
+        if fast_forward and jump is None and left > 4 * FAST_FORWARD_TWIN_TIME:
             plan, ff_why = plan_fast_forward(ds)
             if plan is not None:
-                unscaled, ds, jump = ds, apply_fast_forward(ds, plan), plan
-                rec["fast_forward"] = plan["why"]
+                unscaled = ds
+                try:
+                    ds, jump = twin_fast_forward(ds, plan, continue_fn)
+                except (SolverError, ValueError) as exc:  # no usable twin: go on without a fast-forward
+                    ff_note, plan = f"twin failed: {type(exc).__name__}: {exc}", None
+            if plan is not None:
+                t_end = float(ds["time"].values[-1])
+                left = max_duration - (t_end - t0)
+                rec["from"] = t_end
+                rec["fast_forward"] = jump["why"]
                 step = max(step, _step_after_fast_forward(plan))
-                rec["why"] = ("growing whirl after the fast-forward: the growth to saturation (ln(1/fraction) + 0.5)/sigma, long "
+                rec["why"] = ("growing whirl after the fast-forward: the growth to saturation (ln(1/fraction) + 2)/sigma, long "
                               "enough that the transient rule leaves the saturated orbit")
-            elif ff_why != "determined":
+            elif ff_why != "determined" and not ff_note:
                 ff_note = ff_why
         step = min(step, left)
         rec["to"] = t_end + step
