@@ -48,7 +48,7 @@ from hsbearing.analysis.stoprule import NEVER_STOP_KINDS
 from hsbearing.results import register
 
 __all__ = ["extend_until_determined", "next_step", "plan_fast_forward", "apply_fast_forward",
-           "annotate_after_fast_forward", "twin_fast_forward", "FAST_FORWARD_FRACTION", "FAST_FORWARD_TWIN_TIME", "FAST_FORWARD_MIN_FACTOR", "extension_wanted", "extension_summary", "MIN_STEP_FRACTION",
+           "annotate_after_fast_forward", "twin_fast_forward", "FAST_FORWARD_FRACTION", "FAST_FORWARD_TWIN_TIME", "FAST_FORWARD_TWIN_MAX", "FAST_FORWARD_MIN_FACTOR", "extension_wanted", "extension_summary", "MIN_STEP_FRACTION",
            "MAX_EXTENSIONS", "DEFAULT_BUDGET_FACTOR", "WORKFLOW_BUDGET_FACTOR", "ESTIMATE_KINDS"]
 
 #: A step is at least this fraction of the simulated time so far.
@@ -251,6 +251,11 @@ def apply_fast_forward(ds, plan: dict):
 #: Time [s] the run and its kicked twin are continued before their difference is taken (the fast modes the kick
 #: excites decay in 2-5 ms in the map cells: measured, docs/sweeps.md).
 FAST_FORWARD_TWIN_TIME = 0.02
+#: The run and its twin are continued in steps of FAST_FORWARD_TWIN_TIME until the RMS of their cage-centre
+#: difference over the last half step exceeds that over the half step before (it grows: what is left is the growing mode),
+#: at most this long [s] (no fast-forward otherwise).  In hot oil the kick's decaying motions last longer than 20 ms
+#: (180 degC/4000 N: a single 20 ms step left them dominant and the jump gained nothing).
+FAST_FORWARD_TWIN_MAX = 0.2
 
 
 def _rhs_evals(ds) -> int:
@@ -264,7 +269,7 @@ def twin_fast_forward(ds, plan: dict, continue_fn, tau: float = FAST_FORWARD_TWI
     """The fast-forward along the growing mode of the whole state, found from a kicked twin.
 
     The run ``a`` and a twin ``b`` whose cage-centre deviation was scaled (:func:`apply_fast_forward`) are both
-    continued ``tau``; the kick's components on the decaying modes die out, so the difference of the final states
+    continued in steps ``tau`` until their difference grows (at most :data:`FAST_FORWARD_TWIN_MAX`); the kick's components on the decaying modes die out, so the difference of the final states
     b - a lies along the growing (unstable) mode of the whole state -- balls, cage, ring -- not only the cage centre
     (a cage-centre kick alone projects by ~1 % on it and decays back within milliseconds).  The new final state is
     a + gamma (b - a), gamma = (target - A_a) / |b - a|_cage, with |b - a|_cage the RMS of the difference of the two
@@ -273,17 +278,29 @@ def twin_fast_forward(ds, plan: dict, continue_fn, tau: float = FAST_FORWARD_TWI
     """
     import numpy as np
 
-    a = continue_fn(ds, tau)
-    b = continue_fn(apply_fast_forward(ds, plan), tau)
-    ta, tb = a["time"].values, b["time"].values
-    if ta.size != tb.size or not np.allclose(ta, tb):
-        raise ValueError("the twin continuation is not on the run's time grid")
-    m = ta >= ta[-1] - 0.5 * tau
+    a, b = ds, apply_fast_forward(ds, plan)
     cy, cz = plan["orbit_centre"]
-    ay, az = a["cage_center_y"].values[m] - cy, a["cage_center_z"].values[m] - cz
-    dy, dz = b["cage_center_y"].values[m] - a["cage_center_y"].values[m], b["cage_center_z"].values[m] - a["cage_center_z"].values[m]
-    amp_a = float(np.sqrt(np.mean(ay ** 2 + az ** 2)))
-    d_amp = float(np.sqrt(np.mean(dy ** 2 + dz ** 2)))
+
+    def rms(x, y, m):
+        return float(np.sqrt(np.mean(x[m] ** 2 + y[m] ** 2)))
+
+    twin_time = 0.0
+    while True:  # until the difference grows again: the kick's decaying motions have died out
+        a, b = continue_fn(a, tau), continue_fn(b, tau)
+        twin_time += tau
+        ta, tb = a["time"].values, b["time"].values
+        if ta.size != tb.size or not np.allclose(ta, tb):
+            raise ValueError("the twin continuation is not on the run's time grid")
+        m = ta >= ta[-1] - 0.5 * tau
+        m_prev = (ta >= ta[-1] - tau) & ~m
+        dy = b["cage_center_y"].values - a["cage_center_y"].values
+        dz = b["cage_center_z"].values - a["cage_center_z"].values
+        d_amp, d_prev = rms(dy, dz, m), rms(dy, dz, m_prev)
+        if d_amp > d_prev or twin_time >= FAST_FORWARD_TWIN_MAX - 1e-12:
+            break
+    if d_amp <= d_prev:
+        raise ValueError(f"the difference of the run and its twin still decays after {twin_time:g} s")
+    amp_a = rms(a["cage_center_y"].values - cy, a["cage_center_z"].values - cz, m)
     target = plan["amplitude_after"]
     if not d_amp > 0 or amp_a >= target:
         raise ValueError("the twin did not separate from the run")
@@ -298,13 +315,13 @@ def twin_fast_forward(ds, plan: dict, continue_fn, tau: float = FAST_FORWARD_TWI
     rec = dict(plan)
     k = target / amp_a
     rec.update(at=float(ta[-1]), amplitude_before=amp_a, factor=k, equivalent_time=math.log(k) / plan["sigma"],
-               twin_time=tau, twin_kick=plan["factor"], twin_difference_amplitude=d_amp, gamma=gamma,
+               twin_time=twin_time, twin_kick=plan["factor"], twin_difference_amplitude=d_amp, gamma=gamma,
                radius_after=r_new, states="all (along b - a)",
                twin_rhs_evals=_rhs_evals(b) - _rhs_evals(ds),
                why=(f"growing whirl in the linear regime: amplitude {amp_a * 1e6:.3g} um = {amp_a / plan['guide_clearance']:.2g} x "
                     f"the guide clearance, growth rate {plan['sigma']:.3g} 1/s; the whole state moved along the growing "
                     f"mode (a twin with the cage-centre deviation scaled by {plan['factor']:.3g}, both continued "
-                    f"{tau:g} s; {gamma:.3g} x their difference added) to {plan['fraction_of_clearance']:g} x the "
+                    f"{twin_time:g} s; {gamma:.3g} x their difference added) to {plan['fraction_of_clearance']:g} x the "
                     f"clearance, equivalent to {math.log(k) / plan['sigma']:.3g} s of growth"))
     return out, rec
 
