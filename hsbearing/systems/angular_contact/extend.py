@@ -58,9 +58,9 @@ MAX_EXTENSIONS = 8
 #: Default budget of ``--max-duration``: this many times the run's own duration.
 DEFAULT_BUDGET_FACTOR = 3.0
 #: Default budget of a map or study point (``hsbearing map`` / ``study``): this many times the point's duration
-#: (docs/sweeps.md, "Extend until determined": the slowest growing whirls of the load x temperature map grow at
-#: 0.72/s; fast-forwarded at 1.2 s to 0.1 x the clearance they need (ln 10 + 0.5)/0.72 = 3.9 s to saturate and
-#: 3.9/0.6 = 6.5 s for the transient rule to leave the saturated orbit: 7.2 s in all is 6 x the 1.2 s duration).
+#: (docs/sweeps.md, "Extend until determined": fast-forwarded at ~1.2 s to 0.1 x the clearance, the growing whirls of
+#: the load x temperature map at 1-1.6/s are read on their saturated orbit by 4.0-6.8 s; the slowest, 0.72/s, would
+#: need 9.3 s: a compromise with the 2 x wall-time target of the map).
 WORKFLOW_BUDGET_FACTOR = 6.0
 #: Fast-forward target: the whirl amplitude (RMS radius about the orbit centre) after the scaling, as a fraction of
 #: the radial guide clearance.  Why 0.1: in the map cells whose whirls saturated naturally (docs/sweeps.md) the
