@@ -62,14 +62,16 @@ def _add_opt_in_extension_options(sp, what: str) -> None:
                          "is determined or --max-duration is reached; the extensions and why they stopped are in the "
                          "archive (attrs extensions, extension_stop_reason)")
     sp.add_argument("--max-duration", dest="max_duration", metavar="T",
-                    help="budget of --extend: total simulated time, e.g. 3s (default: 3 x the run's duration)")
+                    help="budget of --extend: total simulated time, e.g. 3s (default: "
+                         + ("3 x the run's duration)" if what == "run" else "6 x the point's duration, as in a map; a "
+                            "growing whirl is fast-forwarded as there: docs/sweeps.md)"))
 
 
 def _add_extension_options(sp) -> None:
     """--max-duration and --no-extend of the map and the study (the extension of undetermined points)."""
     sp.add_argument("--max-duration", dest="max_duration", metavar="T",
                     help="budget of the extension of undetermined points: total simulated time of a point, e.g. 3s "
-                         "(default: 3 x the duration); a point whose cage-motion label is undetermined with an estimate "
+                         "(default: 6 x the duration); a point whose cage-motion label is undetermined with an estimate "
                          "of the time it needs is continued in its worker until determined, the stop rule's "
                          "convergence or this budget (docs/sweeps.md)")
     sp.add_argument("--no-extend", dest="no_extend", action="store_true",

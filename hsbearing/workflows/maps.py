@@ -82,7 +82,7 @@ def run_map(case, x, y, *, out_dir, jobs: int | None = None, scheduler: str | No
     stop : stop rule of every point, "converged" (default, as ``hsbearing map``; docs/sweeps.md "Stop rule") or
         "duration"; None = the case's ``[simulation] stop``.  Set in the case only when it changes it.
     keep : what each point archive keeps, "answer" (default) or "full" (:func:`hsbearing.workflows.sweeps.execute`).
-    extend : "default" (as ``hsbearing map``: 3 x the duration of each point,
+    extend : "default" (as ``hsbearing map``: 6 x the duration of each point,
         :data:`hsbearing.systems.angular_contact.extend.WORKFLOW_BUDGET_FACTOR`), a budget [s] of total simulated
         time, or None: a point whose label is undetermined with an estimate of the time it needs is continued in
         its worker until determined, the stop rule's convergence or the budget (docs/sweeps.md "Extend until

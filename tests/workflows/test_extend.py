@@ -123,12 +123,12 @@ def test_map_points_are_extended_in_the_worker_before_the_archive_is_reduced(tmp
     assert counts[1] >= 1 and reasons[1].startswith("determined: 1 period after") and labels[1] == "1 period"
     assert float(ds["whirl_amplitude"].values.ravel()[1]) == pytest.approx(100e-6, rel=0.03)
     assert ds["extension_growth_rate"].values.ravel()[1] > 0
-    # 2000 N: still growing when the default budget (3 x 0.3 s) is spent; its growth rate is reported
-    assert labels[2] == "undetermined" and reasons[2].startswith("budget: 0.9 s")
-    assert float(ds["simulated_time"].values.ravel()[2]) == pytest.approx(0.9, abs=DT)
+    # 2000 N: still growing when the default budget (6 x 0.3 s) is spent; its growth rate is reported
+    assert labels[2] == "undetermined" and reasons[2].startswith("budget: 1.8 s")
+    assert float(ds["simulated_time"].values.ravel()[2]) == pytest.approx(1.8, abs=DT)
     assert ds["extension_growth_rate"].values.ravel()[2] == pytest.approx(5.0, rel=0.2)
     assert ds["extension_growth_rate"].attrs["units"] == "1/s"
-    assert "0.9 s simulated time" in ds.attrs["sweep_extension"]
+    assert "1.8 s simulated time" in ds.attrs["sweep_extension"]
     # the kept archive: the whole extended orbit, the extensions and why they stopped, the saturated orbit
     a = open_run(tmp_path / "m" / str(ds["archive"].values.ravel()[1]))
     assert a.attrs["keep"] == "answer" and "time_decimated" in a.dims
@@ -136,7 +136,7 @@ def test_map_points_are_extended_in_the_worker_before_the_archive_is_reduced(tmp
     assert len(ext) == counts[1] and ext[0]["label_before"] == "undetermined" and ext[0]["growth_rate"] > 0
     assert float(a["time"].values[-1]) == pytest.approx(ext[-1]["to"], abs=DT)
     assert a.attrs["extension_saturated_orbit"].startswith("saturated orbit over ")
-    assert a.attrs["extension_max_duration"] == pytest.approx(0.9)
+    assert a.attrs["extension_max_duration"] == pytest.approx(1.8)
 
 
 def test_extended_map_resumes_and_equals_two_processes(tmp_path):
@@ -168,7 +168,7 @@ def test_the_budget_is_part_of_the_point_hash(tmp_path):
         plan = sweeps.plan_sweep("zhang2016", {"axial_load": "1000N"}, duration="0.3 s", point_fn=growing_whirl_run,
                                  extend=ext)
         names[ext] = plan.points[0].archive
-        want = {"default": 0.9, "1.5 s": 1.5}.get(ext) if ext else None
+        want = {"default": 1.8, "1.5 s": 1.5}.get(ext) if ext else None
         assert plan.points[0].extend == (pytest.approx(want) if want else None)
     assert len(set(names.values())) == 3
     # a stand-in point function without a continuation is never extended (and keeps its hash)
@@ -226,7 +226,7 @@ def test_study_points_are_extended(tmp_path):
     res = run_study("zhang2016", tmp_path / "s", jobs=1, duration="0.3 s", point_fn=growing_whirl_run,
                     progress=False, tables=["table3"])
     ds = res["tables"]["table3"]
-    assert "extension_stop_reason" in ds and "0.9 s of simulated time" in res["extension"]
+    assert "extension_stop_reason" in ds and "1.8 s of simulated time" in res["extension"]
     assert "- extension: " in res["report"].read_text()
 
 
@@ -278,3 +278,127 @@ def test_sweep_cli_passes_the_extension_to_the_sweep(tmp_path, monkeypatch, extr
     with pytest.raises(SystemExit):
         sweep_cli.cli_main(args)
     assert seen["extend"] == expected
+# Linear-regime fast-forward of a growing whirl (extend.plan_fast_forward), proven on the Hopf normal form
+# (tests/helpers/extendable_runs.py: the Stuart-Landau whirl, limit cycle of radius SL_A at SL_W - SL_BETA, exact;
+# its continuation starts from the stored final_state, so the scaled state is what is continued).
+
+from extendable_runs import SL_A, SL_BETA, SL_R0, SL_SIGMA, SL_W, continue_hopf_whirl, hopf_whirl_run, sl_integrate  # noqa: E402
+
+from hsbearing.case import load_case  # noqa: E402
+from hsbearing.systems.angular_contact.extend import (  # noqa: E402
+    FAST_FORWARD_FRACTION,
+    FAST_FORWARD_TWIN_TIME,
+    apply_fast_forward,
+    plan_fast_forward,
+)
+
+
+def _hopf(duration=0.3):
+    return hopf_whirl_run(load_case("zhang2016"), duration)
+
+
+def _first_crossing(t, r, level):
+    i = int(np.argmax(r >= level))
+    assert r[i] >= level
+    return t[i - 1] + (level - r[i - 1]) / (r[i] - r[i - 1]) * (t[i] - t[i - 1])
+
+
+def test_fast_forward_reaches_the_limit_cycle_of_the_full_run():
+    ds = _hopf(0.3)
+    assert ds.attrs["classification"] == "undetermined"
+    ff = extend_until_determined(ds, 6.0, continue_fn=continue_hopf_whirl, fast_forward=True)
+    full = extend_until_determined(ds, 6.0, continue_fn=continue_hopf_whirl)
+    plan = json.loads(ff.attrs["fast_forward"])
+    # the rule: the run and its kicked twin continued FAST_FORWARD_TWIN_TIME, then moved along their difference to
+    # FAST_FORWARD_FRACTION of the 200 um clearance; k = target / amplitude at that time
+    t1 = 0.3 + FAST_FORWARD_TWIN_TIME
+    r1 = SL_R0 * math.exp(SL_SIGMA * t1)
+    assert plan["at"] == pytest.approx(t1) and plan["amplitude_after"] == pytest.approx(FAST_FORWARD_FRACTION * 200e-6)
+    assert plan["amplitude_before"] == pytest.approx(r1, rel=0.06)  # RMS over the last tau/2: 5 % below the end
+    # one mode: exactly aligned; the end radius is e^(sigma tau/4) = 2.5 % above the RMS over the last tau/2
+    assert plan["radius_after"] == pytest.approx(plan["amplitude_after"] * math.exp(SL_SIGMA * FAST_FORWARD_TWIN_TIME / 4), rel=0.005)
+    assert plan["sigma"] == pytest.approx(SL_SIGMA, rel=0.01)
+    assert plan["equivalent_time"] == pytest.approx(math.log(plan["factor"]) / plan["sigma"])
+    # same answer as the full run and as the exact limit cycle: label, radius (1 %), frequency (1 %)
+    f_exact = (SL_W - SL_BETA) / W
+    for run in (ff, full):
+        assert run.attrs["classification"] == "1 period"
+        assert float(run["whirl_amplitude"]) == pytest.approx(SL_A, rel=0.01)
+        assert float(run["whirl_frequency_ratio"]) == pytest.approx(f_exact, rel=0.01)
+    # at less simulated time
+    assert ff["time"].values[-1] < 0.7 * full["time"].values[-1]
+    # the time shift: the scaled run reaches half the limit cycle ln(k)/sigma earlier than the unscaled motion
+    # (exact Stuart-Landau solution r(t) = a / sqrt(1 + (a^2/r0^2 - 1) exp(-2 sigma t)); within 5 % of ln(k)/sigma)
+    t_exact = math.log((SL_A ** 2 / SL_R0 ** 2 - 1) / 3.0) / (2 * SL_SIGMA)
+    after = ff["time"].values > plan["at"]
+    r = np.hypot(ff["cage_center_y"].values, ff["cage_center_z"].values)
+    t_ff = _first_crossing(ff["time"].values[after], r[after], 0.5 * SL_A)
+    assert t_exact - t_ff == pytest.approx(plan["equivalent_time"], rel=0.05)
+    # the independent integration agrees with the exact solution (the reference is right)
+    n = int(round(2.0 / 1e-4))
+    w = sl_integrate(SL_R0, n)
+    assert _first_crossing(np.arange(n + 1) * 1e-4, abs(w), 0.5 * SL_A) == pytest.approx(t_exact, abs=2e-4)
+    # recorded: where the jump was, the classification over the part after it only
+    ext = json.loads(ff.attrs["extensions"])
+    assert "fast_forward" in ext[0] and ext[0]["why"].startswith("growing whirl after the fast-forward")
+    assert float(ff.attrs["transient_discarded"]) > plan["at"]
+    assert ff.attrs["extension_saturated_orbit"].startswith("saturated orbit over ")
+    assert "fast_forward" not in full.attrs  # only on request
+
+
+def test_the_twin_kick_scales_only_the_cage_centre_about_its_orbit_centre():
+    ds = _hopf(0.3)
+    plan, why = plan_fast_forward(ds)
+    assert why == "planned"
+    out = apply_fast_forward(ds, plan)
+    names = [str(n) for n in ds["state"].values]
+    before, after = ds["final_state"].values, out["final_state"].values
+    refs = {"y_c": plan["orbit_centre"][0], "z_c": plan["orbit_centre"][1],
+            "ydot_c": plan["mean_velocity"][0], "zdot_c": plan["mean_velocity"][1]}
+    for n, ref in refs.items():
+        i = names.index(n)
+        assert after[i] - ref == pytest.approx(plan["factor"] * (before[i] - ref), rel=1e-12)
+    assert ds["final_state"].values[0] == before[0]  # the input is not modified
+
+
+@pytest.mark.parametrize("what", ["determined", "near target", "not growing", "no cage state"])
+def test_no_fast_forward_outside_the_linear_regime(what):
+    if what == "determined":
+        ds = _orbit(0.3, lambda t: np.full_like(t, 80e-6))
+        want = "determined"
+    elif what == "near target":  # 0.3 s: 0.45 x 20 um, within the factor 2 of the target
+        ds = hopf_whirl_run(load_case("zhang2016"), 0.3)
+        ds = ds.assign(cage_center_y=ds["cage_center_y"] * 60, cage_center_z=ds["cage_center_z"] * 60)
+        want = "within a factor 2"
+    elif what == "not growing":
+        ds = _orbit(0.3, lambda t: 50e-6 * np.exp(-5.0 * t))
+        want = "not a growing whirl"
+    else:  # a run without the cage centre in its state (extendable_runs.growing_whirl_run)
+        ds = growing_whirl_run(load_case("zhang2016", **{"operating.axial_load": "2000 N"}), 0.3)
+        want = "no cage centre"
+    plan, why = plan_fast_forward(ds)
+    assert plan is None and want in why
+
+
+def test_a_failed_continuation_after_a_fast_forward_keeps_the_unscaled_state():
+    from hsbearing.errors import SolverError
+
+    ds = _hopf(0.3)
+
+    def fails(d, s):
+        raise SolverError("CVODE: too much work", partial=None)
+
+    out = extend_until_determined(ds, 3.0, continue_fn=fails, keep_on_failure=True, fast_forward=True)
+    assert out.attrs["extension_stop_reason"].startswith("failed: ")
+    np.testing.assert_array_equal(out["final_state"].values, ds["final_state"].values)
+    assert "not_done" in json.loads(out.attrs.get("fast_forward", '{"not_done": ""}'))
+
+
+def test_map_points_are_fast_forwarded(tmp_path):
+    ds = run_map("zhang2016", ("operating.axial_load", "1000N"), ("lubricant.oil", "4109"), out_dir=tmp_path / "m",
+                 duration="0.3 s", point_fn=hopf_whirl_run, progress=False, figure=False, jobs=1, extend="3 s")
+    assert str(ds["classification"].values.ravel()[0]) == "1 period"
+    a = open_run(tmp_path / "m" / str(ds["archive"].values.ravel()[0]))
+    plan = json.loads(a.attrs["fast_forward"])
+    assert plan["factor"] > 10 and plan["at"] == pytest.approx(0.3 + FAST_FORWARD_TWIN_TIME)
+    assert float(a["whirl_amplitude"]) == pytest.approx(SL_A, rel=0.01)

@@ -3,7 +3,7 @@ of real 5 ms dynamic runs, locally (-j 2, through the CLI) and through a real da
 resume, per-point wall times, bad input.
 
 5 ms runs are far too short for a meaningful class (the classifier says "undetermined", too few section points, and
-the map extends each point to 3 x 5 ms by default: the real continuation in the workers): these tests check the
+the map extends each point to 6 x 5 ms by default: the real continuation in the workers): these tests check the
 machinery, not the physics of the map.
 """
 
@@ -154,9 +154,9 @@ def test_map_stop_stats_tool_reads_a_finished_map(local_map):
     tool = Path(__file__).resolve().parents[2] / "tools" / "investigations" / "map_stop_stats.py"
     r = subprocess.run([sys.executable, str(tool), str(out)], capture_output=True, text=True, timeout=300)
     assert r.returncode == 0, r.stderr[-2000:]
-    # the 5 ms points are undetermined (too few section points) and extended by default to 3 x 5 ms: the tool's
+    # the 5 ms points are undetermined (too few section points) and extended by default to 6 x 5 ms: the tool's
     # bound is the longest simulated time
-    assert "4 points with archives; 0 stopped early by the stop rule, 4 ran to the 0.015 s bound" in r.stdout
+    assert "4 points with archives; 0 stopped early by the stop rule, 4 ran to the 0.03 s bound" in r.stdout
     assert len([ln for ln in r.stdout.splitlines() if "stop bound" in ln]) == 4
     r = subprocess.run([sys.executable, str(tool), str(out / "nothing")], capture_output=True, text=True, timeout=300)
     assert r.returncode == 2 and "no map.nc" in r.stderr

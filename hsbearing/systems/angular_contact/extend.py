@@ -25,6 +25,18 @@ stopped (``attrs["extension_stop_reason"]``) and, for a growing whirl, the last 
 ``hsbearing map`` and ``hsbearing study`` extend every point in its worker, before the archive is reduced to what
 it keeps (:func:`hsbearing.workflows.sweeps.points.compute_point`), with :data:`WORKFLOW_BUDGET_FACTOR` times the
 point's duration as the default budget.
+
+**Linear-regime fast-forward** (maps and studies, ``fast_forward=True``; not ``run --extend``): a growing whirl
+whose amplitude is still far below the guide clearance is in the linear regime of its Hopf bifurcation (the
+Stuart-Landau amplitude equation dA/dt = sigma A - l |A|^2 A, Landau 1944, Stuart 1960: for |A| << sqrt(sigma/l) the
+cubic term is negligible), where the motion from the state with the whirl deviation scaled by k equals the motion
+ln(k)/sigma later.  :func:`plan_fast_forward` scales the cage centre's deviation from its orbit centre (position and
+velocity, ``y_c, z_c, ydot_c, zdot_c`` of ``final_state``) so that the whirl amplitude becomes
+:data:`FAST_FORWARD_FRACTION` of the radial guide clearance, once per run, when the growth is monotone and the scale
+is at least :data:`FAST_FORWARD_MIN_FACTOR`.  The time axis of the archive then runs on: the samples after the jump
+are ln(k)/sigma behind the physical time of an unscaled start (recorded in ``attrs["fast_forward"]``), and the run
+is classified on the part after the jump only (the transient rule applied to that part,
+:func:`annotate_after_fast_forward`).
 """
 
 from __future__ import annotations
@@ -35,7 +47,8 @@ import math
 from hsbearing.analysis.stoprule import NEVER_STOP_KINDS
 from hsbearing.results import register
 
-__all__ = ["extend_until_determined", "next_step", "extension_wanted", "extension_summary", "MIN_STEP_FRACTION",
+__all__ = ["extend_until_determined", "next_step", "plan_fast_forward", "apply_fast_forward",
+           "annotate_after_fast_forward", "twin_fast_forward", "FAST_FORWARD_FRACTION", "FAST_FORWARD_TWIN_TIME", "FAST_FORWARD_TWIN_MAX", "FAST_FORWARD_MIN_FACTOR", "extension_wanted", "extension_summary", "MIN_STEP_FRACTION",
            "MAX_EXTENSIONS", "DEFAULT_BUDGET_FACTOR", "WORKFLOW_BUDGET_FACTOR", "ESTIMATE_KINDS"]
 
 #: A step is at least this fraction of the simulated time so far.
@@ -45,10 +58,19 @@ MAX_EXTENSIONS = 8
 #: Default budget of ``--max-duration``: this many times the run's own duration.
 DEFAULT_BUDGET_FACTOR = 3.0
 #: Default budget of a map or study point (``hsbearing map`` / ``study``): this many times the point's duration
-#: (docs/sweeps.md, "Extend until determined": the growing whirls of the load x temperature map have e-folding
-#: times of 0.3-1.2 s; the transient rule discards at most 60 % of a run, so a whirl that saturates by ~1.4 s is
-#: read on its saturated orbit in 3.6 s).
-WORKFLOW_BUDGET_FACTOR = 3.0
+#: (docs/sweeps.md, "Extend until determined": fast-forwarded at ~1.2 s to 0.1 x the clearance, the growing whirls of
+#: the load x temperature map at 1-1.6/s are read on their saturated orbit by 4.0-6.8 s; the slowest, 0.72/s, would
+#: need 9.3 s: a compromise with the 2 x wall-time target of the map).
+WORKFLOW_BUDGET_FACTOR = 6.0
+#: Fast-forward target: the whirl amplitude (RMS radius about the orbit centre) after the scaling, as a fraction of
+#: the radial guide clearance.  Why 0.1: in the map cells whose whirls saturated naturally (docs/sweeps.md) the
+#: amplitude grew by a constant factor per 0.2 s (within 2 %) up to 13-17 % of the clearance; the non-linearity of
+#: the guide-land film ~ 1/(1 - e^2) is 1 % at e = 0.1.
+FAST_FORWARD_FRACTION = 0.1
+#: Fast-forward only when it scales the whirl by at least this factor (otherwise the run simply goes on).
+FAST_FORWARD_MIN_FACTOR = 2.0
+#: Names of the cage-centre states scaled by the fast-forward (positions, then velocities).
+FAST_FORWARD_STATES = (("y_c", "z_c"), ("ydot_c", "zdot_c"))
 #: Undetermined kinds whose classifier details carry an estimate of the time the run still needs.
 ESTIMATE_KINDS = ("growing", "decaying", "drifting-arc", "too-few-points")
 
@@ -148,8 +170,193 @@ def _saturated_orbit(ds) -> str:
             f"{amp * 1e6:.4g} um, peak radius {peak * 1e6:.4g} um, whirl/cage frequency ratio {ratio:.4g}")
 
 
+def _end_window(ds, sigma: float):
+    """Samples of the last window over which the whirl amplitude is measured: 0.1/sigma (the radius changes by
+    10 % in it), at most a tenth of the run."""
+    t = ds["time"].values
+    span = float(t[-1] - t[0])
+    w = min(0.1 / sigma, 0.1 * span)
+    return t >= t[-1] - w, w
+
+
+def plan_fast_forward(ds, fraction: float = FAST_FORWARD_FRACTION) -> tuple[dict | None, str]:
+    """The linear-regime fast-forward of a growing whirl (module text), or None and why not.
+
+    Conditions: label "undetermined" of kind "growing" with a positive growth rate sigma and a monotone growth
+    (classifier details), a guide clearance ``c`` (``attrs["guide_clearance"]``), a stored state with the cage
+    centre (:data:`FAST_FORWARD_STATES`), and the amplitude ``A`` (RMS radius about the orbit centre over the last
+    0.1/sigma) at most ``fraction * c / FAST_FORWARD_MIN_FACTOR``.  The plan: the scale ``k = fraction * c / A``,
+    the orbit centre and mean velocity it scales about, and the equivalent time ln(k)/sigma it skips.
+    """
+    import numpy as np
+
+    if ds.attrs.get("classification") != "undetermined":
+        return None, "determined"
+    det = _details(ds)
+    g = det.get("growth") or {}
+    sigma = g.get("sigma")
+    if det.get("kind") != "growing" or not _finite(sigma) or float(sigma) <= 0:
+        return None, f"not a growing whirl (kind {det.get('kind')!r})"
+    if not g.get("monotone", False):
+        return None, "growth not monotone (not a clean exponential)"
+    sigma = float(sigma)
+    c = ds.attrs.get("guide_clearance")
+    if not _finite(c) or float(c) <= 0:
+        return None, "no guide clearance"
+    if "final_state" not in ds or "state" not in ds.coords:
+        return None, "no final state"
+    names = [str(n) for n in ds["state"].values]
+    if not all(n in names for pair in FAST_FORWARD_STATES for n in pair):
+        return None, "the state has no cage centre"
+    m, w = _end_window(ds, sigma)
+    y, z = ds["cage_center_y"].values[m], ds["cage_center_z"].values[m]
+    vy, vz = ds["cage_velocity_y"].values[m], ds["cage_velocity_z"].values[m]
+    centre = (float(np.mean(y)), float(np.mean(z)))
+    vmean = (float(np.mean(vy)), float(np.mean(vz)))
+    amp = float(np.sqrt(np.mean((y - centre[0]) ** 2 + (z - centre[1]) ** 2)))
+    target = fraction * float(c)
+    if not amp > 0:
+        return None, "no whirl to scale"
+    k = target / amp
+    if k < FAST_FORWARD_MIN_FACTOR:
+        return None, (f"amplitude {amp * 1e6:.3g} um is within a factor {FAST_FORWARD_MIN_FACTOR:g} of the target "
+                      f"{target * 1e6:.3g} um ({fraction:g} x the guide clearance): no fast-forward")
+    return {"at": float(ds["time"].values[-1]), "sigma": sigma, "amplitude_before": amp, "amplitude_after": target,
+            "factor": k, "equivalent_time": math.log(k) / sigma, "window": w, "orbit_centre": centre,
+            "mean_velocity": vmean, "fraction_of_clearance": fraction, "guide_clearance": float(c),
+            "states": [n for pair in FAST_FORWARD_STATES for n in pair],
+            "why": (f"growing whirl in the linear regime: amplitude {amp * 1e6:.3g} um = {amp / float(c):.2g} x the "
+                    f"guide clearance, growth rate {sigma:.3g} 1/s; cage-centre deviation scaled by {k:.3g} to "
+                    f"{fraction:g} x the clearance, equivalent to {math.log(k) / sigma:.3g} s of growth")}, "planned"
+
+
+def apply_fast_forward(ds, plan: dict):
+    """``ds`` with its ``final_state`` cage-centre deviation from the orbit centre (positions) and from the mean
+    velocity (velocities) scaled by ``plan["factor"]`` (:func:`plan_fast_forward`)."""
+    import numpy as np
+
+    names = [str(n) for n in ds["state"].values]
+    y = np.array(ds["final_state"].values, dtype=float)
+    k = plan["factor"]
+    for (a, b), ref in zip(FAST_FORWARD_STATES, (plan["orbit_centre"], plan["mean_velocity"]), strict=True):
+        for n, r in ((a, ref[0]), (b, ref[1])):
+            i = names.index(n)
+            y[i] = r + k * (y[i] - r)
+    out = ds.copy()
+    out["final_state"] = (ds["final_state"].dims, y)
+    out["final_state"].attrs = dict(ds["final_state"].attrs)
+    return out
+
+
+#: Time [s] the run and its kicked twin are continued before their difference is taken (the fast modes the kick
+#: excites decay in 2-5 ms in the map cells: measured, docs/sweeps.md).
+FAST_FORWARD_TWIN_TIME = 0.02
+#: The run and its twin are continued in steps of FAST_FORWARD_TWIN_TIME until the RMS of their cage-centre
+#: difference over the last half step exceeds that over the half step before (it grows: what is left is the growing mode),
+#: at most this long [s] (no fast-forward otherwise).  In hot oil the kick's decaying motions last longer than 20 ms
+#: (180 degC/4000 N: a single 20 ms step left them dominant and the jump gained nothing).
+FAST_FORWARD_TWIN_MAX = 0.2
+
+
+def _rhs_evals(ds) -> int:
+    try:
+        return int(ds.attrs.get("solver_rhs_evals", 0))
+    except (TypeError, ValueError):
+        return 0
+
+
+def twin_fast_forward(ds, plan: dict, continue_fn, tau: float = FAST_FORWARD_TWIN_TIME):
+    """The fast-forward along the growing mode of the whole state, found from a kicked twin.
+
+    The run ``a`` and a twin ``b`` whose cage-centre deviation was scaled (:func:`apply_fast_forward`) are both
+    continued in steps ``tau`` until their difference grows (at most :data:`FAST_FORWARD_TWIN_MAX`); the kick's components on the decaying modes die out, so the difference of the final states
+    b - a lies along the growing (unstable) mode of the whole state -- balls, cage, ring -- not only the cage centre
+    (a cage-centre kick alone projects by ~1 % on it and decays back within milliseconds).  The new final state is
+    a + gamma (b - a), gamma = (target - A_a) / |b - a|_cage, with |b - a|_cage the RMS of the difference of the two
+    cage-centre orbits over the last tau/2 and A_a the amplitude of ``a`` there.  Returns ``a`` (the run continued
+    by ``tau``) with that final state, and the record (the plan with the twin's numbers).
+    """
+    import numpy as np
+
+    a, b = ds, apply_fast_forward(ds, plan)
+    cy, cz = plan["orbit_centre"]
+
+    def rms(x, y, m):
+        return float(np.sqrt(np.mean(x[m] ** 2 + y[m] ** 2)))
+
+    twin_time = 0.0
+    while True:  # until the difference grows again: the kick's decaying motions have died out
+        a, b = continue_fn(a, tau), continue_fn(b, tau)
+        twin_time += tau
+        ta, tb = a["time"].values, b["time"].values
+        if ta.size != tb.size or not np.allclose(ta, tb):
+            raise ValueError("the twin continuation is not on the run's time grid")
+        m = ta >= ta[-1] - 0.5 * tau
+        m_prev = (ta >= ta[-1] - tau) & ~m
+        dy = b["cage_center_y"].values - a["cage_center_y"].values
+        dz = b["cage_center_z"].values - a["cage_center_z"].values
+        d_amp, d_prev = rms(dy, dz, m), rms(dy, dz, m_prev)
+        if d_amp > d_prev or twin_time >= FAST_FORWARD_TWIN_MAX - 1e-12:
+            break
+    if d_amp <= d_prev:
+        raise ValueError(f"the difference of the run and its twin still decays after {twin_time:g} s")
+    amp_a = rms(a["cage_center_y"].values - cy, a["cage_center_z"].values - cz, m)
+    target = plan["amplitude_after"]
+    if not d_amp > 0 or amp_a >= target:
+        raise ValueError("the twin did not separate from the run")
+    gamma = (target - amp_a) / d_amp
+    ya, yb = np.asarray(a["final_state"].values, float), np.asarray(b["final_state"].values, float)
+    y = ya + gamma * (yb - ya)
+    names = [str(n) for n in a["state"].values]
+    r_new = math.hypot(y[names.index("y_c")] - cy, y[names.index("z_c")] - cz)
+    out = a.copy()
+    out["final_state"] = (a["final_state"].dims, y)
+    out["final_state"].attrs = dict(a["final_state"].attrs)
+    rec = dict(plan)
+    k = target / amp_a
+    rec.update(at=float(ta[-1]), amplitude_before=amp_a, factor=k, equivalent_time=math.log(k) / plan["sigma"],
+               twin_time=twin_time, twin_kick=plan["factor"], twin_difference_amplitude=d_amp, gamma=gamma,
+               radius_after=r_new, states="all (along b - a)",
+               twin_rhs_evals=_rhs_evals(b) - _rhs_evals(ds),
+               why=(f"growing whirl in the linear regime: amplitude {amp_a * 1e6:.3g} um = {amp_a / plan['guide_clearance']:.2g} x "
+                    f"the guide clearance, growth rate {plan['sigma']:.3g} 1/s; the whole state moved along the growing "
+                    f"mode (a twin with the cage-centre deviation scaled by {plan['factor']:.3g}, both continued "
+                    f"{twin_time:g} s; {gamma:.3g} x their difference added) to {plan['fraction_of_clearance']:g} x the "
+                    f"clearance, equivalent to {math.log(k) / plan['sigma']:.3g} s of growth"))
+    return out, rec
+
+
+def _step_after_fast_forward(plan: dict) -> float:
+    """The extension after a fast-forward: the growth from the target to saturation, (ln(1/fraction) + 1.2)/sigma
+    (the 1.2/sigma: the approach to within 1 % of the saturated radius of the Stuart-Landau whirl, from 0.2 to 0.99
+    of it in 3.5/sigma; 0.5/sigma in the map cell 27 degC/2000 N, 18 -> 152 um in 1.5 s at 1.84/s), divided by the
+    largest transient fraction of the automatic rule (60 %): the growth then lies within the part the transient
+    rule may discard and what it keeps is the saturated orbit."""
+    from hsbearing.analysis.poincare import MAX_TRANSIENT_FRACTION
+
+    sat = (math.log(1.0 / plan["fraction_of_clearance"]) + 1.2) / plan["sigma"]
+    return sat / MAX_TRANSIENT_FRACTION
+
+
+def annotate_after_fast_forward(ds, t_jump: float):
+    """Re-classify ``ds`` on its part after the fast-forward at ``t_jump`` [s] only: the transient discarded is the
+    part before the jump plus the automatic transient of the part after it (the samples before the jump are on
+    another time base)."""
+    from hsbearing.analysis import annotate
+    from hsbearing.analysis.poincare import transient_cut
+
+    t = ds["time"].values
+    span = float(t[-1] - t[0])
+    after = ds.isel(time=t >= t_jump)
+    cut = (t_jump - float(t[0])) + transient_cut(after, "auto")
+    out = annotate(ds, transient=min(cut / span, 0.99))
+    out.attrs["transient_rule"] = (f"after the fast-forward at t = {t_jump:.6g} s: the part before it and the automatic "
+                                   "transient of the part after it (max(30 %, end of drift), at most 60 % of that part)")
+    return out
+
+
 def extend_until_determined(ds, max_duration: float, *, continue_fn=None, progress: bool = False,
-                            converge: bool = False, keep_on_failure: bool = False):
+                            converge: bool = False, keep_on_failure: bool = False, fast_forward: bool = False):
     """Continue ``ds`` (an annotated dynamic run) while it is "undetermined", up to ``max_duration`` [s] in all.
 
     ``continue_fn(ds, duration) -> ds``: the continuation (default
@@ -160,7 +367,8 @@ def extend_until_determined(ds, max_duration: float, *, continue_fn=None, progre
     (:func:`extension_wanted`) is returned with none (its stop reason says why).  ``converge``: also stop when the
     stop rule's convergence holds on the extended run.  A failure of a continuation (``SolverError``)
     propagates with its partial run, or with ``keep_on_failure`` ends the extension, keeping the run as it was
-    before the failed step (stop reason "failed: ...").
+    before the failed step (stop reason "failed: ...").  ``fast_forward``: the linear-regime fast-forward of a
+    growing whirl (module text; at most once per run, recorded in ``attrs["fast_forward"]``, JSON).
     """
     from hsbearing.errors import SolverError
 
@@ -177,6 +385,8 @@ def extend_until_determined(ds, max_duration: float, *, continue_fn=None, progre
     if not wanted and ds.attrs.get("classification", "undetermined") == "undetermined":
         reason = why_not
     case = _case_of(ds) if converge and wanted else None
+    jump = None
+    ff_note = ""
     while not reason:
         label = ds.attrs.get("classification", "undetermined")
         t_end = float(ds["time"].values[-1])
@@ -197,14 +407,38 @@ def extend_until_determined(ds, max_duration: float, *, continue_fn=None, progre
             reason = f"steps: {MAX_EXTENSIONS} extensions made, still undetermined"
             break
         step, why = next_step(ds)
-        step = min(step, left)
         g = (_details(ds).get("growth") or {}).get("sigma")
         rec = {"from": t_end, "to": t_end + step, "why": why, "label_before": label,
                "reason_before": ds.attrs.get("classification_reason", ""),
                "growth_rate": float(g) if g is not None and math.isfinite(float(g)) else None}
+        if fast_forward and jump is None and left > 4 * FAST_FORWARD_TWIN_TIME:
+            plan, ff_why = plan_fast_forward(ds)
+            if plan is not None:
+                unscaled = ds
+                try:
+                    ds, jump = twin_fast_forward(ds, plan, continue_fn)
+                except (SolverError, ValueError) as exc:  # no usable twin: go on without a fast-forward
+                    ff_note, plan = f"twin failed: {type(exc).__name__}: {exc}", None
+            if plan is not None:
+                t_end = float(ds["time"].values[-1])
+                left = max_duration - (t_end - t0)
+                rec["from"] = t_end
+                rec["fast_forward"] = jump["why"]
+                step = max(step, _step_after_fast_forward(plan))
+                rec["why"] = ("growing whirl after the fast-forward: the growth to saturation (ln(1/fraction) + 1.2)/sigma, long "
+                              "enough that the transient rule leaves the saturated orbit")
+            elif ff_why != "determined" and not ff_note:
+                ff_note = ff_why
+        step = min(step, left)
+        rec["to"] = t_end + step
         try:
             ds = continue_fn(ds, step)
+            if jump is not None:
+                ds = annotate_after_fast_forward(ds, jump["at"])
         except SolverError as exc:
+            if "fast_forward" in rec:
+                ds = unscaled  # the kept run ends with its own (unscaled) state
+                jump = None
             if not keep_on_failure:
                 raise
             reason = (f"failed: the extension {t_end:.6g} -> {t_end + step:.6g} s stopped ({exc}); the run is kept "
@@ -216,6 +450,9 @@ def extend_until_determined(ds, max_duration: float, *, continue_fn=None, progre
     ds.attrs["extensions"] = json.dumps(steps)
     ds.attrs["extension_stop_reason"] = reason
     ds.attrs["extension_max_duration"] = float(max_duration)
+    if fast_forward and steps:
+        ds.attrs["fast_forward"] = json.dumps(jump) if jump is not None else json.dumps(
+            {"not_done": ff_note or "not a growing whirl in the linear regime"})
     rates = [s["growth_rate"] for s in steps if s["growth_rate"] is not None]
     ds.attrs["extension_growth_rate"] = float(rates[-1]) if rates else float("nan")
     grew = any("growing" in s["why"] for s in steps)

@@ -76,7 +76,7 @@ def run_study(
     point (default converged, as ``hsbearing study``; "duration" or None: the
     study case's, i.e. the whole duration).  It is part of each point's case,
     hence of its archive hash: stopped and full-length runs never alias.  ``keep``: what each point archive
-    keeps, "answer" (default) or "full" (:func:`hsbearing.workflows.sweeps.execute`).  ``extend``: "default" (3 x
+    keeps, "answer" (default) or "full" (:func:`hsbearing.workflows.sweeps.execute`).  ``extend``: "default" (6 x
     each point's duration), a budget [s] of total simulated time or None: a point whose label is undetermined with
     an estimate of the time it needs is continued in its worker until determined, the stop rule's convergence or
     the budget (:func:`hsbearing.workflows.sweeps.plan.extension_budget`); part of each extended point's hash.

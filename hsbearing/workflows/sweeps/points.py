@@ -211,7 +211,7 @@ def extend_point(case: Case, ds: xr.Dataset, budget: float, point_fn, rec: dict)
     system = systems.get(case)
     if system.extend is None:
         return ds
-    kw = {"converge": True, "keep_on_failure": True}
+    kw = {"converge": True, "keep_on_failure": True, "fast_forward": True}
     if point_fn is not None:
         kw["continue_fn"] = point_fn.continue_fn
     t0 = time.perf_counter()
