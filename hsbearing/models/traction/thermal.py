@@ -123,8 +123,8 @@ class PhysicalParameters:
     eyring_temperature : "eyring" (tau0 proportional to T) or "constant"
     thermal : shear heating on (True) or off (isothermal at the inlet temperature)
     buildup : "march" (the Maxwell-Eyring equation integrated cell by cell, :func:`maxwell_eyring_march`) or
-        "closed" (the closed form tau_f (1 - exp(-tel / tau_f)) of :func:`local_stress`, the law before the march:
-        11-25 % low at the elastic-plastic knee; kept for comparison)
+    "closed" (the closed form tau_f (1 - exp(-tel / tau_f)) of :func:`local_stress`, the law before the march:
+    11-25 % low at the elastic-plastic knee; kept for comparison)
     k_solid, kappa_solid : conductivity [W/(m K)] and diffusivity [m^2/s] of both solids
     """
 
