@@ -210,6 +210,7 @@ def build_parser() -> argparse.ArgumentParser:
     sp.add_argument("--scheduler", default=None, metavar="ADDR",
                     help="address tcp://host:port of a running dask.distributed scheduler; the points run on its "
                          "workers instead of local processes")
+    sp.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     sp.add_argument("--duration", help="simulated time of each run (default: the study's, e.g. 1.2 s)")
     _add_keep_option(sp)
     _add_stop_option(sp, "converged")

@@ -501,3 +501,21 @@ def test_orbit_drift_flags_a_spiral_not_a_steady_whirl_or_a_still_cage():
     assert not study.orbit_drift(t, r * np.cos(w * t), r * np.sin(w * t), 0.5, c)["drifting"]
     # over the whole run it rises, then stays: the last quarters are equal, not a monotone drift
     assert study.orbit_drift(t, r * np.cos(w * t), r * np.sin(w * t), 0.0, c)["drifting"] is False
+
+
+@pytest.mark.parametrize("extra,progress", [([], True), (["-q"], False)])
+def test_study_cli_quiet_turns_the_progress_bar_off(tmp_path, monkeypatch, extra, progress):
+    """``hsbearing study ... -q`` (as ``hsbearing map -q``): no progress bar; the run itself is stubbed."""
+    from hsbearing.cli.parser import build_parser
+    from hsbearing.workflows.study import cli as study_cli
+
+    seen = {}
+
+    def stub(name, out_dir, **kw):
+        seen.update(kw)
+        raise SystemExit(0)
+
+    args = build_parser().parse_args(["study", "zhang2016", "-o", str(tmp_path / "o"), *extra])
+    with pytest.raises(SystemExit):
+        study_cli.cli_main(args, run_study=stub)
+    assert seen["progress"] is progress

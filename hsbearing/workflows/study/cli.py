@@ -31,7 +31,7 @@ def cli_main(args, run_study: Callable | None = None) -> int:
 
     extend = extend_arg(args)
     res = (run_study or _run_study)(args.name, out, jobs=args.jobs, scheduler=args.scheduler, duration=args.duration,
-                                    progress=True, bands=bands, band_samples_limit=limit,
+                                    progress=not getattr(args, "quiet", False), bands=bands, band_samples_limit=limit,
                                     tables=getattr(args, "tables", None),
                                     report_only=bool(getattr(args, "report_only", False)),
                                     stop=getattr(args, "stop", None), keep=getattr(args, "keep", "answer"),
