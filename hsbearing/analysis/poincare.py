@@ -78,6 +78,8 @@ __all__ = [
     "cage_velocities",
     "steady_mask",
     "transient_cut",
+    "drift_end",
+    "saturation_cut",
     "after_transient",
     "crossing_times",
     "poincare_section",
@@ -172,6 +174,33 @@ def _revolution_index(ds) -> np.ndarray:
     return k - k[0] if k.size else k
 
 
+def drift_end(ds) -> float | None:
+    """Duration [s] from the start after which the run no longer drifts, or None (fewer than 8 revolutions).
+
+    The drift detection of the module text: the per-revolution means of the cage-centre radius and of the cage
+    speed are compared with the band of the last quarter of the revolutions (its half-range plus 2 % of the
+    radius, 0.1 % of the speed); the run drifts until the last revolution outside that band.
+    """
+    t = _time(ds)
+    k = _revolution_index(ds)
+    nrev = int(k[-1]) if k.size else 0  # complete revolutions 0 .. nrev-1
+    if nrev < 8:
+        return None
+    sel = k < nrev
+    cnt = np.bincount(k[sel], minlength=nrev)
+    r = np.hypot(np.asarray(ds["cage_center_y"].values, float), np.asarray(ds["cage_center_z"].values, float))
+    w = np.asarray(ds["cage_speed"].values, float)
+    j0 = 0
+    for x, rel in ((r, 0.02), (w, 1e-3)):
+        xm = np.bincount(k[sel], np.nan_to_num(x[sel]), minlength=nrev) / np.maximum(cnt, 1)
+        ref = xm[-max(3, int(0.25 * nrev)):]
+        tol = 0.5 * np.ptp(ref) + rel * abs(np.median(ref))
+        bad = np.nonzero((xm < ref.min() - tol) | (xm > ref.max() + tol))[0]
+        if bad.size:
+            j0 = max(j0, int(bad[-1]) + 1)
+    return float(t[int(np.argmax(k >= j0))] - t[0])
+
+
 def transient_cut(ds, transient="auto") -> float:
     """Duration [s] of the start-up transient to discard (rule in the module docstring).
 
@@ -187,24 +216,27 @@ def transient_cut(ds, transient="auto") -> float:
     if transient != "auto":
         raise ValueError(f"transient must be 'auto' or a fraction in [0, 1), not {transient!r}")
     lo, hi = DEFAULT_TRANSIENT_FRACTION * span, MAX_TRANSIENT_FRACTION * span
-    k = _revolution_index(ds)
-    nrev = int(k[-1])  # complete revolutions 0 .. nrev-1
-    if nrev < 8:
+    t_drift = drift_end(ds)
+    if t_drift is None:
         return lo
-    sel = k < nrev
-    cnt = np.bincount(k[sel], minlength=nrev)
-    r = np.hypot(np.asarray(ds["cage_center_y"].values, float), np.asarray(ds["cage_center_z"].values, float))
-    w = np.asarray(ds["cage_speed"].values, float)
-    j0 = 0
-    for x, rel in ((r, 0.02), (w, 1e-3)):
-        xm = np.bincount(k[sel], np.nan_to_num(x[sel]), minlength=nrev) / np.maximum(cnt, 1)
-        ref = xm[-max(3, int(0.25 * nrev)):]
-        tol = 0.5 * np.ptp(ref) + rel * abs(np.median(ref))
-        bad = np.nonzero((xm < ref.min() - tol) | (xm > ref.max() + tol))[0]
-        if bad.size:
-            j0 = max(j0, int(bad[-1]) + 1)
-    t_drift = float(t[int(np.argmax(k >= j0))] - t[0])
     return float(min(max(t_drift, lo), hi))
+
+
+def saturation_cut(ds) -> tuple[float, int]:
+    """Duration [s] to discard of a run that starts with a growth to saturation (a growing whirl continued until
+    it saturates), and the number of complete cage revolutions after it: the drift end (:func:`drift_end`), at
+    least 30 % of the span, with no 60 % cap (the growth may last most of the run).  Fewer than 8 revolutions:
+    the 30 % floor."""
+    t = _time(ds)
+    if t.size < 2:
+        return 0.0, 0
+    span = float(t[-1] - t[0])
+    t_drift = drift_end(ds)
+    cut = max(DEFAULT_TRANSIENT_FRACTION * span, t_drift if t_drift is not None else 0.0)
+    k = _revolution_index(ds)
+    nrev = int(k[-1])
+    first = int(k[int(np.argmax(t >= t[0] + cut * (1 - 1e-12)))]) if t[-1] >= t[0] + cut else nrev
+    return float(cut), max(nrev - first - 1, 0)  # the revolution the cut falls in is not complete after it
 
 
 def after_transient(ds, transient=None) -> tuple[np.ndarray, float]:

@@ -379,6 +379,18 @@ def test_auto_transient_waits_for_the_drift_to_end(case):
     for kind in ("k", "quasi", "chaos"):
         run = cage_run(kind, case)
         assert transient_cut(run, "auto") == pytest.approx(0.3 * float(run.time[-1]))
+    # a growth to saturation read by saturation_cut: the drift end without the 60 % cap, the revolutions after it
+    from hsbearing.analysis.poincare import saturation_cut
+
+    grow = np.clip(t / (0.7 * T), 0.05, 1.0)  # ends before the reference (the last 25 %)
+    slow = ds.assign(cage_center_y=("time", 20e-6 * grow * np.cos(ph)), cage_center_z=("time", 20e-6 * grow * np.sin(ph)))
+    assert transient_cut(slow, "auto") == pytest.approx(0.6 * T)
+    cut, kept = saturation_cut(slow)
+    assert 0.7 * T - 2 * rev <= cut <= 0.7 * T + 2 * rev
+    assert (T - cut) / rev - 2 <= kept <= (T - cut) / rev  # complete revolutions after the one the cut is in
+    for kind in ("k", "quasi", "chaos"):
+        run = cage_run(kind, case)
+        assert saturation_cut(run)[0] == pytest.approx(0.3 * float(run.time[-1]))
 
 
 def test_plane_section(case):

@@ -2,12 +2,16 @@
 
 ``hsbearing run --extend [--max-duration T]`` (opt-in).  The run goes on from its last state
 (:func:`hsbearing.systems.angular_contact.dynamics.continue_run`) in steps; each step is re-classified over the
-whole run (the transient rule of :func:`hsbearing.analysis.annotate` applies to the longer run).  The step is
-what the undetermined label says it needs:
+whole run (the transient rule of :func:`hsbearing.analysis.annotate` applies to the longer run; a whirl that was
+growing is read on its saturated part only, the growth cut off where it is measured to end and at least
+:data:`SATURATED_REVOLUTIONS` cage revolutions after it, :func:`annotate_saturated`).  The step is what the
+undetermined label says it needs:
 
 - a growing or decaying whirl: one e-folding time 1/|sigma| of its measured growth rate (the radius changes by a
   factor e, so the next label sees either the saturated orbit or a clearly continuing growth);
 - a drifting arc of section points: the time the classifier estimates to close one turn (``run_longer_s``);
+- a whirl that grew, read on its saturated part (:func:`annotate_saturated`) that is still too short or still
+  changing: the time that part still needs (``run_longer_s``);
 - anything else (an irregular section, too few points): half the current simulated time;
 
 bounded below by :data:`MIN_STEP_FRACTION` of the current simulated time and above by what the budget leaves.
@@ -48,7 +52,7 @@ from hsbearing.analysis.stoprule import NEVER_STOP_KINDS
 from hsbearing.results import register
 
 __all__ = ["extend_until_determined", "next_step", "plan_fast_forward", "apply_fast_forward",
-           "annotate_after_fast_forward", "twin_fast_forward", "FAST_FORWARD_FRACTION", "FAST_FORWARD_TWIN_TIME", "FAST_FORWARD_TWIN_MAX", "FAST_FORWARD_MIN_FACTOR", "extension_wanted", "extension_summary", "MIN_STEP_FRACTION",
+           "annotate_after_fast_forward", "annotate_saturated", "SATURATED_REVOLUTIONS", "twin_fast_forward", "FAST_FORWARD_FRACTION", "FAST_FORWARD_TWIN_TIME", "FAST_FORWARD_TWIN_MAX", "FAST_FORWARD_MIN_FACTOR", "extension_wanted", "extension_summary", "MIN_STEP_FRACTION",
            "MAX_EXTENSIONS", "DEFAULT_BUDGET_FACTOR", "WORKFLOW_BUDGET_FACTOR", "ESTIMATE_KINDS"]
 
 #: A step is at least this fraction of the simulated time so far.
@@ -101,7 +105,9 @@ def next_step(ds) -> tuple[float, str]:
     if kind in ("growing", "decaying") and sigma not in (None, 0) and math.isfinite(float(sigma)):
         step, why = 1.0 / abs(float(sigma)), f"{kind} whirl, growth rate {float(sigma):.3g} 1/s: one e-folding time"
     elif det.get("run_longer_s") is not None and math.isfinite(float(det["run_longer_s"])):
-        step, why = float(det["run_longer_s"]), "drifting arc: the time to close one turn of the section"
+        step = float(det["run_longer_s"])
+        why = ("drifting arc: the time to close one turn of the section" if kind == "drifting-arc" else
+               f"{kind or 'undetermined'} after a growth: the time its saturated orbit still needs to be read")
     else:
         step, why = 0.5 * span, f"{kind or 'undetermined'} section: half the simulated time"
     floor = MIN_STEP_FRACTION * span
@@ -326,33 +332,123 @@ def twin_fast_forward(ds, plan: dict, continue_fn, tau: float = FAST_FORWARD_TWI
     return out, rec
 
 
-def _step_after_fast_forward(plan: dict) -> float:
+#: The classification of a whirl that grew to saturation keeps at least this many complete cage revolutions after
+#: its growth (:func:`annotate_saturated`): the stop rule's ``min_points`` (an aperiodic section needs 40 points to
+#: be read at all; the whirls of the map run at 0.95-1.0 x the cage speed, one transverse section point a loop).
+SATURATED_REVOLUTIONS = 40
+
+
+def _revolution_time(ds) -> float:
+    """Duration [s] of one cage revolution at the run's last mean cage speed (NaN when the cage stands still)."""
+    import numpy as np
+
+    w = np.asarray(ds["cage_speed"].values, float)
+    t = ds["time"].values
+    m = t >= t[-1] - 0.1 * float(t[-1] - t[0])
+    wm = abs(float(np.nanmean(w[m]))) if m.any() else float("nan")
+    return 2.0 * math.pi / wm if wm > 0 else float("nan")
+
+
+def _step_after_fast_forward(plan: dict, ds=None) -> float:
     """The extension after a fast-forward: the growth from the target to saturation, (ln(1/fraction) + 1.2)/sigma
     (the 1.2/sigma: the approach to within 1 % of the saturated radius of the Stuart-Landau whirl, from 0.2 to 0.99
-    of it in 3.5/sigma; 0.5/sigma in the map cell 27 degC/2000 N, 18 -> 152 um in 1.5 s at 1.84/s), divided by the
-    largest transient fraction of the automatic rule (60 %): the growth then lies within the part the transient
-    rule may discard and what it keeps is the saturated orbit."""
-    from hsbearing.analysis.poincare import MAX_TRANSIENT_FRACTION
-
+    of it in 3.5/sigma; 0.5/sigma in the map cell 27 degC/2000 N, 18 -> 152 um in 1.5 s at 1.84/s), plus
+    :data:`SATURATED_REVOLUTIONS` cage revolutions of the saturated orbit to classify.  The classification cuts
+    the growth off where it ends (:func:`annotate_saturated`, measured, not a fixed fraction of the run).  Measured
+    on the nine fast-forwarded cells of the load x temperature map (docs/sweeps.md): the whirl is within 2 % of its
+    saturated amplitude 2.6-2.9/sigma after the jump, 0.6-0.9/sigma before this estimate.  Without ``ds`` (no cage
+    speed known) the classification part is the growth time itself."""
     sat = (math.log(1.0 / plan["fraction_of_clearance"]) + 1.2) / plan["sigma"]
-    return sat / MAX_TRANSIENT_FRACTION
+    rev = _revolution_time(ds) if ds is not None else float("nan")
+    return sat + (SATURATED_REVOLUTIONS * rev if math.isfinite(rev) else sat)
 
 
-def annotate_after_fast_forward(ds, t_jump: float):
-    """Re-classify ``ds`` on its part after the fast-forward at ``t_jump`` [s] only: the transient discarded is the
-    part before the jump plus the automatic transient of the part after it (the samples before the jump are on
-    another time base)."""
+def annotate_saturated(ds, t_from: float):
+    """Re-classify ``ds``, a run whose whirl grew from ``t_from`` [s] on (after a fast-forward: the jump; a whirl
+    that grew naturally: the run's start), on its saturated part only: the part before ``t_from`` plus the growth
+    after it are discarded, the growth's end measured by the drift detection
+    (:func:`hsbearing.analysis.poincare.saturation_cut`: at least 30 % of that part, no 60 % cap).
+
+    The saturated orbit is read on at least :data:`SATURATED_REVOLUTIONS` cage revolutions, and only when it is
+    saturated: the whirl amplitude (RMS radius about the orbit centre) of the two halves of what is read agrees to
+    the stop rule's tolerance (``amplitude_rtol`` or ``amplitude_atol_clearance`` of the guide clearance,
+    :data:`hsbearing.analysis.stoprule.STOP_DEFAULTS`).  When fewer revolutions follow the growth's end, the run is
+    classified on its last :data:`SATURATED_REVOLUTIONS` revolutions (the growth's tail included).  A label that
+    says the whirl still moves stands ("undetermined", with its growth rate); a determined label on a part that is
+    too short or not stationary is not accepted yet: "undetermined" of kind "too-few-points" (with the time the
+    missing revolutions take as ``run_longer_s``) or "growing"/"decaying" (with the growth rate between the two
+    halves), the label it would have had kept as ``provisional_label`` in the details."""
     from hsbearing.analysis import annotate
-    from hsbearing.analysis.poincare import transient_cut
+    from hsbearing.analysis.poincare import saturation_cut
 
     t = ds["time"].values
     span = float(t[-1] - t[0])
-    after = ds.isel(time=t >= t_jump)
-    cut = (t_jump - float(t[0])) + transient_cut(after, "auto")
-    out = annotate(ds, transient=min(cut / span, 0.99))
-    out.attrs["transient_rule"] = (f"after the fast-forward at t = {t_jump:.6g} s: the part before it and the automatic "
-                                   "transient of the part after it (max(30 %, end of drift), at most 60 % of that part)")
+    after = ds.isel(time=t >= t_from)
+    cut_after, kept = saturation_cut(after)
+    case = _case_of(ds)
+    kw = {"section": case.simulation.section} if case is not None else {}
+    where = "the fast-forward" if t_from > float(t[0]) else "the start"
+    rev = _revolution_time(ds)
+    short = kept < SATURATED_REVOLUTIONS and math.isfinite(rev)
+    cut = (t_from - float(t[0])) + cut_after
+    if short:  # the last SATURATED_REVOLUTIONS revolutions (or all that follow t_from)
+        cut = max(t_from - float(t[0]), span - SATURATED_REVOLUTIONS * rev)
+    out = annotate(ds, case, transient=min(max(cut, 0.0) / span, 0.99), **kw)
+    out.attrs["transient_rule"] = (f"a whirl that grew from {where} at t = {t_from:.6g} s: the part before it and the "
+                                   "growth after it to its measured end (drift detection, at least 30 % of that "
+                                   f"part), at least {SATURATED_REVOLUTIONS} cage revolutions")
+    if out.attrs.get("classification") == "undetermined":
+        return out
+    det = _details(out)
+    provisional = out.attrs["classification"]
+    if short:
+        need = (SATURATED_REVOLUTIONS - kept) * rev
+        det.update(kind="too-few-points", run_longer_s=need, provisional_label=provisional,
+                   reason=(f"the whirl grew until t = {t_from + cut_after:.6g} s (measured end of its growth); {kept} "
+                           f"of the {SATURATED_REVOLUTIONS} cage revolutions of its saturated orbit so far (on the "
+                           f"last {SATURATED_REVOLUTIONS}, the growth's tail included: {provisional}); run longer "
+                           f"{need:.3g} s"))
+    else:
+        a1, a2, half = _half_amplitudes(out)
+        from hsbearing.analysis.stoprule import STOP_DEFAULTS
+
+        c = out.attrs.get("guide_clearance")
+        tol = max(STOP_DEFAULTS["amplitude_rtol"] * a2,
+                  STOP_DEFAULTS["amplitude_atol_clearance"] * float(c) if _finite(c) else 0.0)
+        if not abs(a2 - a1) > tol:
+            return out
+        rate = math.log(a2 / a1) / half if a1 > 0 and a2 > 0 else float("nan")
+        kind = "growing" if a2 > a1 else "decaying"
+        # the step: as long again as the part read (the approach to saturation is slower than the linear growth
+        # near its end: 1/rate would overshoot), at least the revolutions a reading needs
+        det.update(kind=kind, provisional_label=provisional, growth={"sigma": None, "amplitude_rate": rate},
+                   run_longer_s=max(2.0 * half, SATURATED_REVOLUTIONS * rev if math.isfinite(rev) else 0.0),
+                   reason=(f"the whirl amplitude still changes after the measured end of its growth "
+                           f"(t = {t_from + cut_after:.6g} s): {a1 * 1e6:.4g} -> {a2 * 1e6:.4g} um over the two "
+                           f"halves of the part read (tolerance {tol * 1e6:.3g} um; on it: {provisional}); run longer"))
+    out.attrs.update(classification="undetermined", classification_confidence=0.0,
+                     classification_kind=det["kind"], classification_reason=det["reason"],
+                     classification_details=json.dumps(det))
     return out
+
+
+def _half_amplitudes(ds) -> tuple[float, float, float]:
+    """Whirl amplitude (RMS radius about the common orbit centre) of the two halves of the classified part of
+    ``ds`` (after ``attrs["transient_discarded"]``) [m], and the time between the halves' centres [s]."""
+    import numpy as np
+
+    t = ds["time"].values
+    m = t >= t[0] + float(ds.attrs.get("transient_discarded", 0.0)) * (1 - 1e-12)
+    tt, y, z = t[m], ds["cage_center_y"].values[m], ds["cage_center_z"].values[m]
+    r2 = (y - y.mean()) ** 2 + (z - z.mean()) ** 2
+    h = tt < tt[0] + 0.5 * (tt[-1] - tt[0])
+    return float(np.sqrt(r2[h].mean())), float(np.sqrt(r2[~h].mean())), 0.5 * float(tt[-1] - tt[0])
+
+
+def annotate_after_fast_forward(ds, t_jump: float):
+    """Re-classify ``ds`` on its part after the fast-forward at ``t_jump`` [s] only (:func:`annotate_saturated`;
+    the samples before the jump are on another time base)."""
+    return annotate_saturated(ds, t_jump)
 
 
 def extend_until_determined(ds, max_duration: float, *, continue_fn=None, progress: bool = False,
@@ -386,6 +482,7 @@ def extend_until_determined(ds, max_duration: float, *, continue_fn=None, progre
         reason = why_not
     case = _case_of(ds) if converge and wanted else None
     jump = None
+    growing_from = None
     ff_note = ""
     while not reason:
         label = ds.attrs.get("classification", "undetermined")
@@ -407,6 +504,8 @@ def extend_until_determined(ds, max_duration: float, *, continue_fn=None, progre
             reason = f"steps: {MAX_EXTENSIONS} extensions made, still undetermined"
             break
         step, why = next_step(ds)
+        if growing_from is None and _details(ds).get("kind") == "growing":
+            growing_from = t0  # classified from now on without its growth (annotate_saturated)
         g = (_details(ds).get("growth") or {}).get("sigma")
         rec = {"from": t_end, "to": t_end + step, "why": why, "label_before": label,
                "reason_before": ds.attrs.get("classification_reason", ""),
@@ -424,9 +523,9 @@ def extend_until_determined(ds, max_duration: float, *, continue_fn=None, progre
                 left = max_duration - (t_end - t0)
                 rec["from"] = t_end
                 rec["fast_forward"] = jump["why"]
-                step = max(step, _step_after_fast_forward(plan))
-                rec["why"] = ("growing whirl after the fast-forward: the growth to saturation (ln(1/fraction) + 1.2)/sigma, long "
-                              "enough that the transient rule leaves the saturated orbit")
+                step = max(step, _step_after_fast_forward(plan, ds))
+                rec["why"] = ("growing whirl after the fast-forward: the growth to saturation (ln(1/fraction) + 1.2)/sigma "
+                              f"and {SATURATED_REVOLUTIONS} cage revolutions of the saturated orbit")
             elif ff_why != "determined" and not ff_note:
                 ff_note = ff_why
         step = min(step, left)
@@ -434,7 +533,9 @@ def extend_until_determined(ds, max_duration: float, *, continue_fn=None, progre
         try:
             ds = continue_fn(ds, step)
             if jump is not None:
-                ds = annotate_after_fast_forward(ds, jump["at"])
+                ds = annotate_saturated(ds, jump["at"])
+            elif growing_from is not None:
+                ds = annotate_saturated(ds, growing_from)
         except SolverError as exc:
             if "fast_forward" in rec:
                 ds = unscaled  # the kept run ends with its own (unscaled) state
