@@ -173,17 +173,13 @@ def _extend_budget(args, case, duration) -> float | None:
     """The --max-duration of ``hsbearing run --extend`` [s] (None without --extend); bad input exits 2 before any run."""
     from hsbearing.case import check_output_samples
     from hsbearing.systems.angular_contact.extend import DEFAULT_BUDGET_FACTOR
-    from hsbearing.systems.angular_contact.rating import require_angular_contact
+    from hsbearing.workflows.sweeps.cli import extend_request
 
-    extend, text = bool(getattr(args, "extend", False)), getattr(args, "max_duration", None)
-    if not extend:
-        if text:
-            raise CaseError("--max-duration", "max_duration", "only with --extend")
+    text = extend_request(args, case)
+    if text is None:
         return None
-    require_angular_contact(case, "only runs of the angular-contact model can be extended", source="--extend",
-                            key="system")
     d = duration if duration is not None else float(case.simulation.duration)
-    if not text:
+    if text == "default":
         return DEFAULT_BUDGET_FACTOR * d
     budget = parse_quantity(text, "time", source="--max-duration", key="max_duration")
     if not budget >= d:

@@ -203,7 +203,7 @@ def life_cli(args) -> int:
     return 0
 
 
-def quasi_static_power_loss(case, speed=None, with_state: bool = False, walls: dict | None = None):
+def quasi_static_power_loss(case, speed=None, with_state: bool = False, walls: dict | None = None, bands: bool = True):
     """Power loss by source [W] at the quasi-static state, with the dynamic model's contact functions.
 
     The dynamic model is built from the case (:func:`hsbearing.systems.angular_contact.dynamics.build_model`); its
@@ -224,6 +224,9 @@ def quasi_static_power_loss(case, speed=None, with_state: bool = False, walls: d
     case : Case.  speed : inner-ring speed [rad/s] (None: the case's).
     walls : body temperatures [K] of the film walls, keys ``inner_ring``, ``outer_ring``, ``balls``, ``cage`` (the
         thermal network's, ``hsbearing friction --thermal``); None: every wall at ``lubricant.temperature``.
+    bands : False for a caller that reads only the sources and totals (a quasi-static sweep point): the starvation
+        band, the costly one (0.1-0.25 s), is not computed and no ``*_band_low``/``*_band_high`` key is returned
+        (never half a set of bands).
 
     Returns
     -------
@@ -245,7 +248,11 @@ def quasi_static_power_loss(case, speed=None, with_state: bool = False, walls: d
         out[key] = float(m.info[key])
     _cavity_losses(case, m, out)
     _film_corrections(case, m, out, walls)
-    _starvation_band(case, m, out, aux)
+    if bands:
+        _starvation_band(case, m, out, aux)
+    else:
+        for key in [k for k in out if k.endswith(("_band_low", "_band_high"))]:
+            del out[key]
     w = abs(case.operating.inner_speed - case.operating.outer_speed)
     out["friction_torque"] = out["power_loss"] / w if w > 0 else float("nan")
     if with_state:  # the quasi-static Dataset the state comes from, and the case at that speed

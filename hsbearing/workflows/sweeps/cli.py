@@ -102,24 +102,30 @@ def cli_base_case(args) -> Case:
     return case
 
 
-def sweep_extend_arg(args, case):
-    """``extend=`` of :func:`run_sweep` from ``hsbearing sweep --extend [--max-duration T]`` (opt-in, as for
-    ``hsbearing run``): None, "default" (3 x the duration) or the budget text.  Bad input (``--max-duration`` without
-    ``--extend``, ``--extend`` with another kind than run or a system whose runs cannot be extended) is a CaseError
-    before anything is computed or written; the budget itself is checked by :func:`plan_sweep`."""
+def extend_request(args, case) -> str | None:
+    """What ``--extend [--max-duration T]`` asks of ``hsbearing run`` and ``hsbearing sweep`` (opt-in): None (no
+    extension), "default" (the default budget) or the budget text (checked by the caller).  Bad input
+    (``--max-duration`` without ``--extend``, ``--extend`` of a system whose runs cannot be extended) is a CaseError
+    before anything is computed or written."""
     extend, text = bool(getattr(args, "extend", False)), getattr(args, "max_duration", None)
     if not extend:
         if text:
             raise CaseError("--max-duration", "max_duration", "only with --extend")
         return None
-    if getattr(args, "kind", "run") != "run":
-        raise CaseError("--extend", None, f"only with --kind run (dynamic runs), not --kind {args.kind}")
     from hsbearing import systems
 
     if systems.get(case).extend is None:
         raise CaseError("--extend", "case.system", f"runs of the {case.system!r} system cannot be extended (only the "
                                                    "angular-contact model's)")
     return text if text else "default"
+
+
+def sweep_extend_arg(args, case):
+    """``extend=`` of :func:`run_sweep` from ``hsbearing sweep --extend [--max-duration T]`` (:func:`extend_request`;
+    also an input error with another kind than run); the budget itself is checked by :func:`plan_sweep`."""
+    if getattr(args, "extend", False) and getattr(args, "kind", "run") != "run":
+        raise CaseError("--extend", None, f"only with --kind run (dynamic runs), not --kind {args.kind}")
+    return extend_request(args, case)
 
 
 def cli_main(args) -> int:

@@ -46,7 +46,7 @@ def with_power_and_film(case: Case, ds: xr.Dataset, *, power: dict | None = None
     except (KeyError, ValueError, AttributeError) as exc:
         ds.attrs["film_note"] = f"minimum film not computed: {type(exc).__name__}: {exc}"
     try:
-        p = quasi_static_power_loss(case) if power is None else power
+        p = quasi_static_power_loss(case, bands=False) if power is None else power
     except (CaseError, SolverError, KeyError, ValueError, AttributeError, ArithmeticError) as exc:
         ds.attrs["power_loss_note"] = f"power loss not computed at this state: {type(exc).__name__}: {exc}"
         return ds

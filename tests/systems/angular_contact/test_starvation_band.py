@@ -59,3 +59,14 @@ def test_flooded_edge_and_totals(case):
         np.testing.assert_allclose(ds[f"qs_total_band_{end}"].values, folded.values, rtol=1e-12)
     np.testing.assert_array_equal(ds.qs_ehl_rolling_band_high.values, ds.qs_power_loss_ehl_rolling.values)
     assert ds.qs_ehl_rolling_band_low.attrs["units"] == "W"
+
+
+def test_without_bands_the_sources_are_the_same_and_no_band_is_half_built(case):
+    """quasi_static_power_loss(bands=False), what a quasi-static sweep point reads: every source and total as with
+    the bands, and no ``*_band_*`` key at all (the starvation band is not computed)."""
+    full = rating.quasi_static_power_loss(case)
+    lean = rating.quasi_static_power_loss(case, bands=False)
+    assert not [k for k in lean if "_band_" in k]
+    assert any("_band_" in k for k in full)
+    for k, v in lean.items():
+        assert full[k] == v, k
