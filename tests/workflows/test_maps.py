@@ -174,6 +174,7 @@ def test_run_map_dask_tool_refuses_bad_input_before_starting_a_cluster(tmp_path)
     assert not (tmp_path / "m").exists()
 
 
+@pytest.mark.slow  # a 4 ms point in a subprocess and in-process: two imports and cache loads (234 s at load 6)
 def test_map_point_cost_tool_runs_the_maps_point(tmp_path):
     """tools/investigations/map_point_cost.py times the point the map computes: the same case (planned as the map plans
     it, stop rule "converged"), the same point function, so the same CVODE steps and rhs evaluations as the point
