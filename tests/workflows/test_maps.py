@@ -172,3 +172,30 @@ def test_run_map_dask_tool_refuses_bad_input_before_starting_a_cluster(tmp_path)
                        capture_output=True, text=True, timeout=300)
     assert r.returncode == 2 and "--scheduler is set by this script" in r.stderr
     assert not (tmp_path / "m").exists()
+
+
+@pytest.mark.slow  # a 4 ms point in a subprocess and in-process: two imports and cache loads (234 s at load 6)
+def test_map_point_cost_tool_runs_the_maps_point(tmp_path):
+    """tools/investigations/map_point_cost.py times the point the map computes: the same case (planned as the map plans
+    it, stop rule "converged"), the same point function, so the same CVODE steps and rhs evaluations as the point
+    computed here; its CPU inside CVODE is part of the point's CPU."""
+    import json
+
+    from hsbearing.case import load_case
+    from hsbearing.workflows.sweeps import plan_sweep
+    from hsbearing.workflows.sweeps.points import compute_point
+
+    tool = Path(__file__).resolve().parents[2] / "tools" / "investigations" / "map_point_cost.py"
+    r = subprocess.run([sys.executable, str(tool), "1000", "105", "--duration", "0.004", "--callback-timing"],
+                       capture_output=True, text=True, timeout=900)
+    assert r.returncode == 0, r.stderr[-2000:]
+    got = json.loads(r.stdout.strip().splitlines()[-1])
+    base = load_case("zhang2016").with_overrides(**{"simulation.stop": "converged"})
+    plan = plan_sweep(base, {"lubricant.temperature": ["105degC"], "operating.axial_load": ["1000N"]}, duration=0.004)
+    rec, ds = compute_point(plan.points[0].case, "run", 0.004, None, keep="answer", extend=None)
+    assert (got["steps"], got["rhs"], got["jac"]) == (ds.attrs["solver_steps"], ds.attrs["solver_rhs_evals"],
+                                                      ds.attrs["solver_jac_evals"])
+    assert got["simulated_s"] == pytest.approx(0.004) and got["label"] == rec["summary"]["classification"]
+    assert 0 < got["cpu_integrate_s"] <= got["cpu_point_s"] and got["cpu_outside_s"] >= 0
+    assert 0 <= got["cpu_callback_s"] <= got["cpu_integrate_s"] and got["archive_MB"] > 0
+    assert got["hsbearing"] == str(Path(__import__("hsbearing").__file__).parent)
