@@ -437,7 +437,7 @@ def test_a_grown_whirl_is_read_on_its_saturated_part_only(sigma):
     assert short.attrs["classification"] == "undetermined"
     if det["kind"] == "too-few-points":
         assert det["provisional_label"] == "1 period"
-        assert 0 < det["run_longer_s"] <= 1.25 * SATURATED_REVOLUTIONS * rev  # the missing revolutions + 1/4
+        assert 0 < det["run_longer_s"] <= SATURATED_REVOLUTIONS * rev  # the missing revolutions
         assert next_step(short)[0] >= det["run_longer_s"]
     else:  # the classifier itself saw the growth's tail
         assert det["kind"] == "growing"
