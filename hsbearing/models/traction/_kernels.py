@@ -17,11 +17,15 @@ from hsbearing.compile_cache import check_compile_cache
 from hsbearing.models.traction.eyring import LOG_ASINH, MINOR_NODES, SIGMA_HARD
 from hsbearing.models.traction.tables import (
     ASINH_EXP,
+    COTH,
+    EXP_NEG,
+    LN_TANH_HALF,
     LOG1M_EXP,
     LOG1P,
     LOG_ASINH_LOW,
     ONE_MINUS_EXP_END,
     ONE_MINUS_EXP_OVER_X,
+    SIGMA_TABLE,
     SOFTPLUS_END,
     SOFTPLUS_NEG,
 )
@@ -174,6 +178,15 @@ _LM_TAB, _LM_X0, _LM_IH = LOG1M_EXP.coef, LOG1M_EXP.x0, 1.0 / LOG1M_EXP.h
 # and log1p(A) on [0, 1] for the form near the inlet (E < _E_NEAR)
 _L_TAB, _L_X0, _L_IH = LOG1P.coef, LOG1P.x0, 1.0 / LOG1P.h
 _E_NEAR = 0.5
+# and the pair constants coth sigma_f, ln tanh(sigma_f / 2), e^-sigma_f on [2, 36] (one grid: one cell look-up)
+assert COTH.h == LN_TANH_HALF.h == EXP_NEG.h and COTH.x0 == LN_TANH_HALF.x0 == EXP_NEG.x0
+_CT_TAB, _LT_TAB, _EN_TAB = COTH.coef, LN_TANH_HALF.coef, EXP_NEG.coef
+_SIG_T0, _SIG_IH = SIGMA_TABLE[0], 1.0 / COTH.h
+
+
+@numba.njit(cache=True, nogil=True, inline="always", error_model="numpy")
+def _horner5(coef, i, t):
+    return coef[i, 0] + t * (coef[i, 1] + t * (coef[i, 2] + t * (coef[i, 3] + t * (coef[i, 4] + t * coef[i, 5]))))
 _SP_TAB, _SP_X0, _SP_IH, _SP_END = SOFTPLUS_NEG.coef, SOFTPLUS_NEG.x0, 1.0 / SOFTPLUS_NEG.h, SOFTPLUS_END
 
 
@@ -302,9 +315,19 @@ def eyring_strip_mu_nb(c, S, u):
             continue
         lam, em, k1, k2 = 0.0, 1.0, 1.0, 0.0
         fac = its  # 1 / (ts tanh sigma_f)
-        if sf <= SIGMA_HARD:
+        if sf >= _SIG_T0 and sf <= SIGMA_HARD:  # the pair constants from the tables of sigma_f (one cell)
+            v = (sf - _SIG_T0) * _SIG_IH
+            i = min(int(v), _CT_TAB.shape[0] - 1)
+            t = v - i
+            q = _horner5(_EN_TAB, i, t)
+            em = 1.0 - q  # q <= e^-2: no cancellation
+            k1 = (1.0 + q) * em
+            k2 = q * (1.0 + q)
+            lam = _horner5(_LT_TAB, i, t)
+            fac = its * _horner5(_CT_TAB, i, t)
+        elif sf < _SIG_T0:
             q = math.exp(-sf)
-            em = sf * table_eval_nb(_Q_TAB, _Q_X0, _Q_IH, sf)  # 1 - q (sigma_f <= 36 < 40)
+            em = sf * table_eval_nb(_Q_TAB, _Q_X0, _Q_IH, sf)  # 1 - q, relative accuracy as sigma_f -> 0
             k1 = (1.0 + q) * em
             k2 = q * (1.0 + q)
             lam = math.log(em / (1.0 + q))

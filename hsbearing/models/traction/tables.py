@@ -37,7 +37,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Table", "build", "evaluate", "ASINH_EXP", "ONE_MINUS_EXP_OVER_X", "LOG1P", "SOFTPLUS_NEG", "LOG1M_EXP"]
+__all__ = ["Table", "build", "evaluate", "ASINH_EXP", "ONE_MINUS_EXP_OVER_X", "LOG1P", "SOFTPLUS_NEG", "LOG1M_EXP", "COTH",
+           "LN_TANH_HALF", "EXP_NEG"]
 
 
 @dataclass(frozen=True)
@@ -229,3 +230,53 @@ LOG1M_EXP_END = -1.75
 #: ln tanh(sigma_f/2) - sigma_f - E <= -1.763, the maximum at sigma_f = asinh 1).  The relative error is asserted.
 LOG1M_EXP = build("log(1 - exp(x))", _log1m_exp, _log1m_exp_d1, _log1m_exp_d2, LOG1M_EXP_START, LOG1M_EXP_END,
                   1.0 / 32.0, rtol=5e-13)
+
+
+
+# --- the per-pair constants of the build-up as functions of sigma_f alone (the kernel's pairs, sigma_f in [2, 36]) ---
+
+def _coth(x):
+    return 1.0 / np.tanh(x)
+
+
+def _coth_d1(x):
+    return -1.0 / np.sinh(x) ** 2
+
+
+def _coth_d2(x):
+    return 2.0 * np.cosh(x) / np.sinh(x) ** 3
+
+
+def _ln_tanh_half(x):  # ln tanh(x/2) = ln((1 - e^-x) / (1 + e^-x)), without the rounding of tanh near 1
+    return np.log1p(-np.exp(-x)) - np.log1p(np.exp(-x))
+
+
+def _ln_tanh_half_d1(x):
+    return 1.0 / np.sinh(x)
+
+
+def _ln_tanh_half_d2(x):
+    return -np.cosh(x) / np.sinh(x) ** 2
+
+
+#: sigma_f range of the two tables below (below: libm; above eyring.SIGMA_HARD = 36 both are 1 and 0 to round-off)
+SIGMA_TABLE = (2.0, 36.0)
+#: coth sigma_f on SIGMA_TABLE: E = tau_el / (ts tanh sigma_f).  1088 cells of 1/32; relative error <= 3e-13 asserted.
+COTH = build("coth(x)", _coth, _coth_d1, _coth_d2, SIGMA_TABLE[0], SIGMA_TABLE[1], 1.0 / 32.0, rtol=3e-13)
+#: ln tanh(sigma_f / 2) on SIGMA_TABLE: the build-up's lam.  1088 cells of 1/32; relative error <= 3e-13 asserted.
+LN_TANH_HALF = build("ln(tanh(x/2))", _ln_tanh_half, _ln_tanh_half_d1, _ln_tanh_half_d2, SIGMA_TABLE[0],
+                     SIGMA_TABLE[1], 1.0 / 32.0, rtol=3e-13)
+
+
+
+def _exp_neg(x):
+    return np.exp(-x)
+
+
+def _exp_neg_d1(x):
+    return -np.exp(-x)
+
+
+#: e^-sigma_f on SIGMA_TABLE (q of the build-up; the same grid as COTH and LN_TANH_HALF, so the kernel locates the cell
+#: once for the three).  Relative error <= 3e-13 asserted.
+EXP_NEG = build("exp(-x)", _exp_neg, _exp_neg_d1, _exp_neg, SIGMA_TABLE[0], SIGMA_TABLE[1], 1.0 / 32.0, rtol=3e-13)
