@@ -1,14 +1,17 @@
 """The tabulated strip integrand of the physical traction model (models/traction/tables.py, the kernel's
-``eyring_strip_mu_nb``) against its exact twin (libm exp/asinh/expm1 at every node, ``eyring_strip_mu_exact_nb``)
-and the Python evaluation (``eyring.strip_mu``).  The kernel evaluates the flow stress once per mirror pair of theta
-nodes and divides once per pair (exact rearrangements, rounding only): the bounds below hold for it unchanged.
+``eyring_strip_mu_nb``) against its exact twin (libm exp/asinh/expm1/log1p at every node, ``eyring_strip_mu_exact_nb``)
+and the Python evaluation (``eyring.strip_mu``).  The kernel evaluates the flow stress and the constants of the
+Maxwell-Eyring build-up once per mirror pair of theta nodes (exact rearrangements, rounding only).
 
 Bounds set before measuring, from the tables' own asserted relative errors (asinh(e^x): 1.5e-13, (1-e^-y)/y: 3e-13):
 |dmu| <= 5e-13 |mu| + 1e-16 and |dmu| <= 2e-14 over the whole regime the model visits (slide-roll 1e-4 ... 0.3, both
 signs; rolling speed 1-100 m/s, both signs; 100-5000 N; 27-230 degC with each bundled seed oil's viscosity and
-pressure-viscosity coefficient at that temperature; every strip of the kernel; inner and outer contacts).
+pressure-viscosity coefficient at that temperature; every strip of the kernel; inner and outer contacts).  Kept
+unchanged for the Maxwell-Eyring build-up (its tables log1p 3e-13, log1p(e^-t) 3e-13, log(1 - e^z) 5e-13 enter
+sigma with weights below one; measured on the strip benchmark's samples 2.6e-13).
 Smoothness for BDF: the tables are C2 by construction (checked at every knot), and dmu/dS by central differences
-equals the exact law's over a dense slip scan that moves nodes across every switch point (lz = -18, 17; y = 40).
+equals the exact law's over a dense slip scan that moves nodes across every switch point (lz = -18, 17; the
+build-up's near-inlet form E = 0.5; sigma_f = SIGMA_HARD).
 """
 
 from __future__ import annotations
@@ -62,9 +65,27 @@ def test_tables_meet_their_bounds_against_the_exact_functions():
     assert tb.evaluate(tb.ASINH_EXP, tb.LOG_ASINH_LOW) == pytest.approx(math.exp(tb.LOG_ASINH_LOW), rel=1e-15)
     end = tb.ONE_MINUS_EXP_END
     assert end * tb.evaluate(tb.ONE_MINUS_EXP_OVER_X, end) == pytest.approx(1.0, rel=2e-16)
+    # the Maxwell-Eyring build-up's tables
+    a = np.linspace(0.0, 1.0, 20001)[1:]
+    assert np.max(np.abs(tb.evaluate(tb.LOG1P, a) / np.log1p(a) - 1.0)) <= 3e-13
+    t = np.linspace(0.0, tb.SOFTPLUS_END, 20001)
+    assert np.max(np.abs(tb.evaluate(tb.SOFTPLUS_NEG, t) / np.log1p(np.exp(-t)) - 1.0)) <= 3e-13
+    z = np.linspace(tb.LOG1M_EXP_START, tb.LOG1M_EXP_END, 20001)
+    assert np.max(np.abs(tb.evaluate(tb.LOG1M_EXP, z) / np.log1p(-np.exp(z)) - 1.0)) <= 5e-13
+    assert tb.LOG1P.max_rel_error <= 3e-13 and tb.SOFTPLUS_NEG.max_rel_error <= 3e-13
+    assert tb.LOG1M_EXP.max_rel_error <= 5e-13
+    # log(1 - e^z) is evaluated at z = ln tanh(sigma_f / 2) - sigma_f - E, whose maximum over sigma_f (at asinh 1,
+    # E = 0) lies inside the table
+    sf = np.linspace(1e-3, 40.0, 400001)
+    assert np.max(np.log(np.tanh(sf / 2)) - sf) == pytest.approx(math.log(math.sqrt(2.0) - 1.0) - math.asinh(1.0),
+                                                                 abs=1e-9)
+    assert math.log(math.sqrt(2.0) - 1.0) - math.asinh(1.0) < tb.LOG1M_EXP_END
+    # where the dropped tails begin, they are below 4.3e-18
+    assert math.log1p(math.exp(-tb.SOFTPLUS_END)) < 4.3e-18 and -math.log1p(-math.exp(tb.LOG1M_EXP_START)) < 4.3e-18
 
 
-@pytest.mark.parametrize("tab", [tb.ASINH_EXP, tb.ONE_MINUS_EXP_OVER_X], ids=lambda t: t.name)
+@pytest.mark.parametrize("tab", [tb.ASINH_EXP, tb.ONE_MINUS_EXP_OVER_X, tb.LOG1P, tb.SOFTPLUS_NEG, tb.LOG1M_EXP],
+                         ids=lambda t: t.name)
 def test_tables_are_c2_across_every_knot(tab):
     """Value, first and second derivative of cell i at its right end equal those of cell i+1 at its left end."""
     c = tab.coef
@@ -126,30 +147,43 @@ def test_tabulated_strip_mu_within_its_bound_over_the_whole_regime(oil, contact)
     assert lows > 0
 
 
-def _y_of_nodes(c, s, u):
-    """y = tau_el / tau_f at the nodes (as eyring_strip_mu_nb computes it)."""
+def _nodes(c, s, u):
+    """(E, sigma_f, lz) at the nodes (as eyring_strip_mu_nb computes them: E = tau_el / (ts tanh sigma_f))."""
     Lam, r0, lv, cp, ce = c
     su = math.sqrt(1.0 - u * u)
     sn, cs = ey.MINOR_NODES[:, 0], ey.MINOR_NODES[:, 1]
     pi_ = su * cs
     lz = lv + math.log(s) + cp * pi_
     tv = r0 * np.arcsinh(np.exp(np.minimum(lz, 700.0)))
-    tL = Lam * pi_
-    tf = (tv**-4 + tL**-4) ** -0.25
-    return ce * s * su * (1.0 + sn) / tf, lz
+    g4 = 1.0 + (tv / (Lam * pi_)) ** 4
+    sf = tv * g4 / r0
+    its = g4 ** 1.25 / r0
+    return ce * s * su * (1.0 + sn) * its / np.tanh(sf), sf, lz
 
 
-@pytest.mark.parametrize("oil,T_C,W,U", [("4109", 27.0, 5000.0, 1.0), ("4106", 120.0, 700.0, 20.0),
-                                         ("4050", 230.0, 100.0, 100.0)])
+def _crossings(c, u, S):
+    """Names of the switch points some node crosses between neighbouring slips of S."""
+    crossed, prev = set(), None
+    for s in S:
+        E, sf, lz = _nodes(c, s, u)
+        state = (tuple(lz > tb.LOG_ASINH), tuple(lz < tb.LOG_ASINH_LOW), tuple(E < 0.5), tuple(sf > ey.SIGMA_HARD))
+        if prev is not None:
+            crossed |= {n for n, a, b in zip(("lz=17", "lz=-18", "E=0.5", "sigma_f=36"), prev, state) if a != b}
+        prev = state
+    return crossed
+
+
+SCANS = [("4109", 27.0, 5000.0, 1.0), ("4106", 120.0, 700.0, 20.0), ("4050", 230.0, 100.0, 100.0)]
+
+
+@pytest.mark.parametrize("oil,T_C,W,U", SCANS)
 def test_derivative_in_slip_continuous_and_equal_to_the_exact_law(oil, T_C, W, U):
     """dmu/dS by central differences (step 1e-4 S) over 4000 slips per sign: equal to the exact law's within
-    1e-6 of its scale, so no kink or jump where a node changes branch (the scan crosses lz = -18 or 17 or y = 40 at
-    some node, asserted)."""
+    1e-6 of its scale, so no kink or jump where a node changes branch (each scan crosses a switch point; together
+    lz = 17, the build-up's near-inlet form E = 0.5 and sigma_f = SIGMA_HARD: the test below)."""
     c = _coefficients(oil, T_C, W, U, "inner")
     u = QU[1]
     S = np.geomspace(1e-4, 0.3, 4000)
-    crossed = set()
-    prev = None
     for sgn in (1.0, -1.0):
         d_fast, d_exact = [], []
         for s in S:
@@ -157,14 +191,6 @@ def test_derivative_in_slip_continuous_and_equal_to_the_exact_law(oil, T_C, W, U
             d_fast.append((kt.eyring_strip_mu_nb(c, sgn * (s + h), u) - kt.eyring_strip_mu_nb(c, sgn * (s - h), u)) / (2 * h))
             d_exact.append((kt.eyring_strip_mu_exact_nb(c, sgn * (s + h), u)
                             - kt.eyring_strip_mu_exact_nb(c, sgn * (s - h), u)) / (2 * h))
-            if sgn > 0:
-                y, lz = _y_of_nodes(c, s, u)
-                state = (tuple(lz > tb.LOG_ASINH), tuple(lz < tb.LOG_ASINH_LOW), tuple(y >= tb.ONE_MINUS_EXP_END))
-                if prev is not None:
-                    for name, a, b in zip(("lz=17", "lz=-18", "y=40"), prev, state):
-                        if a != b:
-                            crossed.add(name)
-                prev = state
         d_fast, d_exact = np.array(d_fast), np.array(d_exact)
         scale = np.max(np.abs(d_exact))
         assert np.max(np.abs(d_fast - d_exact)) <= 1e-6 * scale
@@ -172,7 +198,16 @@ def test_derivative_in_slip_continuous_and_equal_to_the_exact_law(oil, T_C, W, U
         jump_fast = np.abs(np.diff(d_fast))
         jump_exact = np.abs(np.diff(d_exact))
         assert np.max(jump_fast - jump_exact) <= 1e-6 * scale
-    assert crossed, "the scan crossed no switch point"
+    assert _crossings(c, u, S), "the scan crossed no switch point"
+
+
+def test_derivative_scans_cross_every_switch_point():
+    """The three scans above together move nodes across every branch point of the tabulated integrand."""
+    crossed = set()
+    for oil, T_C, W, U in SCANS:
+        c = _coefficients(oil, T_C, W, U, "inner")
+        crossed |= _crossings(c, QU[1], np.geomspace(1e-4, 0.3, 4000))
+    assert {"lz=17", "E=0.5", "sigma_f=36"} <= crossed, crossed
 
 
 def test_mirror_node_pairs_are_exact():

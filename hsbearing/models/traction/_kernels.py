@@ -14,8 +14,21 @@ import numba
 import numpy as np
 
 from hsbearing.compile_cache import check_compile_cache
-from hsbearing.models.traction.eyring import LOG_ASINH, MINOR_NODES
-from hsbearing.models.traction.tables import ASINH_EXP, LOG_ASINH_LOW, ONE_MINUS_EXP_END, ONE_MINUS_EXP_OVER_X
+from hsbearing.models.traction.eyring import LOG_ASINH, MINOR_NODES, SIGMA_HARD
+from hsbearing.models.traction.tables import (
+    ASINH_EXP,
+    COTH,
+    EXP_NEG,
+    LN_TANH_HALF,
+    LOG1M_EXP,
+    LOG1P,
+    LOG_ASINH_LOW,
+    ONE_MINUS_EXP_END,
+    ONE_MINUS_EXP_OVER_X,
+    SIGMA_TABLE,
+    SOFTPLUS_END,
+    SOFTPLUS_NEG,
+)
 from hsbearing.models.traction.zhang2016 import (
     LOAD_FACTOR_SHARPNESS,
     NOTCH_SHARPNESS,
@@ -160,6 +173,21 @@ def eyring_coefficients_nb(W, U, Ep, Rx, k, a, eta_in, alpha, tau0, Lam, G, phi_
 _G_TAB, _G_X0, _G_IH = ASINH_EXP.coef, ASINH_EXP.x0, 1.0 / ASINH_EXP.h
 _Q_TAB, _Q_X0, _Q_IH = ONE_MINUS_EXP_OVER_X.coef, ONE_MINUS_EXP_OVER_X.x0, 1.0 / ONE_MINUS_EXP_OVER_X.h
 _G_LO, _Q_END = LOG_ASINH_LOW, ONE_MINUS_EXP_END
+# and the Maxwell-Eyring build-up's log(1 - e^z) on [-40, -1.75] and log1p(e^-t) on [0, 40]
+_LM_TAB, _LM_X0, _LM_IH = LOG1M_EXP.coef, LOG1M_EXP.x0, 1.0 / LOG1M_EXP.h
+# and log1p(A) on [0, 1] for the form near the inlet (E < _E_NEAR)
+_L_TAB, _L_X0, _L_IH = LOG1P.coef, LOG1P.x0, 1.0 / LOG1P.h
+_E_NEAR = 0.5
+# and the pair constants coth sigma_f, ln tanh(sigma_f / 2), e^-sigma_f on [2, 36] (one grid: one cell look-up)
+assert COTH.h == LN_TANH_HALF.h == EXP_NEG.h and COTH.x0 == LN_TANH_HALF.x0 == EXP_NEG.x0
+_CT_TAB, _LT_TAB, _EN_TAB = COTH.coef, LN_TANH_HALF.coef, EXP_NEG.coef
+_SIG_T0, _SIG_IH = SIGMA_TABLE[0], 1.0 / COTH.h
+
+
+@numba.njit(cache=True, nogil=True, inline="always", error_model="numpy")
+def _horner5(coef, i, t):
+    return coef[i, 0] + t * (coef[i, 1] + t * (coef[i, 2] + t * (coef[i, 3] + t * (coef[i, 4] + t * coef[i, 5]))))
+_SP_TAB, _SP_X0, _SP_IH, _SP_END = SOFTPLUS_NEG.coef, SOFTPLUS_NEG.x0, 1.0 / SOFTPLUS_NEG.h, SOFTPLUS_END
 
 
 @numba.njit(cache=True, nogil=True, inline="always", error_model="numpy")
@@ -207,38 +235,62 @@ def _asinh_exp_nb(lz):
 
 
 @numba.njit(cache=True, nogil=True, inline="always", error_model="numpy")
-def _maxwell_nb(tel, itf):
-    """Maxwell build-up tau_f (1 - e^-y), y = tau_el / tau_f, from tau_el and 1/tau_f [Pa]: tau_el q(y) with
-    q(y) = (1 - e^-y)/y from the table ONE_MINUS_EXP_OVER_X below y = 40, tau_f from there on."""
-    y = tel * itf
-    if y < _Q_END:
-        return tel * table_eval_nb(_Q_TAB, _Q_X0, _Q_IH, y)
-    return 1.0 / itf
+def _buildup_nb(E, sf, lam, em, k1, k2):
+    """sigma = tau / ts of :func:`hsbearing.models.traction.eyring.maxwell_eyring_buildup` at one node [-] from
+    E = tau_el / (ts tanh sigma_f), sigma_f, lam = ln tanh(sigma_f / 2), em = 1 - q, k1 = (1 + q) em, k2 = q (1 + q)
+    (above SIGMA_HARD: 0, 1, 1, 0).  Near the inlet (E < 0.5) the form of the exact twin,
+    sigma = log1p(k1 (1 - x) / (em x + k2)), with 1 - x = E (1 - e^-E)/E (ONE_MINUS_EXP_OVER_X) and log1p from the
+    table LOG1P (its argument <= 0.65 there): the form below loses the relative accuracy as E -> 0 (sigma -> 0 as a
+    difference of terms of size ln tanh(sigma_f / 2)).  Elsewhere
+
+        sigma = sigma_f + ln(1 - e^(lam - sigma_f - E)) - ln(1 + e^(lam + sigma_f - E))
+
+    (the same exact solution: ln of its numerator (1 + q) - q (1 - q) x and denominator (1 - q) x + q (1 + q) over
+    (1 + q) and q (1 + q), x = e^-E, q = e^-sigma_f, tanh(sigma_f / 2) = (1 - q) / (1 + q)).  Two tables of one
+    variable, no libm: ln(1 + e^z) = max(z, 0) + log1p(e^-|z|) (SOFTPLUS_NEG; dropped beyond |z| = 40, < 4.3e-18)
+    and ln(1 - e^z) (LOG1M_EXP, z <= -1.763 always; dropped below -40)."""
+    if E < _E_NEAR:
+        xm = E * table_eval_nb(_Q_TAB, _Q_X0, _Q_IH, E)  # 1 - x
+        return table_eval_nb(_L_TAB, _L_X0, _L_IH, k1 * xm / (em * (1.0 - xm) + k2))
+    z2 = sf + lam - E
+    if z2 > 0.0:  # elastic side: sigma = E - lam - ... (sigma_f cancels exactly)
+        sig = E - lam
+        t = z2
+    else:
+        sig = sf
+        t = -z2
+    if t < _SP_END:
+        sig -= table_eval_nb(_SP_TAB, _SP_X0, _SP_IH, t)
+    z1 = lam - sf - E
+    if z1 > _LM_X0:
+        sig += table_eval_nb(_LM_TAB, _LM_X0, _LM_IH, z1)
+    return sig
 
 
 @numba.njit(cache=True, nogil=True, error_model="numpy")
 def eyring_strip_mu_nb(c, S, u):
-    """:func:`eyring_strip_mu_exact_nb` with the node's transcendental functions from tables, node pairs sharing
-    their flow stress, and one division per pair (odd in S) [-].
+    """:func:`eyring_strip_mu_exact_nb` with node pairs sharing their flow stress and its Maxwell-Eyring constants,
+    and every per-node function from a table (odd in S) [-].
 
     Tables: asinh(e^lz) = lz + ln 2 above :data:`LOG_ASINH` (exact to double precision), the table
     ``tables.ASINH_EXP`` on [LOG_ASINH_LOW, LOG_ASINH] (relative error <= 1.5e-13), e^lz below (exact to double
-    precision: asinh z = z (1 - z^2/6 ...)); the Maxwell build-up tau_f (1 - e^-y), y = tau_el / tau_f, as
-    tau_el q(y) with q(y) = (1 - e^-y)/y from ``tables.ONE_MINUS_EXP_OVER_X`` (relative error <= 3e-13, so also
-    in the elastic limit y -> 0), and tau_f itself from y = 40 on (1 - e^-40 rounds to 1).  One libm log per
-    strip (ln|S|).
+    precision: asinh z = z (1 - z^2/6 ...)); the build-up (:func:`_buildup_nb`) from ``tables.SOFTPLUS_NEG`` and
+    ``tables.LOG1M_EXP``; per pair below SIGMA_HARD one libm exp and one log (q = e^-sigma_f,
+    lam = ln tanh(sigma_f / 2) = ln((1 - q) / (1 + q))) and 1 - q = sigma_f (1 - e^-sigma_f)/sigma_f from
+    ``tables.ONE_MINUS_EXP_OVER_X`` (relative accuracy as sigma_f -> 0).  One libm log per strip (ln|S|).
 
     Same arithmetic as the exact twin up to rounding (the reorganisation is exact algebra):
-    - the mirror nodes +-theta_j have the same pressure p/p0 = su cos theta_j, hence the same Eyring stress tau_v
-      and smooth minimum tau_f; only tau_el = ce s su (1 +- sin theta_j) differs: the asinh table, the smooth
-      minimum and its roots are evaluated once per pair (4 times per strip, not 8);
-    - the smooth minimum (tau_v^-4 + tau_L^-4)^(-1/4) as tau_v / g with g = (1 + r^4)^(1/4), r = tau_v / tau_L
-      (r = tau_v (1/(Lambda su)) (1/cos theta_j): one division per strip), so 1/tau_f = g / tau_v is the
-      pair's only division and y = tau_el / tau_f a product;
+    - the mirror nodes +-theta_j have the same pressure p/p0 = su cos theta_j, hence the same Eyring stress tau_v,
+      flow stress tau_f, stress scale ts = tau_0 / kappa and sigma_f = tau_f / ts; only tau_el = ce s su
+      (1 +- sin theta_j) differs: the asinh table, the cap and the constants of the build-up are evaluated once per
+      pair (4 times per strip, not 8);
+    - r = tau_v / tau_L = tau_v (1/(Lambda su)) (1/cos theta_j) (one division per strip), sigma_f =
+      (tau_v / tau_0)(1 + r^4) (eyring.flow_stress: tau_f kappa / tau_0 with kappa = (1 + r^4)^(5/4)), 1 / ts =
+      (1 + r^4)^(5/4) / tau_0: ts the pair's one division; below SIGMA_HARD two more (lam, 1 / tanh sigma_f);
+      above it lam = 0 and tanh sigma_f = 1 (both within 2 e^-36 = 5e-16);
     - den = sum_j w_j p_j/p0 = su sum_j w_j cos theta_j (a constant of the nodes).
-    Every switch point joins its two sides within round-off, and the tables are C2, so mu stays smooth in S
-    (tests/models/test_traction_tables.py: the bound against the exact twin over the whole regime, and
-    finite-difference derivatives across the switch points).
+    Every switch point joins its two sides within round-off (tests/models/test_traction_tables.py: the bound
+    against the exact twin over the whole regime, and finite-difference derivatives across the switch points).
     """
     if S == 0.0:
         return 0.0
@@ -249,22 +301,63 @@ def eyring_strip_mu_nb(c, S, u):
     cel = ce * s * su
     csu = cp * su
     iLs = 1.0 / (Lam * su)  # 1 / tau_L = iLs / cos theta_j
+    ir0 = 1.0 / r0
     num = 0.0
     for j in range(_NPAIR):
         cs, opn, omn, w, ics = _PAIRS[j, 0], _PAIRS[j, 1], _PAIRS[j, 2], _PAIRS[j, 3], _PAIRS[j, 4]
         tv = r0 * _asinh_exp_nb(lS + csu * cs)
         r = tv * (iLs * ics)  # tau_v / tau_L
         r2 = r * r
-        itf = math.sqrt(math.sqrt(1.0 + r2 * r2)) / tv  # 1 / tau_f (smooth minimum, eyring.smooth_min)
-        num += w * (_maxwell_nb(cel * opn, itf) + _maxwell_nb(cel * omn, itf))
+        g4 = 1.0 + r2 * r2
+        its = g4 * math.sqrt(math.sqrt(g4)) * ir0  # kappa / tau_0 = 1 / ts
+        sf = tv * g4 * ir0  # sigma_f
+        if not sf > 0.0:  # an underflowed flow stress (|S| ~ 1e-320)
+            continue
+        lam, em, k1, k2 = 0.0, 1.0, 1.0, 0.0
+        fac = its  # 1 / (ts tanh sigma_f)
+        if sf >= _SIG_T0 and sf <= SIGMA_HARD:  # the pair constants from the tables of sigma_f (one cell)
+            v = (sf - _SIG_T0) * _SIG_IH
+            i = min(int(v), _CT_TAB.shape[0] - 1)
+            t = v - i
+            q = _horner5(_EN_TAB, i, t)
+            em = 1.0 - q  # q <= e^-2: no cancellation
+            k1 = (1.0 + q) * em
+            k2 = q * (1.0 + q)
+            lam = _horner5(_LT_TAB, i, t)
+            fac = its * _horner5(_CT_TAB, i, t)
+        elif sf < _SIG_T0:
+            q = math.exp(-sf)
+            em = sf * table_eval_nb(_Q_TAB, _Q_X0, _Q_IH, sf)  # 1 - q, relative accuracy as sigma_f -> 0
+            k1 = (1.0 + q) * em
+            k2 = q * (1.0 + q)
+            lam = math.log(em / (1.0 + q))
+            fac = its * (1.0 + q * q) / k1
+        e = cel * fac
+        num += w / its * (_buildup_nb(e * opn, sf, lam, em, k1, k2) + _buildup_nb(e * omn, sf, lam, em, k1, k2))
     mu = num / (su * _SUM_WCS)
     return mu if S > 0.0 else -mu
 
 
 @numba.njit(cache=True, nogil=True)
+def _buildup_exact_nb(tel, tf, ts):
+    """Scalar numba twin of :func:`hsbearing.models.traction.eyring.maxwell_eyring_buildup` (same operations)."""
+    sf = tf / ts
+    if not sf > 0.0:
+        return 0.0
+    if sf > SIGMA_HARD:
+        E = tel / ts
+        return ts * (min(E, sf) - math.log1p(math.exp(-abs(E - sf))))
+    em = -math.expm1(-sf)
+    q = math.exp(-sf)
+    E = tel / ts * (1.0 + q * q) / (em * (1.0 + q))
+    xm = -math.expm1(-E)
+    return ts * math.log1p((1.0 + q) * em * xm / (em * math.exp(-E) + q * (1.0 + q)))
+
+
+@numba.njit(cache=True, nogil=True)
 def eyring_strip_mu_exact_nb(c, S, u):
-    """Scalar numba twin of :func:`hsbearing.models.traction.eyring.strip_mu` with libm's exp, asinh and expm1 at every
-    node (odd in S) [-]: the reference of the tabulated :func:`eyring_strip_mu_nb` the kernel calls."""
+    """Scalar numba twin of :func:`hsbearing.models.traction.eyring.strip_mu` with libm's exp, asinh, expm1 and log1p
+    at every node (odd in S) [-]: the reference of the paired :func:`eyring_strip_mu_nb` the kernel calls."""
     if S == 0.0:
         return 0.0
     Lam, r0, lv, cp, ce = c
@@ -283,12 +376,16 @@ def eyring_strip_mu_exact_nb(c, S, u):
         else:
             asn = math.asinh(math.exp(lz))
         tv = r0 * asn
-        lo, hi = min(tv, tL), max(tv, tL)  # smooth minimum (tv^-4 + tL^-4)^(-1/4) (eyring.smooth_min)
-        r = lo / hi
-        r2 = r * r
-        tf = lo / math.sqrt(math.sqrt(1.0 + r2 * r2))
+        lo, hi = min(tv, tL), max(tv, tL)  # flow stress and kappa (eyring.flow_stress)
+        rr = tv / tL
+        r2 = rr * rr
+        g4 = 1.0 + r2 * r2
+        rl = lo / hi
+        rl2 = rl * rl
+        tf = lo / math.sqrt(math.sqrt(1.0 + rl2 * rl2))
+        kap = g4 * math.sqrt(math.sqrt(g4))
         tel = ce * s * su * (1.0 + sn)
-        num += w * (-tf * math.expm1(-tel / tf))
+        num += w * _buildup_exact_nb(tel, tf, r0 / kap)
         den += w * pi_
     mu = num / den
     return mu if S > 0.0 else -mu

@@ -14,11 +14,17 @@ and slide-roll ratio S (shear rate S U / h), a fluid element having travelled x 
     tau_f   = (tau_v^-4 + tau_L^-4)^(-1/4),  tau_L = Lambda p
                                                            flow stress capped by the limiting shear [3], [5]
     tau_el  = G_eff S (x - x_in) / h                       elastic strain carried from the inlet      [1]
-    tau     = tau_f (1 - exp(-tau_el / tau_f))             Maxwell build-up towards the flow stress   [1]
+    tau     = maxwell_eyring_buildup(tau_el, tau_f, tau_f / sigma_f)
+                                                           Maxwell-Eyring build-up towards tau_f      [1]
 
-The last line is the exact solution of the Maxwell equation U dtau/dx / G + tau / eta = S U / h for a
-viscosity constant along the path (Johnson & Tevaarwerk's elastic-viscous film, [1]); with the non-linear
-flow stress tau_f in place of eta S U / h it is the Johnson-Tevaarwerk "elastic then plastic" shape.  So:
+The last line (:func:`maxwell_eyring_buildup`) is the exact solution of Johnson & Tevaarwerk's non-linear
+Maxwell equation (U / G) dtau/dx + gdot_v(tau) = S U / h along the path from the inlet with the point's own flow
+properties (viscosity, Eyring stress, limiting shear) held along it, the viscous rate gdot_v written as the sinh of
+the stress over its local stress scale tau_0 / kappa, kappa = dtau_v/dtau at tau_f (exact for the Eyring flow,
+kappa = 1, and the tangent of the cap).  Until 0.1.0 the law took the linear Maxwell solution
+tau_f (1 - exp(-tau_el / tau_f)) (:func:`closed_form_buildup`, still its limit sigma_f -> 0): that rounds the
+elastic-plastic knee to 63 % of tau_f where tau_el = tau_f and was 12-24 % below the Maxwell-Eyring equation
+integrated along the streamlines at the knee (docs/traction.md, "Maxwell-Eyring build-up of the kernel law").  So:
 
 * small S: tau = min-like of tau_el and the viscous stress point by point; in the high-pressure centre
   the film's elastic compliance sets the slope (the viscous slope with Barus viscosity is orders of
@@ -92,7 +98,8 @@ from hsbearing.models.traction.eyring_limit import LAMBDA_BRACKET
 
 __all__ = [
     "DEFAULT_LAMBDA", "DEFAULT_SHEAR_MODULUS", "N_MINOR", "MINOR_NODES", "EyringParameters", "eyring_stress_default",
-    "central_film", "effective_shear_modulus", "contact_coefficients", "strip_mu", "contact_mu", "ellipse_mu",
+    "central_film", "effective_shear_modulus", "contact_coefficients", "maxwell_eyring_buildup", "closed_form_buildup",
+    "flow_stress", "strip_mu", "contact_mu", "ellipse_mu", "SIGMA_HARD",
 ]
 
 #: Default limiting-shear-stress coefficient [-] (upper end of eyring_limit.LAMBDA_BRACKET, [5] Table 2).
@@ -103,6 +110,9 @@ DEFAULT_SHEAR_MODULUS = 0.3e9
 N_MINOR = 8
 #: ln z above which asinh(z) = ln(2 z) to double precision (1/(4 z^2) < 2^-53 for z > 2.4e7).
 LOG_ASINH = 17.0
+#: sigma_f = tau_f kappa / tau_0 above which e^-sigma_f (< 2.4e-16) is dropped beside 1 in the build-up
+#: (:func:`maxwell_eyring_buildup`: its log-sum-exp form, no overflow of e^sigma_f)
+SIGMA_HARD = 36.0
 
 
 def _minor_nodes(n):
@@ -212,14 +222,84 @@ def _asinh_exp(lz):
     return math.asinh(math.exp(lz))
 
 
-def strip_mu(c, S, u, nodes=None):
+def closed_form_buildup(tel, tf):
+    """Linear Maxwell build-up tau_f (1 - exp(-tau_el / tau_f)) [same unit as the stresses]: the exact solution of
+    (1/G) dtau/dt + tau / eta = gdot at a viscosity constant along the path (Johnson & Tevaarwerk [1]), the law's
+    build-up until 0.1.0 (12-24 % low at the knee against the Maxwell-Eyring equation; kept for that comparison:
+    ``strip_mu(..., buildup="closed")``)."""
+    return -tf * math.expm1(-tel / tf)
+
+
+def flow_stress(tv, tL):
+    """(tau_f, sigma_f) of a point: the flow stress tau_f = (tau_v^-4 + tau_L^-4)^(-1/4) (:func:`smooth_min`) and
+    sigma_f = tau_f kappa / tau_0 in units of the stress scale tau_0 / kappa of :func:`maxwell_eyring_buildup`,
+    kappa = dtau_v/dtau at tau_f = (tau_v / tau_f)^5 = (1 + r^4)^(5/4), r = tau_v / tau_L; so
+    sigma_f = (tau_v / tau_0)(1 + r^4).  Returns (tau_f [unit of tau_v], kappa [-]); the scale is tau_0 / kappa."""
+    lo, hi = min(tv, tL), max(tv, tL)
+    r = tv / tL
+    r2 = r * r
+    g4 = 1.0 + r2 * r2
+    tf = lo / math.sqrt(math.sqrt(1.0 + (lo / hi) ** 4))
+    return tf, g4 * math.sqrt(math.sqrt(g4))
+
+
+def maxwell_eyring_buildup(tel, tf, ts):
+    """Shear stress of a point by the Maxwell-Eyring equation along its path from the inlet, the point's flow
+    properties held along the path [same unit as the stresses] (>= 0; tel, tf, ts > 0).
+
+    tel : the elastic stress G_eff |S| (x - x_in) / h carried from the inlet;  tf : the point's flow stress (the
+    steady stress of its Eyring flow capped by the limiting shear, :func:`flow_stress`);  ts : its stress scale
+    tau_0 / kappa.
+
+    Johnson & Tevaarwerk's non-linear Maxwell fluid ([1]; the equation of tests/helpers/maxwell_eyring_reference.py),
+    steady along a streamline at the rolling speed U, written with the elastic stress as the path variable
+    (dtau_el = G gdot dx / U)::
+
+        dtau/dtau_el = 1 - gdot_v(tau) / gdot,   tau = 0 at tau_el = 0,
+
+    with the viscous rate in the form the Eyring law gives it, gdot_v(tau) / gdot = sinh(tau / ts) / sinh(tau_f / ts):
+    exact for the Eyring flow below the cap (ts = tau_0), and elsewhere the Eyring law with its argument
+    tau_v(tau) / tau_0 linearised at tau_f (slope kappa = dtau_v/dtau = (tau_v / tau_f)^5 of the smooth cap
+    tau_v(tau) = (tau^-4 - tau_L^-4)^(-1/4)), which is where the rate turns the stress over.  With
+    sigma = tau / ts, sigma_f = tau_f / ts and t = e^sigma the equation integrates in closed form (partial
+    fractions of 2 sinh(sigma_f) / ((e^sigma_f - t)(t + e^-sigma_f)))::
+
+        tau_el / (ts tanh sigma_f) = E = ln[(t + q) (1/q - 1) / ((1/q - t)(1 + q))],   q = e^-sigma_f,
+
+    inverted without cancellation as
+
+        sigma = log1p( (1 + q)(1 - q)(1 - x) / ((1 - q) x + q (1 + q)) ),   x = e^-E.
+
+    Limits: sigma_f -> 0 (a Newtonian point) gives tau_f (1 - exp(-tau_el / tau_f)), the linear Maxwell film
+    (:func:`closed_form_buildup`); sigma_f >> 1 gives -ts ln(e^-tau_el/ts + e^-tau_f/ts), a minimum of the
+    elastic and the flow stress rounded over the width ts -- Johnson & Tevaarwerk's elastic-then-plastic film.
+    Above :data:`SIGMA_HARD` that form is used (q < 2.4e-16 dropped beside 1).  Tested against the equation
+    integrated numerically with the law's own flow curve (tests/models/test_traction_eyring.py).
+    """
+    sf = tf / ts
+    if not sf > 0.0:  # an underflowed flow stress (|S| ~ 1e-320): no stress
+        return 0.0
+    if sf > SIGMA_HARD:
+        E = tel / ts
+        return ts * (min(E, sf) - math.log1p(math.exp(-abs(E - sf))))
+    em = -math.expm1(-sf)  # 1 - q
+    q = math.exp(-sf)  # (not 1 - em: q's relative accuracy counts down to e^-36)
+    E = tel / ts * (1.0 + q * q) / (em * (1.0 + q))  # / tanh sigma_f, tanh = (1 - q^2) / (1 + q^2)
+    xm = -math.expm1(-E)  # 1 - x, x = e^-E (each directly: x meets q in the denominator)
+    return ts * math.log1p((1.0 + q) * em * xm / (em * math.exp(-E) + q * (1.0 + q)))
+
+
+def strip_mu(c, S, u, nodes=None, buildup="maxwell"):
     """Traction coefficient of the strip at y = a u of the contact (coefficients ``c``) at slip S [-] (odd in S).
 
-    Integrates tau / p over the strip's width with the theta nodes (``nodes``: default :data:`MINOR_NODES`).
+    Integrates tau / p over the strip's width with the theta nodes (``nodes``: default :data:`MINOR_NODES`), tau by
+    :func:`maxwell_eyring_buildup` (``buildup="closed"``: :func:`closed_form_buildup`, the law before 0.1.0).
     """
     Lam, r0, lv, cp, ce = c
     if S == 0.0:
         return 0.0
+    if buildup not in ("maxwell", "closed"):
+        raise ValueError(f"unknown buildup {buildup!r} (maxwell, closed)")
     nodes = MINOR_NODES if nodes is None else nodes
     s = abs(S)
     su = math.sqrt(max(1.0 - u * u, 0.0))
@@ -229,24 +309,28 @@ def strip_mu(c, S, u, nodes=None):
         pi_ = su * cs  # p / p_0
         tL = Lam * pi_
         tv = r0 * _asinh_exp(lS + cp * pi_)
-        tf = smooth_min(tv, tL)
         tel = ce * s * su * (1.0 + sn)
-        num += w * (-tf * math.expm1(-tel / tf))
+        if buildup == "closed":
+            num += w * closed_form_buildup(tel, smooth_min(tv, tL))
+        else:
+            tf, kap = flow_stress(tv, tL)
+            num += w * maxwell_eyring_buildup(tel, tf, r0 / kap)
         den += w * pi_
     return math.copysign(num / den, S)
 
 
-def contact_mu(S, W, U, Ep, Rx, k, a, eta_in, alpha, tau0, Lambda, G, n_major=5, phi_T=1.0):
+def contact_mu(S, W, U, Ep, Rx, k, a, eta_in, alpha, tau0, Lambda, G, n_major=5, phi_T=1.0, buildup="maxwell"):
     """mu of a whole contact: :func:`strip_mu` summed over the kernel's strips (strip_load_weights) [-].
 
     The Python twin of what the kernel does per contact (one slip S for every strip: no spin).  Vectorised in S.
+    ``buildup="closed"``: the closed-form linear Maxwell build-up of the law before 0.1.0 (comparison only).
     """
     from hsbearing.models.ball_bearing.ball import strip_load_weights
 
     c = contact_coefficients(W, U, Ep, Rx, k, a, eta_in, alpha, tau0, Lambda, G, phi_T)
     qu, qw = strip_load_weights(n_major)
     S = np.asarray(S, dtype=float)
-    out = np.array([sum(w * strip_mu(c, s, u) for u, w in zip(qu, qw)) for s in S.ravel()])
+    out = np.array([sum(w * strip_mu(c, s, u, buildup=buildup) for u, w in zip(qu, qw)) for s in S.ravel()])
     return out.reshape(S.shape)
 
 
@@ -275,7 +359,11 @@ def ellipse_mu(S, W, U, Ep, Rx, k, a, eta_in, alpha, tau0, Lambda, G, n=400):
         tL = Lambda * p
         lo, hi = np.minimum(tv, tL), np.maximum(tv, tL)
         tf = lo / np.sqrt(np.sqrt(1.0 + (lo / hi) ** 4))
+        g4 = 1.0 + (tv / tL) ** 4
         tel = Ge * abs(s) * (X - x_in) * b / h
-        tau = -tf * np.expm1(-tel / tf)
+        tau = _BUILDUP(tel, tf, tau0 / (g4 * np.sqrt(np.sqrt(g4)))).astype(float)
         out.append(math.copysign(float(tau.sum() / p.sum()), s))  # the grid's own load (no edge error at Lambda)
     return np.array(out).reshape(np.shape(S))
+
+
+_BUILDUP = np.frompyfunc(maxwell_eyring_buildup, 3, 1)

@@ -37,7 +37,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Table", "build", "evaluate", "ASINH_EXP", "ONE_MINUS_EXP_OVER_X"]
+__all__ = ["Table", "build", "evaluate", "ASINH_EXP", "ONE_MINUS_EXP_OVER_X", "LOG1P", "SOFTPLUS_NEG", "LOG1M_EXP", "COTH",
+           "LN_TANH_HALF", "EXP_NEG"]
 
 
 @dataclass(frozen=True)
@@ -165,3 +166,117 @@ ONE_MINUS_EXP_END = 40.0
 #: <= 3e-13 asserted (measured 1.8e-13; 2.9e-15 at 1/32).
 ONE_MINUS_EXP_OVER_X = build("(1 - exp(-x)) / x", _q0, _q1, _q2, 0.0, ONE_MINUS_EXP_END, 1.0 / 16.0,
                              rtol=3e-13)
+
+
+# --- the two functions of the Maxwell-Eyring build-up (eyring.maxwell_eyring_buildup) -------------------------------
+
+def _log1p(x):
+    return np.log1p(x)
+
+
+def _log1p_d1(x):
+    return 1.0 / (1.0 + x)
+
+
+def _log1p_d2(x):
+    return -1.0 / (1.0 + x) ** 2
+
+
+#: log1p(A) on [0, 1]: the build-up sigma = log1p(A) of its well-conditioned form near the inlet (elastic stress
+#: E < 0.5, where A <= 0.65), with RELATIVE accuracy down to A -> 0 (the Hermite cell at 0 matches f, f', f''
+#: exactly, so the error is O(A^3)).  128 cells of 1/128; relative error <= 3e-13 asserted.
+LOG1P = build("log1p(x)", _log1p, _log1p_d1, _log1p_d2, 0.0, 1.0, 1.0 / 128.0, rtol=3e-13)
+
+
+def _softplus_neg(t):  # log1p(e^-t), t >= 0
+    return np.log1p(np.exp(-t))
+
+
+def _softplus_neg_d1(t):
+    return -1.0 / (1.0 + np.exp(t))
+
+
+def _softplus_neg_d2(t):
+    e = np.exp(-t)
+    return e / (1.0 + e) ** 2
+
+
+#: t at and beyond which log1p(e^-t) < 4.3e-18 is dropped (the rounded minimum of the build-up's log-sum-exp form)
+SOFTPLUS_END = 40.0
+#: log1p(e^-t) on [0, SOFTPLUS_END]: the rounding of the minimum min(E, sigma_f) - log1p(e^-|E - sigma_f|) of the
+#: build-up where e^-sigma_f is below round-off (eyring.SIGMA_HARD).  960 cells of 1/24; relative error <= 3e-13 asserted.
+SOFTPLUS_NEG = build("log1p(exp(-x))", _softplus_neg, _softplus_neg_d1, _softplus_neg_d2, 0.0, SOFTPLUS_END,
+                     1.0 / 24.0, rtol=3e-13)
+
+
+def _log1m_exp(z):  # log(1 - e^z) = log1p(-e^z), z <= -1.75 (e^z <= 0.17: log1p keeps the relative accuracy)
+    return np.log1p(-np.exp(z))
+
+
+def _log1m_exp_d1(z):  # -e^z / (1 - e^z) = -1 / (e^-z - 1)
+    return -1.0 / np.expm1(-z)
+
+
+def _log1m_exp_d2(z):  # -e^z / (1 - e^z)^2 = -e^-z / (e^-z - 1)^2
+    e = np.expm1(-z)
+    return -(e + 1.0) / (e * e)
+
+
+#: z below which log(1 - e^z) (> -4.3e-18 there) is dropped
+LOG1M_EXP_START = -40.0
+#: the upper end of the table (the argument never exceeds ln(sqrt 2 - 1) - asinh 1 = -1.7627)
+LOG1M_EXP_END = -1.75
+#: log(1 - e^z) on [LOG1M_EXP_START, LOG1M_EXP_END]: the build-up's factor ln(1 - q tanh(sigma_f/2) e^-E) (its argument
+#: ln tanh(sigma_f/2) - sigma_f - E <= -1.763, the maximum at sigma_f = asinh 1).  The relative error is asserted.
+LOG1M_EXP = build("log(1 - exp(x))", _log1m_exp, _log1m_exp_d1, _log1m_exp_d2, LOG1M_EXP_START, LOG1M_EXP_END,
+                  1.0 / 32.0, rtol=5e-13)
+
+
+
+# --- the per-pair constants of the build-up as functions of sigma_f alone (the kernel's pairs, sigma_f in [2, 36]) ---
+
+def _coth(x):
+    return 1.0 / np.tanh(x)
+
+
+def _coth_d1(x):
+    return -1.0 / np.sinh(x) ** 2
+
+
+def _coth_d2(x):
+    return 2.0 * np.cosh(x) / np.sinh(x) ** 3
+
+
+def _ln_tanh_half(x):  # ln tanh(x/2) = ln((1 - e^-x) / (1 + e^-x)), without the rounding of tanh near 1
+    return np.log1p(-np.exp(-x)) - np.log1p(np.exp(-x))
+
+
+def _ln_tanh_half_d1(x):
+    return 1.0 / np.sinh(x)
+
+
+def _ln_tanh_half_d2(x):
+    return -np.cosh(x) / np.sinh(x) ** 2
+
+
+#: sigma_f range of the two tables below (below: libm; above eyring.SIGMA_HARD = 36 both are 1 and 0 to round-off)
+SIGMA_TABLE = (2.0, 36.0)
+#: coth sigma_f on SIGMA_TABLE: E = tau_el / (ts tanh sigma_f).  1088 cells of 1/32; relative error <= 3e-13 asserted.
+COTH = build("coth(x)", _coth, _coth_d1, _coth_d2, SIGMA_TABLE[0], SIGMA_TABLE[1], 1.0 / 32.0, rtol=3e-13)
+#: ln tanh(sigma_f / 2) on SIGMA_TABLE: the build-up's lam.  1088 cells of 1/32; relative error <= 3e-13 asserted.
+LN_TANH_HALF = build("ln(tanh(x/2))", _ln_tanh_half, _ln_tanh_half_d1, _ln_tanh_half_d2, SIGMA_TABLE[0],
+                     SIGMA_TABLE[1], 1.0 / 32.0, rtol=3e-13)
+
+
+
+def _exp_neg(x):
+    return np.exp(-x)
+
+
+def _exp_neg_d1(x):
+    return -np.exp(-x)
+
+
+#: e^-sigma_f on SIGMA_TABLE (q of the build-up; the same grid as COTH and LN_TANH_HALF, so the kernel locates the cell
+#: once for the three).  Relative error <= 3e-13 asserted.
+EXP_NEG = build("exp(-x)", _exp_neg, _exp_neg_d1, _exp_neg, SIGMA_TABLE[0], SIGMA_TABLE[1], 1.0 / 32.0, rtol=3e-13)
