@@ -48,7 +48,7 @@ from __future__ import annotations
 import json
 import math
 
-from hsbearing.analysis.stoprule import NEVER_STOP_KINDS
+from hsbearing.analysis.stoprule import NEVER_STOP_KINDS, STOP_DEFAULTS
 from hsbearing.results import register
 
 __all__ = ["extend_until_determined", "next_step", "plan_fast_forward", "apply_fast_forward",
@@ -335,7 +335,7 @@ def twin_fast_forward(ds, plan: dict, continue_fn, tau: float = FAST_FORWARD_TWI
 #: The classification of a whirl that grew to saturation keeps at least this many complete cage revolutions after
 #: its growth (:func:`annotate_saturated`): the stop rule's ``min_points`` (an aperiodic section needs 40 points to
 #: be read at all; the whirls of the map run at 0.95-1.0 x the cage speed, one transverse section point a loop).
-SATURATED_REVOLUTIONS = 40
+SATURATED_REVOLUTIONS = int(STOP_DEFAULTS["min_points"])
 
 
 def _revolution_time(ds) -> float:
@@ -410,8 +410,6 @@ def annotate_saturated(ds, t_from: float):
                            f"{need:.3g} s"))
     else:
         a1, a2, half = _half_amplitudes(out)
-        from hsbearing.analysis.stoprule import STOP_DEFAULTS
-
         c = out.attrs.get("guide_clearance")
         tol = max(STOP_DEFAULTS["amplitude_rtol"] * a2,
                   STOP_DEFAULTS["amplitude_atol_clearance"] * float(c) if _finite(c) else 0.0)
