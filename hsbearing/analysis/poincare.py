@@ -181,8 +181,11 @@ def drift_end(ds) -> float | None:
     speed are compared with the band of the last quarter of the revolutions (its half-range plus 2 % of the
     radius, 0.1 % of the speed); the run drifts until the last revolution outside that band.
     """
-    t = _time(ds)
-    k = _revolution_index(ds)
+    return _drift_end(ds, _time(ds), _revolution_index(ds))
+
+
+def _drift_end(ds, t: np.ndarray, k: np.ndarray) -> float | None:
+    """:func:`drift_end` with the sample times ``t`` and revolution index ``k`` already computed."""
     nrev = int(k[-1]) if k.size else 0  # complete revolutions 0 .. nrev-1
     if nrev < 8:
         return None
@@ -231,9 +234,9 @@ def saturation_cut(ds) -> tuple[float, int]:
     if t.size < 2:
         return 0.0, 0
     span = float(t[-1] - t[0])
-    t_drift = drift_end(ds)
+    k = _revolution_index(ds)  # once: the drift test and the count below share it
+    t_drift = _drift_end(ds, t, k)
     cut = max(DEFAULT_TRANSIENT_FRACTION * span, t_drift if t_drift is not None else 0.0)
-    k = _revolution_index(ds)
     nrev = int(k[-1])
     first = int(k[int(np.argmax(t >= t[0] + cut * (1 - 1e-12)))]) if t[-1] >= t[0] + cut else nrev
     return float(cut), max(nrev - first - 1, 0)  # the revolution the cut falls in is not complete after it

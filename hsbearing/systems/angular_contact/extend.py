@@ -144,6 +144,10 @@ def extension_wanted(ds) -> tuple[bool, str]:
     return False, f"not extended: undetermined ({kind or 'no kind'}) without an estimate of the time it needs"
 
 
+#: default of :func:`annotate_saturated`'s ``case``: read the case from the run's archive text
+_FROM_ARCHIVE = object()
+
+
 def _case_of(ds):
     """The run's case, read once from its archive text (None when it has none: a synthetic run)."""
     if "case_toml" not in ds.attrs:
@@ -363,7 +367,7 @@ def _step_after_fast_forward(plan: dict, ds=None) -> float:
     return sat + (SATURATED_REVOLUTIONS * rev if math.isfinite(rev) else sat)
 
 
-def annotate_saturated(ds, t_from: float):
+def annotate_saturated(ds, t_from: float, case=_FROM_ARCHIVE):
     """Re-classify ``ds``, a run whose whirl grew from ``t_from`` [s] on (after a fast-forward: the jump; a whirl
     that grew naturally: the run's start), on its saturated part only: the part before ``t_from`` plus the growth
     after it are discarded, the growth's end measured by the drift detection
@@ -377,7 +381,8 @@ def annotate_saturated(ds, t_from: float):
     says the whirl still moves stands ("undetermined", with its growth rate); a determined label on a part that is
     too short or not stationary is not accepted yet: "undetermined" of kind "too-few-points" (with the time the
     missing revolutions take as ``run_longer_s``) or "growing"/"decaying" (with the growth rate between the two
-    halves), the label it would have had kept as ``provisional_label`` in the details."""
+    halves), the label it would have had kept as ``provisional_label`` in the details.  ``case``: the run's case
+    when the caller has it (an extension loop reads it once); by default it is read from the archive's text."""
     from hsbearing.analysis import annotate
     from hsbearing.analysis.poincare import saturation_cut
 
@@ -385,7 +390,8 @@ def annotate_saturated(ds, t_from: float):
     span = float(t[-1] - t[0])
     after = ds.isel(time=t >= t_from)
     cut_after, kept = saturation_cut(after)
-    case = _case_of(ds)
+    if case is _FROM_ARCHIVE:
+        case = _case_of(ds)
     kw = {"section": case.simulation.section} if case is not None else {}
     where = "the fast-forward" if t_from > float(t[0]) else "the start"
     rev = _revolution_time(ds)
@@ -478,7 +484,7 @@ def extend_until_determined(ds, max_duration: float, *, continue_fn=None, progre
     wanted, why_not = extension_wanted(ds)
     if not wanted and ds.attrs.get("classification", "undetermined") == "undetermined":
         reason = why_not
-    case = _case_of(ds) if converge and wanted else None
+    case = _case_of(ds) if wanted else None  # read once: the stop rule and the saturated reading use it
     jump = None
     growing_from = None
     ff_note = ""
@@ -531,9 +537,9 @@ def extend_until_determined(ds, max_duration: float, *, continue_fn=None, progre
         try:
             ds = continue_fn(ds, step)
             if jump is not None:
-                ds = annotate_saturated(ds, jump["at"])
+                ds = annotate_saturated(ds, jump["at"], case)
             elif growing_from is not None:
-                ds = annotate_saturated(ds, growing_from)
+                ds = annotate_saturated(ds, growing_from, case)
         except SolverError as exc:
             if "fast_forward" in rec:
                 ds = unscaled  # the kept run ends with its own (unscaled) state
