@@ -47,7 +47,7 @@ References
     0.065 (s/r1)^0.3 Re^-0.2 (> 1e4).  Used here: the larger of the exact Couette moment and the recalled
     turbulent correlation (Re >= 64), the same upper-leaning max as [3].
 [5] Flow pumped by a free rotating disc (the inner ring's side faces drawing air into the cavity): laminar,
-    von Karman / Cochran, Q = -H(inf) pi R^2 (nu omega)^1/2 per face with H(inf) = -0.886 (checked against our own
+    von Karman / Cochran, Q = -H(inf) pi R^2 (nu omega)^1/2 per face with H(inf) = -0.8845 (checked against our own
     solution of the von Karman equations, tests/models/test_churning.py); turbulent (1/7 power law),
     Q = 0.219 nu R Re^0.8 per face, Re = omega R^2 / nu (Owen J. M., Rogers R. H., *Flow and Heat Transfer in
     Rotating-Disc Systems*, Vol. 1 (1989), the free disc; RECALLED, not read).  The larger of the two.
@@ -81,7 +81,7 @@ DISC_LAMINAR_CM = 3.87
 #: c_M Re^1/5 of a free disc, both faces, turbulent (von Karman 1/7 power law) ([3]; recalled, not read)
 DISC_TURBULENT_CM = 0.146
 #: -H(inf) of von Karman's free disc: axial inflow per face Q = VON_KARMAN_H_INF pi R^2 (nu omega)^1/2 ([5]; Cochran 1934)
-VON_KARMAN_H_INF = 0.886
+VON_KARMAN_H_INF = 0.8845
 #: C_w Re^-0.8 of the turbulent free disc, Q = C_w nu R per face ([5]; recalled, not read)
 FREE_DISC_TURBULENT_CW = 0.219
 #: Bilgen & Boulos regimes ([4], recalled): (upper Re of the regime, coefficient, Re exponent)
@@ -227,7 +227,7 @@ def taylor_couette_gap_moment(d_omega: float, r1: float, r2: float, length: floa
 
 def free_disc_pumped_flow(omega: float, R: float, nu: float) -> float:
     """Volume flow [m^3/s] drawn axially towards and pumped radially out by ONE face of a disc of radius R turning
-    at omega in a fluid at rest ([5]): the larger of von Karman's laminar 0.886 pi R^2 (nu |omega|)^1/2 and the
+    at omega in a fluid at rest ([5]): the larger of von Karman's laminar 0.8845 pi R^2 (nu |omega|)^1/2 and the
     turbulent 0.219 nu R (|omega| R^2 / nu)^0.8."""
     if R <= 0.0 or nu <= 0.0:
         raise ValueError("need R > 0 and nu > 0")
