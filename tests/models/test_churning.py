@@ -23,16 +23,17 @@ from hsbearing.models.ball_bearing.drag import ball_drag_force
 
 def _couette_fd(omega_i, omega_o, r_i, r_o, n=4001):
     """omega(r) from d/dr (r^3 d omega/dr) = 0 by second-order finite differences (flux form)."""
+    from scipy.linalg import solve_banded
+
     r = np.linspace(r_i, r_o, n)
     h = r[1] - r[0]
     rp, rm = (r[1:-1] + 0.5 * h) ** 3, (r[1:-1] - 0.5 * h) ** 3
-    A = np.zeros((n, n))
+    ab = np.zeros((3, n))  # tridiagonal: super, main, sub diagonal
     b = np.zeros(n)
-    A[0, 0] = A[-1, -1] = 1.0
+    ab[1, 0] = ab[1, -1] = 1.0
     b[0], b[-1] = omega_i, omega_o
-    idx = np.arange(1, n - 1)
-    A[idx, idx - 1], A[idx, idx], A[idx, idx + 1] = rm, -(rm + rp), rp
-    return r, np.linalg.solve(A, b)
+    ab[0, 2:], ab[1, 1:-1], ab[2, :-2] = rp, -(rm + rp), rm
+    return r, solve_banded((1, 1), ab, b)
 
 
 @pytest.mark.parametrize("omega_i,omega_o", [(1.0, 0.0), (-1.0, 0.0), (0.0, 1.0), (0.0, -2.0), (3.0, 1.0)])
