@@ -480,7 +480,9 @@ NOTE_QS = ("quasi-static model: (ours) power lost at the quasi-static state with
             "drag in the air-oil mixture (cavity oil fraction above; relative to the mixture carried round at friction.mixture_corotation "
             "of the cage speed), the jet oil's acceleration to the cage pitch speed (m_dot v^2) and the cage-face windage "
             "(rotating-disc estimate; friction.cavity_losses); excludes pocket boundary friction and contact damping "
-            "(zero at that state), the cage whirl, seals (none modelled) and the inner ring's shear of the mixture")
+            "(zero at that state), the cage whirl, seals (none modelled) and the inner ring's shear of the mixture (except with "
+            "friction.mixture_corotation_law = balance: the co-rotation from the mixture's angular-momentum balance, the drag then "
+            "including the ring surface's power on the mixture and the supplied oil's acceleration)")
 NOTE_SKF = ("SKF 2004 model: catalogue frictional moment M = M_rr + M_sl + M_seal + M_drag (SKF General Catalogue 6000 EN, "
              "'Friction'), an empirical fit for the bearing series at mu_EHL (friction.ehl_coefficient, default 0.05: the "
              "catalogue's mineral-oil value, 0.04 for synthetic oils); M_seal = 0 (open "
