@@ -10,7 +10,9 @@ both run; every other 120-mm dimension scaled from the 35-mm reconstruction, ASS
 Nothing is fitted: the balance's inputs (wall laws, throughflow, side openings, C_D) are textbook laws or bands fixed
 before these data were compared; both bearings validate, none calibrates.
 
-Usage: PYTHONPATH=. python tools/investigations/tp2275_mixture_balance.py   (~2 min on the shared machine)
+Usage: PYTHONPATH=. python tools/investigations/tp2275_mixture_balance.py   (~3 min on the shared machine)
+       PYTHONPATH=. python tools/investigations/tp2275_mixture_balance.py --sensitivity   (the balance's sensitivity
+       to the wall law and to an oil recirculation, 35-mm, ~30 s)
 """
 
 from __future__ import annotations
@@ -69,7 +71,43 @@ def report(title, case, measured):
           "walls or not x air throughflow 0 or the inner ring's free-disc pumping x C_D subcritical or crisis)")
 
 
+def sensitivity(case, speeds=(28000, 72000)):
+    """The balance's k and churning (balls + ring surface) at the 35-mm quasi-static inputs with the wall moments and
+    the throughflow scaled: how far the unsourced wall law and an oil recirculation (drops stripped on the outer ring
+    and re-entrained, a throughflow N times the supply) move k, the churning and its speed exponent.  Not a fit:
+    no factor is chosen, the table shows what each would do."""
+    from hsbearing.models.ball_bearing import churning
+    from hsbearing.models.ball_bearing.drag import ball_drag_coefficient
+    from hsbearing.systems.angular_contact.dynamics import build_model
+
+    b, lub = case.bearing, case.lubricant
+    r_m = 0.5 * b.pitch_diameter
+    inputs = []
+    for n in speeds:
+        w = n * math.pi / 30
+        m = build_model(case.with_overrides(**{"operating.inner_speed": f"{w} rad/s"}))
+        inputs.append((w, *(float(m.info[x]) for x in ("drag_orbital_speed", "drag_density", "drag_viscosity"))))
+    print("\n## Sensitivity of the balance (35-mm; wall moments x f via the wall length, throughflow x N)")
+    print("| variant | " + " | ".join(f"k at {n} | churning at {n} [W]" for n in speeds) + " | churning exponent |")
+    print("|" + "---|" * (2 * len(speeds) + 2))
+    for label, f, N in (("nominal", 1, 1), ("walls x 0.5", 0.5, 1), ("walls x 2", 2, 1), ("walls x 4", 4, 1),
+                        ("throughflow x 3", 1, 3), ("throughflow x 10", 1, 10), ("throughflow x 20", 1, 20)):
+        ks, Ps = [], []
+        for w, v, rho, mu in inputs:
+            res = churning.mixture_momentum_balance(
+                Z=b.ball_count, D=b.ball_diameter, r_m=r_m, r_i=0.5 * b.inner_land_diameter,
+                r_o=0.5 * b.outer_land_diameter, length=f * b.width, omega_i=w, omega_o=0.0, omega_c=v / r_m,
+                rho_e=rho, mu_e=mu, drag_coefficient=lambda x, rho=rho, mu=mu: ball_drag_coefficient(rho, mu, x, b.ball_diameter)[0],
+                mass_flow=N * lub.density * lub.oil_flow_rate)
+            ks.append(res["k"])
+            Ps.append(res["P_balls"] + res["P_inner"])
+        print(f"| {label} | " + " | ".join(f"{k:.3f} | {P:.1f}" for k, P in zip(ks, Ps)) + f" | {exponent(list(speeds), Ps):.2f} |")
+
+
 def main():
+    if "--sensitivity" in sys.argv:
+        sensitivity(loads_case(CASE.replace("{fraction}", "")))
+        return
     report("35-mm bore (16 x 7.14 mm, d_m 46.5 mm, 24 deg, 667 N, 760 cm^3/min, oil in 394 K)",
            loads_case(CASE.replace("{fraction}", "")), MEASURED)
     for a in (25.0, 20.0):
