@@ -170,6 +170,11 @@ SCHEMA: dict[str, dict[str, Field]] = {
                                  "carried round; the quasi-static ball drag and cage windage act on the speed relative to "
                                  "it (0: mixture at rest, the drag law's own assumption; the band 0..Couette estimate is "
                                  "reported by hsbearing friction; docs/power_loss.md)", default=0.0, minimum=0.0, maximum=1.0),
+        "mixture_corotation_law": _f("choice", "how the quasi-static drag gets the mixture co-rotation: fixed "
+                                     "(friction.mixture_corotation), or balance (the cavity mixture's steady angular-"
+                                     "momentum balance: ball drag, ring walls, oil throughflow; models/ball_bearing/"
+                                     "churning.py; the supplied oil's acceleration is then inside the drag; "
+                                     "docs/power_loss.md)", default="fixed", choices=("fixed", "balance")),
         "cavity_losses": _f("choice", "jet-oil acceleration (m_dot v^2) and cage-face windage in the quasi-static power loss: "
                             "on, or off (drag only, as before)", default="on", choices=("on", "off")),
         "inlet_heating": _f("choice", "inlet shear heating of the race contacts: the EHL rolling force x phi_T^(0.66/0.67), "

@@ -23,16 +23,17 @@ from hsbearing.models.ball_bearing.drag import ball_drag_force
 
 def _couette_fd(omega_i, omega_o, r_i, r_o, n=4001):
     """omega(r) from d/dr (r^3 d omega/dr) = 0 by second-order finite differences (flux form)."""
+    from scipy.linalg import solve_banded
+
     r = np.linspace(r_i, r_o, n)
     h = r[1] - r[0]
     rp, rm = (r[1:-1] + 0.5 * h) ** 3, (r[1:-1] - 0.5 * h) ** 3
-    A = np.zeros((n, n))
+    ab = np.zeros((3, n))  # tridiagonal: super, main, sub diagonal
     b = np.zeros(n)
-    A[0, 0] = A[-1, -1] = 1.0
+    ab[1, 0] = ab[1, -1] = 1.0
     b[0], b[-1] = omega_i, omega_o
-    idx = np.arange(1, n - 1)
-    A[idx, idx - 1], A[idx, idx], A[idx, idx + 1] = rm, -(rm + rp), rp
-    return r, np.linalg.solve(A, b)
+    ab[0, 2:], ab[1, 1:-1], ab[2, :-2] = rp, -(rm + rp), rm
+    return r, solve_banded((1, 1), ab, b)
 
 
 @pytest.mark.parametrize("omega_i,omega_o", [(1.0, 0.0), (-1.0, 0.0), (0.0, 1.0), (0.0, -2.0), (3.0, 1.0)])
@@ -176,3 +177,171 @@ def test_drag_band_brackets_and_orders():
     assert b["low"] <= b[(0.0, "subcritical")] <= b["high"]
     assert b[(0.92, "subcritical")] < b[(0.0, "subcritical")]
     assert b[(0.0, "crisis")] <= b[(0.0, "subcritical")] * 1.0000001
+
+
+# --- the cavity mixture's angular-momentum balance (mixture_momentum_balance) -------------------------------------
+
+def _von_karman_H_inf():
+    """-H(inf) of the von Karman disc (the axial inflow per face over pi R^2 (nu omega)^1/2), solved here."""
+    def f(z, y):
+        F, Fp, G, Gp, H = y
+        return np.vstack([Fp, F * F - G * G + H * Fp, Gp, 2 * F * G + H * Gp, -2 * F])
+
+    def bc(ya, yb):
+        return np.array([ya[0], ya[2] - 1.0, ya[4], yb[0], yb[2]])
+
+    z = 20.0 * np.linspace(0, 1, 400) ** 2
+    y0 = np.vstack([0.5 * z * np.exp(-z), 0.5 * np.exp(-z) * (1 - z), np.exp(-z), -np.exp(-z), -0.9 * (1 - np.exp(-z))])
+    sol = solve_bvp(f, bc, z, y0, tol=1e-8, max_nodes=200000)
+    assert sol.success
+    return -float(sol.sol(20.0)[4])
+
+
+def test_free_disc_pumped_flow_laminar_against_von_karman_solution():
+    H = _von_karman_H_inf()
+    assert H == pytest.approx(0.8845, abs=2e-4)  # Cochran 1934 (recalled: 0.8845)
+    nu, R = 1e-3, 0.02
+    for omega in (5.0, -5.0):  # Re = omega R^2 / nu = 2: laminar
+        assert churning.free_disc_pumped_flow(omega, R, nu) == pytest.approx(H * math.pi * R * R * math.sqrt(nu * 5.0), rel=3e-3)
+    nu_air = 2.1e-5 / 1.1
+    Re = 7540.0 * 0.0205**2 / nu_air  # ~1.7e5: turbulent branch
+    assert churning.free_disc_pumped_flow(7540.0, 0.0205, nu_air) == pytest.approx(0.219 * nu_air * 0.0205 * Re**0.8, rel=1e-12)
+    assert churning.free_disc_pumped_flow(0.0, 0.0205, nu_air) == 0.0
+
+
+@pytest.mark.parametrize("d_omega", [2.0, -2.0, 0.3])
+@pytest.mark.parametrize("r1,r2", [(0.02, 0.02325), (0.02325, 0.0265), (1.0, 1.5)])
+def test_gap_moment_laminar_against_finite_differences(d_omega, r1, r2):
+    """The laminar moment against mu r^3 d omega/dr x 2 pi L of the finite-difference Couette profile (constant in r)."""
+    mu, L, rho = 0.5, 0.013, 1.0  # Re = |d_omega| r1 s / nu <= 2 < 64: the laminar law alone
+    r, w = _couette_fd(d_omega, 0.0, r1, r2)
+    h = r[1] - r[0]
+    rh = 0.5 * (r[1:] + r[:-1])
+    M_fd = -2 * math.pi * mu * L * rh**3 * np.diff(w) / h
+    assert np.ptp(M_fd) < 1e-6 * abs(M_fd).max()
+    assert churning.taylor_couette_gap_moment(d_omega, r1, r2, L, rho, mu) == pytest.approx(M_fd.mean(), rel=1e-6)
+
+
+def test_gap_moment_turbulent_branch():
+    r1, r2, L, rho, mu = 0.02045, 0.02325, 0.013, 23.0, 2.2e-5
+    s = r2 - r1
+    for dw, (c, e) in ((3000.0, (0.065, -0.2)), (-3000.0, (0.065, -0.2)), (30.0, (1.03, -0.5)),
+                         (3.0, (2.0, -0.6))):
+        Re = rho * abs(dw) * r1 * s / mu
+        M = churning.taylor_couette_gap_moment(dw, r1, r2, L, rho, mu)
+        M_lam = churning.taylor_couette_gap_moment(dw, r1, r2, L, rho, mu, turbulent=False)
+        M_bb = 0.5 * c * (s / r1) ** 0.3 * Re**e * math.pi * rho * dw * dw * r1**4 * L  # Bilgen & Boulos, recalled
+        assert M == pytest.approx(math.copysign(max(M_bb, abs(M_lam)), dw), rel=1e-12)
+        assert abs(M) >= abs(M_lam)
+    assert abs(churning.taylor_couette_gap_moment(3000.0, r1, r2, L, rho, mu)) > 10 * abs(
+        churning.taylor_couette_gap_moment(3000.0, r1, r2, L, rho, mu, turbulent=False))  # Re ~ 8e4: turbulent
+
+
+def _bearing(sign=1.0, **kw):
+    """35-mm TP-2275-like numbers at 72 000 r/min (X 0.024): a complete set of balance inputs."""
+    w_i = sign * 7540.0
+    gam = 0.14
+    args = dict(Z=16, D=7.14e-3, r_m=0.02325, r_i=0.02045, r_o=0.0256, length=0.013, omega_i=w_i, omega_o=0.0,
+                omega_c=0.5 * w_i * (1 - gam), rho_e=23.2, mu_e=2.2e-5, drag_coefficient=lambda w: 0.47,
+                mass_flow=920.0 * 760e-6 / 60.0)
+    args.update(kw)
+    return args
+
+
+def _torques(u, a, side):
+    """The moments on the mixture written out here (no churning call): balls, inner and outer half gap (Couette or
+    Bilgen & Boulos, the larger), side openings (free-disc law), throughflow."""
+    r_m, rho, mu, L = a["r_m"], a["rho_e"], a["mu_e"], a["length"]
+    w_f = u / r_m
+    v = a["omega_c"] * r_m
+    A = 0.25 * math.pi * a["D"] ** 2
+
+    def gap(dw, r1, r2):
+        s = r2 - r1
+        lam = 4 * math.pi * mu * L * r1**2 * r2**2 * abs(dw) / (r2**2 - r1**2)
+        Re = rho * abs(dw) * r1 * s / mu
+        if Re < 64:
+            turb = 0.0
+        elif Re < 500:
+            turb = 2.0 * (s / r1) ** 0.3 * Re**-0.6
+        elif Re < 1e4:
+            turb = 1.03 * (s / r1) ** 0.3 * Re**-0.5
+        else:
+            turb = 0.065 * (s / r1) ** 0.3 * Re**-0.2
+        return math.copysign(max(lam, 0.5 * turb * math.pi * rho * dw * dw * r1**4 * L), dw)
+
+    M = a["Z"] * 0.5 * a["drag_coefficient"](abs(v - u)) * rho * A * (v - u) * abs(v - u) * r_m
+    M += gap(a["omega_i"] - w_f, a["r_i"], r_m) - gap(w_f - a["omega_o"], r_m, a["r_o"])
+    if side:
+        nu = mu / rho
+        lam = 0.5 * 3.87 * rho * math.sqrt(nu) * abs(w_f) ** 1.5 * (a["r_o"] ** 4 - a["r_i"] ** 4)
+        turb = 0.5 * 0.146 * rho * nu**0.2 * abs(w_f) ** 1.8 * (a["r_o"] ** 4.6 - a["r_i"] ** 4.6)
+        M -= math.copysign(max(lam, turb), w_f)
+    return M - a["mass_flow"] * u * r_m
+
+
+@pytest.mark.parametrize("sign", [1.0, -1.0])
+@pytest.mark.parametrize("side,air", [(False, 0.0), (True, 2.9e-3)])
+def test_balance_against_spin_up_integration(sign, side, air):
+    """The mixture spun up in time, I d omega_f/dt = sum of the moments (written out in _torques), from rest and from
+    above the cage speed: both reach the balance's steady swirl, both rotation senses."""
+    a = _bearing(sign, mass_flow=920.0 * 760e-6 / 60.0 + air)
+    bal = churning.mixture_momentum_balance(side_walls=side, **a)
+    I = a["rho_e"] * math.pi * (a["r_o"] ** 2 - a["r_i"] ** 2) * a["length"] * a["r_m"] ** 2
+    for u0 in (0.0, 1.3 * a["omega_c"] * a["r_m"]):
+        sol = solve_ivp(lambda t, y: [_torques(y[0] * a["r_m"], a, side) / I], (0.0, 0.05), [u0 / a["r_m"]],
+                        method="LSODA", rtol=1e-10, atol=1e-10)
+        u_end = sol.y[0, -1] * a["r_m"]
+        assert u_end == pytest.approx(bal["u"], rel=1e-6)
+    assert sign * bal["u"] > 0 and 0.0 < bal["k"] < 1.0
+    # torque balance of the returned moments
+    Ms = [bal[k] for k in ("M_balls", "M_inner", "M_outer", "M_side", "M_flow")]
+    assert abs(sum(Ms)) < 1e-9 * max(abs(x) for x in Ms)
+
+
+@pytest.mark.parametrize("sign", [1.0, -1.0])
+@pytest.mark.parametrize("side", [False, True])
+def test_balance_power_balance(sign, side):
+    """What the balls and the ring surfaces give the mixture = wake + wall layers + pick-up mixing + outflow kinetic
+    energy (the torque balance times omega_f, term by term)."""
+    bal = churning.mixture_momentum_balance(side_walls=side, **_bearing(sign))
+    given = bal["P_balls"] + bal["P_inner"] + bal["P_outer"]
+    spent = bal["P_wake"] + bal["P_walls"] + bal["P_outflow_ke"] + bal["P_mixing"]
+    assert given == pytest.approx(spent, rel=1e-9)
+    assert min(bal["P_balls"], bal["P_wake"], bal["P_walls"], bal["P_inner"]) > 0.0 and bal["P_outer"] == 0.0
+
+
+@pytest.mark.parametrize("w_i,w_o", [(1.0, 0.0), (-1.0, 0.0), (0.0, 1.0), (2.0, -1.0)])
+@pytest.mark.parametrize("radii", ["raceways", "lands"])
+def test_balance_laminar_limit_is_couette(w_i, w_o, radii):
+    """No balls, no throughflow, no side walls, laminar: the swirl at r_m is the circular Couette flow's (finite
+    differences), and with the walls at the raceway contact radii the co-rotation is k_C of couette_corotation_fraction."""
+    gam, r_m = 0.14, 0.02325
+    r_i, r_o = (r_m * (1 - gam), r_m * (1 + gam)) if radii == "raceways" else (0.02045, 0.0256)
+    w_c = 0.5 * (w_i * (1 - gam) + w_o * (1 + gam))
+    bal = churning.mixture_momentum_balance(Z=16, D=7.14e-3, r_m=r_m, r_i=r_i, r_o=r_o, length=0.013, omega_i=w_i,
+                                            omega_o=w_o, omega_c=w_c, rho_e=1.0, mu_e=1.0,
+                                            drag_coefficient=lambda w: 0.47, mass_flow=0.0, balls=False)
+    r, w = _couette_fd(w_i, w_o, r_i, r_o)
+    assert bal["omega_f"] == pytest.approx(np.interp(r_m, r, w), rel=1e-6, abs=1e-9)
+    if radii == "raceways":
+        assert bal["k"] == pytest.approx(churning.couette_corotation_fraction(gam, w_i, w_o), rel=1e-9)
+    # the wall dissipation is the viscous dissipation of the profile, int mu (r d omega/dr)^2 2 pi r L dr
+    rh = 0.5 * (r[1:] + r[:-1])
+    diss = float(np.sum(1.0 * (rh * np.diff(w) / (r[1] - r[0])) ** 2 * 2 * math.pi * rh * 0.013) * (r[1] - r[0]))
+    assert bal["P_walls"] == pytest.approx(diss, rel=1e-5)
+
+
+def test_balance_throughflow_dominates_stationary_walls():
+    """Both rings at rest, balls orbiting: the throughflow holds the mixture back, k -> 0 as it grows; without
+    balls nothing drives the mixture (k = 0 exactly)."""
+    a = _bearing(omega_i=0.0)
+    ks = [churning.mixture_momentum_balance(**{**a, "mass_flow": m}) for m in (0.01, 1.0, 100.0, 1e4)]
+    k = [b["k"] for b in ks]
+    assert all(x > y for x, y in zip(k, k[1:])) and k[-1] < 1e-2
+    assert churning.mixture_momentum_balance(**{**a, "balls": False})["u"] == 0.0
+    assert churning.mixture_momentum_balance(**{**a, "omega_c": 0.0, "balls": False})["u"] == 0.0
+    with pytest.raises(ValueError):
+        churning.mixture_momentum_balance(**{**a, "mass_flow": -1.0})
+    with pytest.raises(ValueError):
+        churning.mixture_momentum_balance(**{**a, "r_i": 0.03})

@@ -12,6 +12,9 @@ acceleration, cage windage"):
   speed it leaves with (momentum conservation, derived below).
 * :func:`rotating_annulus_windage_moment`: the moment of a thin annulus (the cage side faces) turning in a fluid
   at rest (von Karman's rotating disc, [3]); a labelled estimate of the cage windage.
+* :func:`taylor_couette_gap_moment`, :func:`free_disc_pumped_flow`, :func:`mixture_momentum_balance`: the steady
+  angular-momentum balance of the cavity mixture (balls' drag, rotating and stationary ring walls, side openings,
+  throughflow entering without swirl), solved for the mixture's swirl speed u at the pitch circle ([4], [5], [6]).
 
 References
 ----------
@@ -34,6 +37,31 @@ References
     recalled, NOT read here in the book; the laminar one is checked against our own solution of the von
     Karman equations (tests/models/test_churning.py).  The local wall shear behind each law is
     tau ~ r (laminar) and tau ~ r^1.6 (turbulent), so an annulus r1..r2 takes the R^4 resp. R^4.6 difference.
+[4] Torque of the flow between coaxial cylinders, inner r1 turning at omega relative to the outer r2 = r1 + s:
+    laminar, the circular Couette moment M = 4 pi mu L r1^2 r2^2 omega / (r2^2 - r1^2) ([1]); turbulent, Bilgen E.,
+    Boulos R., "Functional dependence of torque coefficient of coaxial cylinders on gap width and Reynolds
+    numbers", ASME J. Fluids Eng. 95 (1973) 122: C_M = 2 M / (pi rho omega^2 r1^4 L) = f(s / r1, Re), Re =
+    omega r1 s / nu, four regimes.  READ here: the abstract only (four regimes in Re and s / r1).  RECALLED, not
+    read (as quoted in the electrical-machine windage literature, e.g. Saari 1998, who writes C_f = C_M / 2):
+    C_M = 10 (s/r1)^0.3 / Re (Re < 64), 2 (s/r1)^0.3 Re^-0.6 (64 .. 500), 1.03 (s/r1)^0.3 Re^-0.5 (500 .. 1e4),
+    0.065 (s/r1)^0.3 Re^-0.2 (> 1e4).  Used here: the larger of the exact Couette moment and the recalled
+    turbulent correlation (Re >= 64), the same upper-leaning max as [3].
+[5] Flow pumped by a free rotating disc (the inner ring's side faces drawing air into the cavity): laminar,
+    von Karman / Cochran, Q = -H(inf) pi R^2 (nu omega)^1/2 per face with H(inf) = -0.8845 (checked against our own
+    solution of the von Karman equations, tests/models/test_churning.py); turbulent (1/7 power law),
+    Q = 0.219 nu R Re^0.8 per face, Re = omega R^2 / nu (Owen J. M., Rogers R. H., *Flow and Heat Transfer in
+    Rotating-Disc Systems*, Vol. 1 (1989), the free disc; RECALLED, not read).  The larger of the two.
+[6] The mixture's angular-momentum balance (derived here; control volume: the annulus between the rings' lands
+    over the bearing width, the mixture lumped into one swirl speed u at the pitch radius r_m, i.e. a core in
+    solid-body rotation between wall layers as in turbulent Taylor-Couette flow): in steady state
+    Z r_m F_b(v - u) + M_in - M_out - M_side - (m_oil + m_air) u r_m = 0, with F_b the ball drag of [2] (force on
+    the mixture), M_in the moment of the inner ring's surface on the core across the half gap r_i .. r_m, M_out that
+    of the core on the outer ring's surface across r_m .. r_o ([4], each with its own relative speed and sign),
+    M_side the two side openings taken as stationary walls under the rotating core ([3], a band: 0 or both) and the
+    throughflow entering without swirl and leaving with u.  Every term is monotone in u, so the root is unique.
+    In the laminar limit without balls, throughflow or side walls the two half-gap Couette moments balance at
+    exactly the Couette angular velocity at r_m ([1]): the Couette solution restricted to r_i .. r_m is the
+    Couette flow between those radii.
 """
 
 from __future__ import annotations
@@ -44,13 +72,20 @@ from hsbearing.models.ball_bearing.drag import ball_drag_coefficient
 
 __all__ = ["couette_mixture_angular_velocity", "couette_corotation_fraction", "ball_drag_power",
            "jet_oil_acceleration_power", "rotating_annulus_windage_moment", "DISC_LAMINAR_CM", "DISC_TURBULENT_CM",
-           "drag_band"]
+           "drag_band", "taylor_couette_gap_moment", "free_disc_pumped_flow", "mixture_momentum_balance",
+           "VON_KARMAN_H_INF", "FREE_DISC_TURBULENT_CW"]
 
 #: c_M Re^1/2 of a free disc, both faces, laminar ([3]: wall shear 0.6159 rho nu^1/2 omega^3/2 r per face, so
 #: M = 2 x 2 pi 0.6159 rho nu^1/2 omega^3/2 R^4 / 4 = 1.935 rho nu^1/2 omega^3/2 R^4 = 3.87 Re^-1/2 (1/2 rho omega^2 R^5))
 DISC_LAMINAR_CM = 3.87
 #: c_M Re^1/5 of a free disc, both faces, turbulent (von Karman 1/7 power law) ([3]; recalled, not read)
 DISC_TURBULENT_CM = 0.146
+#: -H(inf) of von Karman's free disc: axial inflow per face Q = VON_KARMAN_H_INF pi R^2 (nu omega)^1/2 ([5]; Cochran 1934)
+VON_KARMAN_H_INF = 0.8845
+#: C_w Re^-0.8 of the turbulent free disc, Q = C_w nu R per face ([5]; recalled, not read)
+FREE_DISC_TURBULENT_CW = 0.219
+#: Bilgen & Boulos regimes ([4], recalled): (upper Re of the regime, coefficient, Re exponent)
+_BB_REGIMES = ((64.0, 10.0, -1.0), (500.0, 2.0, -0.6), (1.0e4, 1.03, -0.5), (math.inf, 0.065, -0.2))
 
 
 def couette_mixture_angular_velocity(omega_i: float, omega_o: float, r_i: float, r_o: float, r: float) -> float:
@@ -160,3 +195,112 @@ def drag_band(Z: int, v: float, D: float, rho_e: float, mu_e: float, k_max: floa
     vals = list(out.values())
     out["low"], out["high"] = min(vals), max(vals)
     return out
+
+
+def taylor_couette_gap_moment(d_omega: float, r1: float, r2: float, length: float, rho: float, mu: float,
+                              turbulent: bool = True) -> float:
+    """Moment [N m] transmitted across the gap between coaxial cylinders r1 < r2 of axial length ``length`` whose
+    angular velocities differ by d_omega = omega(r1) - omega(r2) [rad/s]; signed like d_omega (the moment the inner
+    surface exerts on the outer) ([4]).
+
+    Laminar: the circular Couette moment 4 pi mu L r1^2 r2^2 d_omega / (r2^2 - r1^2) (exact; [1]).  ``turbulent``:
+    the larger of that and Bilgen & Boulos's correlation M = 1/2 C_M pi rho d_omega^2 r1^4 L at Re = |d_omega| r1 s /
+    nu >= 64 (recalled constants; [4]).
+    """
+    if not 0.0 < r1 < r2:
+        raise ValueError("need 0 < r1 < r2")
+    if d_omega == 0.0:
+        return 0.0
+    w = abs(d_omega)
+    m = 4.0 * math.pi * mu * length * r1 * r1 * r2 * r2 * w / (r2 * r2 - r1 * r1)  # [1]
+    if turbulent and rho > 0.0:
+        s = r2 - r1
+        Re = rho * w * r1 * s / mu
+        if Re >= 64.0:
+            for re_max, c, e in _BB_REGIMES:
+                if Re < re_max:
+                    C_M = c * (s / r1) ** 0.3 * Re**e  # [4]
+                    break
+            m = max(m, 0.5 * C_M * math.pi * rho * w * w * r1**4 * length)
+    return math.copysign(m, d_omega)
+
+
+def free_disc_pumped_flow(omega: float, R: float, nu: float) -> float:
+    """Volume flow [m^3/s] drawn axially towards and pumped radially out by ONE face of a disc of radius R turning
+    at omega in a fluid at rest ([5]): the larger of von Karman's laminar 0.8845 pi R^2 (nu |omega|)^1/2 and the
+    turbulent 0.219 nu R (|omega| R^2 / nu)^0.8."""
+    if R <= 0.0 or nu <= 0.0:
+        raise ValueError("need R > 0 and nu > 0")
+    w = abs(omega)
+    if w == 0.0:
+        return 0.0
+    q_lam = VON_KARMAN_H_INF * math.pi * R * R * math.sqrt(nu * w)
+    q_turb = FREE_DISC_TURBULENT_CW * nu * R * (w * R * R / nu) ** 0.8
+    return max(q_lam, q_turb)
+
+
+def mixture_momentum_balance(*, Z: int, D: float, r_m: float, r_i: float, r_o: float, length: float,
+                             omega_i: float, omega_o: float, omega_c: float, rho_e: float, mu_e: float,
+                             drag_coefficient, mass_flow: float, side_walls: bool = False,
+                             turbulent: bool = True, balls: bool = True) -> dict:
+    """Steady swirl of the cavity mixture from its angular-momentum balance ([6]).
+
+    Walls: the inner ring's surface at r_i turning at omega_i, the outer ring's at r_o turning at omega_o (both of
+    axial length ``length``), each coupled to the mixture's core at r_m through :func:`taylor_couette_gap_moment`;
+    with ``side_walls`` the two side openings r_i .. r_o as stationary walls (:func:`rotating_annulus_windage_moment`
+    at the core's angular velocity).  Balls: Z balls on the pitch circle at the cage speed v = omega_c r_m, drag
+    1/2 C_D rho_e (pi D^2/4) (v - u)|v - u| on the mixture ([2]), C_D = ``drag_coefficient(|v - u|)`` (the drag law's
+    C_D at the relative speed).  Throughflow: ``mass_flow`` [kg/s] entering without swirl and leaving at u.
+
+    Returns dict: u [m/s], k = u / v (nan if the cage stands still), omega_f = u / r_m, the moments on the mixture
+    (``M_balls``, ``M_inner``, ``M_outer``, ``M_side``, ``M_flow``; they sum to ~0), the ball force on the mixture
+    per ball ``F_ball`` (= - the drag on the ball), C_D, and the powers: ``P_balls`` = Z F_ball v (what the balls'
+    drivers spend), ``P_wake`` = Z F_ball (v - u), ``P_inner`` = M_inner omega_i (the inner ring's surface),
+    ``P_outer`` = -M_outer omega_o, the dissipation in the wall layers ``P_walls``, the outflow's kinetic energy
+    ``P_outflow_ke`` = 1/2 m u^2 and the pick-up dissipation ``P_mixing`` = 1/2 m u^2.
+    """
+    from scipy.optimize import brentq
+
+    if mass_flow < 0.0:
+        raise ValueError("mass flow must not be negative")
+    if not 0.0 < r_i < r_m < r_o:
+        raise ValueError("need 0 < r_i < r_m < r_o")
+    A = 0.25 * math.pi * D * D
+    v = omega_c * r_m
+
+    def parts(u):
+        w_f = u / r_m
+        w = v - u
+        C = drag_coefficient(abs(w)) if (balls and w != 0.0) else 0.0
+        F = 0.5 * C * rho_e * A * w * abs(w) if balls else 0.0  # [2], on the mixture
+        M_in = taylor_couette_gap_moment(omega_i - w_f, r_i, r_m, length, rho_e, mu_e, turbulent)
+        M_out = taylor_couette_gap_moment(w_f - omega_o, r_m, r_o, length, rho_e, mu_e, turbulent)
+        M_side = (-rotating_annulus_windage_moment(w_f, r_i, r_o, rho_e, mu_e)) if side_walls else 0.0
+        M_flow = mass_flow * u * r_m
+        return F, C, M_in, M_out, M_side, M_flow
+
+    def f(u):
+        F, _, M_in, M_out, M_side, M_flow = parts(u)
+        return Z * F * r_m + M_in - M_out - M_side - M_flow
+
+    speeds = (0.0, v, omega_i * r_m, omega_o * r_m)
+    lo, hi = min(speeds), max(speeds)
+    if hi == lo:
+        u = lo
+    else:
+        f_lo, f_hi = f(lo), f(hi)
+        if f_lo <= 0.0:
+            u = lo
+        elif f_hi >= 0.0:
+            u = hi
+        else:
+            u = brentq(f, lo, hi, xtol=1e-13 * (hi - lo), rtol=1e-15, maxiter=200)
+    F, C, M_in, M_out, M_side, M_flow = parts(u)
+    w_f = u / r_m
+    P_inner, P_outer = M_in * omega_i, -M_out * omega_o
+    P_walls = M_in * (omega_i - w_f) + M_out * (w_f - omega_o) + M_side * w_f
+    return {"u": u, "k": u / v if v != 0.0 else float("nan"), "omega_f": w_f, "v": v, "C_D": C,
+            "F_ball": F, "M_balls": Z * F * r_m, "M_inner": M_in, "M_outer": -M_out, "M_side": -M_side,
+            "M_flow": -M_flow, "P_balls": Z * F * v, "P_wake": Z * F * (v - u), "P_inner": P_inner,
+            "P_outer": P_outer, "P_walls": P_walls, "P_outflow_ke": 0.5 * mass_flow * u * u,
+            "P_mixing": 0.5 * mass_flow * u * u}

@@ -104,6 +104,15 @@ def friction_command(case, args) -> int:
           f" of the cage speed; C_D held subcritical or with the sphere's crisis): "
           + ", ".join(f"{lo:.4g}..{hi:.4g}" for lo, hi in zip(ds.qs_drag_band_low.values, ds.qs_drag_band_high.values))
           + f"; drag above at co-rotation {', '.join(f'{x:.3g}' for x in k)} (friction.mixture_corotation)")
+    if "mixture_corotation_balance" in ds and np.any(np.isfinite(ds["mixture_corotation_balance"].values)):
+        kb = zip(ds.mixture_corotation_balance.values, ds.mixture_corotation_balance_low.values,
+                 ds.mixture_corotation_balance_high.values)
+        print("mixture momentum balance (friction.mixture_corotation_law = "
+              f"{case.friction.mixture_corotation_law}): co-rotation "
+              + ", ".join(f"{x:.3g} ({lo:.3g}..{hi:.3g})" for x, lo, hi in kb)
+              + "; churning band [W] (balls + ring surface) "
+              + ", ".join(f"{lo:.4g}..{hi:.4g}" for lo, hi in zip(ds.qs_drag_balance_band_low.values,
+                                                                  ds.qs_drag_balance_band_high.values)))
     for key, what in (("land", "guide-land film"), ("pocket", "pocket films")):
         Tm = ds[f"{key}_film_temperature"].values
         if np.any(np.isfinite(Tm)):

@@ -282,7 +282,6 @@ def _cavity_losses(case, m, out):
 
     g = geometry.derive(case)
     fr, lub, op = case.friction, case.lubricant, case.operating
-    k = float(fr.mixture_corotation)
     v = float(m.info["drag_orbital_speed"])
     rho_e, mu_e = float(m.info["drag_density"]), float(m.info["drag_viscosity"])
     gamma = g.D * math.cos(g.alpha0) / g.dm
@@ -293,7 +292,17 @@ def _cavity_losses(case, m, out):
     # the kernel's drag to the law at the pitch-circle speed v carries that (1 + O(1e-3)) into every variant below
     P_0 = churning.ball_drag_power(v, 0.0, g.D, rho_e, C_0)[1] if (m.info["drag"] and rho_e > 0.0 and v != 0.0) else 0.0
     geo = kernel_drag / (g.Z * P_0) if P_0 > 0.0 else 1.0
-    if k > 0.0 and P_0 > 0.0:
+    bal = _mixture_balance(case, m, g, v, rho_e, mu_e) if P_0 > 0.0 else None
+    balance = fr.mixture_corotation_law == "balance" and bal is not None
+    k = bal["nominal"]["k"] if balance else float(fr.mixture_corotation)
+    out["drag_ring_share"] = 0.0
+    if balance:  # the balls at the balance's swirl, plus the rings' surfaces driving the mixture (docs/power_loss.md)
+        b = bal["nominal"]
+        ring = b["P_inner"] + b["P_outer"]
+        out["drag"] = geo * b["P_balls"] + ring
+        out["drag_coefficient"], out["drag_reynolds_number"] = b["C_D"], rho_e * abs(v - b["u"]) * g.D / mu_e
+        out["drag_mixture_share"], out["drag_ring_share"] = geo * (b["P_balls"] - b["P_wake"]), ring
+    elif k > 0.0 and P_0 > 0.0:
         C_D, Re = ball_drag_coefficient(rho_e, mu_e, (1.0 - k) * v, g.D)
         if m.info["options"]["drag_coefficient"] is not None:
             C_D = float(m.info["options"]["drag_coefficient"])
@@ -304,7 +313,8 @@ def _cavity_losses(case, m, out):
         out["drag_mixture_share"] = 0.0
     jet = windage = 0.0
     if fr.cavity_losses == "on":
-        if lub.oil_flow_rate is not None and lub.lubrication in ("oil_jet", "oil_air"):
+        # with the balance the supplied oil's acceleration is inside the drag (its throughflow term): not counted twice
+        if lub.oil_flow_rate is not None and lub.lubrication in ("oil_jet", "oil_air") and not balance:
             jet = churning.jet_oil_acceleration_power(lub.density * lub.oil_flow_rate, v)[0]
         c = case.cage
         w_c = 2.0 * v / g.dm  # the cage's angular velocity at the quasi-static state
@@ -319,6 +329,63 @@ def _cavity_losses(case, m, out):
     out["drag_band_low"], out["drag_band_high"] = geo * band["low"], geo * band["high"]
     out["mixture_corotation_couette"] = k_c
     out["mixture_corotation"] = k
+    nan = float("nan")
+    out["mixture_corotation_balance"] = bal["nominal"]["k"] if bal else nan
+    out["mixture_corotation_balance_low"] = bal["k_low"] if bal else nan
+    out["mixture_corotation_balance_high"] = bal["k_high"] if bal else nan
+    P_bal = [geo * c["P_balls"] + c["P_inner"] + c["P_outer"] for c in bal["corners"]] if bal else [0.0]
+    out["drag_balance_band_low"], out["drag_balance_band_high"] = min(P_bal), max(P_bal)
+
+
+def _mixture_balance(case, m, g, v, rho_e, mu_e):
+    """The cavity mixture's angular-momentum balance at the quasi-static state
+    (:func:`~hsbearing.models.ball_bearing.churning.mixture_momentum_balance`), nominal and over its band.
+
+    Walls: the rings' lands (``bearing.inner_land_diameter`` / ``outer_land_diameter``; absent, the raceway contact
+    radii r_m (1 -+ gamma)) over ``bearing.width`` (absent: the ball diameter).  Throughflow: the supplied oil,
+    density x ``oil_flow_rate`` (jet or air-oil supply; else none), plus air from 0 (nominal) to the flow the inner
+    ring's two side faces pump as free discs (the band's other end, with the side openings as stationary walls).
+    C_D: the drag law's (held subcritical, or the case's ``lubricant``-independent override) at the relative speed;
+    the band also takes the sphere's crisis branch.  Returns None when the cage stands still or there is no mixture.
+    Returns dict nominal (the balance's dict, = corners[0]), corners (the four balances: side openings off/on with
+    the air throughflow 0 / its bound, each with C_D subcritical / crisis), k_low, k_high.
+    """
+    from hsbearing.models.ball_bearing import churning
+    from hsbearing.models.ball_bearing import drag as drag_law
+
+    op, b, lub = case.operating, case.bearing, case.lubricant
+    r_m = 0.5 * g.dm
+    w_c = v / r_m
+    if w_c == 0.0 or rho_e <= 0.0:
+        return None
+    gamma = g.D * math.cos(g.alpha0) / g.dm
+    r_i = 0.5 * b.inner_land_diameter if b.inner_land_diameter else r_m * (1.0 - gamma)
+    r_o = 0.5 * b.outer_land_diameter if b.outer_land_diameter else r_m * (1.0 + gamma)
+    if not r_i < r_m < r_o:
+        r_i, r_o = r_m * (1.0 - gamma), r_m * (1.0 + gamma)
+    length = b.width or g.D
+    m_oil = lub.density * lub.oil_flow_rate if (lub.oil_flow_rate is not None
+                                                and lub.lubrication in ("oil_jet", "oil_air")) else 0.0
+    m_air = 2.0 * drag_law.AIR_DENSITY * churning.free_disc_pumped_flow(op.inner_speed, r_i,
+                                                                        drag_law.AIR_VISCOSITY / drag_law.AIR_DENSITY)
+    C_fixed = m.info["options"]["drag_coefficient"]
+
+    def c_sub(w):
+        return float(C_fixed) if C_fixed is not None else drag_law.ball_drag_coefficient(rho_e, mu_e, w, g.D)[0]
+
+    def c_crisis(w):
+        return float(C_fixed) if C_fixed is not None else drag_law.sphere_drag_coefficient(
+            max(rho_e * w * g.D / mu_e, drag_law.RE_FLOOR))
+
+    common = dict(Z=g.Z, D=g.D, r_m=r_m, r_i=r_i, r_o=r_o, length=length, omega_i=op.inner_speed,
+                  omega_o=op.outer_speed, omega_c=w_c, rho_e=rho_e, mu_e=mu_e)
+    corners = []
+    for side, air in ((False, 0.0), (True, m_air)):
+        for cd in (c_sub, c_crisis):
+            corners.append(churning.mixture_momentum_balance(drag_coefficient=cd, mass_flow=m_oil + air,
+                                                             side_walls=side, **common))
+    ks = [c["k"] for c in corners]
+    return {"nominal": corners[0], "corners": corners, "k_low": min(ks), "k_high": max(ks)}
 
 
 def _film_corrections(case, m, out, walls=None):
@@ -413,7 +480,9 @@ NOTE_QS = ("quasi-static model: (ours) power lost at the quasi-static state with
             "drag in the air-oil mixture (cavity oil fraction above; relative to the mixture carried round at friction.mixture_corotation "
             "of the cage speed), the jet oil's acceleration to the cage pitch speed (m_dot v^2) and the cage-face windage "
             "(rotating-disc estimate; friction.cavity_losses); excludes pocket boundary friction and contact damping "
-            "(zero at that state), the cage whirl, seals (none modelled) and the inner ring's shear of the mixture")
+            "(zero at that state), the cage whirl, seals (none modelled) and the inner ring's shear of the mixture (except with "
+            "friction.mixture_corotation_law = balance: the co-rotation from the mixture's angular-momentum balance, the drag then "
+            "including the ring surface's power on the mixture and the supplied oil's acceleration)")
 NOTE_SKF = ("SKF 2004 model: catalogue frictional moment M = M_rr + M_sl + M_seal + M_drag (SKF General Catalogue 6000 EN, "
              "'Friction'), an empirical fit for the bearing series at mu_EHL (friction.ehl_coefficient, default 0.05: the "
              "catalogue's mineral-oil value, 0.04 for synthetic oils); M_seal = 0 (open "
@@ -488,6 +557,18 @@ def _register_qs_power():
     register("qs_drag_band_high", ("speed",), "W", "highest ball drag over the same choices as qs_drag_band_low")
     register("mixture_corotation", ("speed",), "1", "fraction of the cage orbital speed at which the cavity mixture is "
              "carried round in the quasi-static drag (friction.mixture_corotation)")
+    register("mixture_corotation_balance", ("speed",), "1", "mixture co-rotation from the cavity mixture's "
+             "angular-momentum balance (ball drag, ring walls, oil throughflow; models/ball_bearing/churning.py "
+             "mixture_momentum_balance): the value friction.mixture_corotation_law = balance uses")
+    register("mixture_corotation_balance_low", ("speed",), "1", "lowest co-rotation of the balance over its unsettled "
+             "inputs (side openings as stationary walls or not, air throughflow 0 or the inner ring's free-disc pumping, "
+             "C_D subcritical or with the crisis)")
+    register("mixture_corotation_balance_high", ("speed",), "1", "highest co-rotation of the balance over the same inputs")
+    register("qs_drag_balance_band_low", ("speed",), "W", "lowest churning power of the balance over its unsettled inputs: "
+             "the balls' drag power at the balance's swirl plus the rotating ring surface's power on the mixture")
+    register("qs_drag_balance_band_high", ("speed",), "W", "highest churning power of the balance over the same inputs")
+    register("qs_drag_ring_share", ("speed",), "W", "part of qs_power_loss_drag that the rotating ring's surfaces spend "
+             "on the cavity mixture (friction.mixture_corotation_law = balance; 0 otherwise)")
     register("mixture_corotation_couette", ("speed",), "1", "upper estimate of the mixture co-rotation: circular Couette "
              "flow between the raceways at the pitch radius over the cage's pure-rolling speed")
     for key, what in (("land", "guide-land film (cage on its guiding ring)"), ("pocket", "pocket films (ball in its pocket)")):
@@ -609,7 +690,12 @@ def friction_angular_contact(case, speeds, *, thermal: bool = False):
     data = {f"qs_power_loss_{s}": np.array([r[s] for r in rows]) for s in tuple(SOURCES) + CAVITY_SOURCES}
     for key, name in (("drag_mixture_share", "qs_drag_mixture_share"), ("drag_band_low", "qs_drag_band_low"),
                       ("drag_band_high", "qs_drag_band_high"), ("mixture_corotation", "mixture_corotation"),
-                      ("mixture_corotation_couette", "mixture_corotation_couette")):
+                      ("mixture_corotation_couette", "mixture_corotation_couette"),
+                      ("mixture_corotation_balance", "mixture_corotation_balance"),
+                      ("mixture_corotation_balance_low", "mixture_corotation_balance_low"),
+                      ("mixture_corotation_balance_high", "mixture_corotation_balance_high"),
+                      ("drag_balance_band_low", "qs_drag_balance_band_low"),
+                      ("drag_balance_band_high", "qs_drag_balance_band_high"), ("drag_ring_share", "qs_drag_ring_share")):
         data[name] = np.array([r[key] for r in rows])
     data["qs_power_loss"] = np.array([r["power_loss"] for r in rows])
     if thermal:

@@ -2,6 +2,7 @@
 the mixture co-rotation scales the drag as (1 - k)^2 (C_D at the relative Reynolds number)."""
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -90,3 +91,68 @@ def test_friction_dataset_has_units_and_long_names(default_case):
     for name in ("qs_power_loss_jet_oil_acceleration", "qs_power_loss_cage_windage", "qs_drag_mixture_share",
                  "qs_drag_band_low", "qs_drag_band_high", "mixture_corotation", "mixture_corotation_couette"):
         assert ds[name].attrs.get("units") and ds[name].attrs.get("long_name"), name
+
+
+@pytest.mark.parametrize("speed", ["14000 rpm", "-14000 rpm"])
+def test_balance_option_assembles_the_balance(default_case, speed):
+    """friction.mixture_corotation_law = balance: the drag is the balls' drag power at the balance's swirl plus the
+    ring surface's power, from mixture_momentum_balance called here with the case's inputs by hand; the jet-oil term
+    is inside it (0); the other sources are unchanged; k lies in its band; both rotation senses."""
+    from hsbearing.models.ball_bearing import churning
+
+    case = default_case.with_overrides(**{"operating.inner_speed": speed})
+    bal_case = case.with_overrides(**{"friction.mixture_corotation_law": "balance"})
+    r0, rb = rating.quasi_static_power_loss(case), rating.quasi_static_power_loss(bal_case)
+    m = build_model(case)
+    v, rho, mu = (m.info[x] for x in ("drag_orbital_speed", "drag_density", "drag_viscosity"))
+    b, lub, g = case.bearing, case.lubricant, case.bearing
+    r_m = 0.5 * g.pitch_diameter
+    by_hand = churning.mixture_momentum_balance(
+        Z=b.ball_count, D=b.ball_diameter, r_m=r_m, r_i=0.5 * b.inner_land_diameter, r_o=0.5 * b.outer_land_diameter,
+        length=b.width, omega_i=case.operating.inner_speed, omega_o=0.0, omega_c=v / r_m, rho_e=rho, mu_e=mu,
+        drag_coefficient=lambda w: ball_drag_coefficient(rho, mu, w, b.ball_diameter)[0],
+        mass_flow=lub.density * lub.oil_flow_rate)
+    geo = r0["drag"] / (b.ball_count * churning.ball_drag_power(v, 0.0, b.ball_diameter, rho, r0["drag_coefficient"])[1])
+    assert abs(geo - 1.0) < 1e-2
+    assert rb["mixture_corotation"] == pytest.approx(by_hand["k"], rel=1e-9) and 0.0 < rb["mixture_corotation"] < 1.0
+    assert rb["drag"] == pytest.approx(geo * by_hand["P_balls"] + by_hand["P_inner"], rel=1e-9)
+    assert rb["drag_ring_share"] == pytest.approx(by_hand["P_inner"], rel=1e-9)
+    assert rb["jet_oil_acceleration"] == 0.0 and rb["drag"] < r0["drag"]
+    assert rb["mixture_corotation_balance_low"] <= rb["mixture_corotation"] <= rb["mixture_corotation_balance_high"]
+    assert rb["drag_balance_band_low"] <= rb["drag"] * (1 + 1e-12) <= rb["drag_balance_band_high"] * (1 + 1e-12)
+    for s in ("race_traction", "ehl_rolling", "guide_land", "pocket_film"):
+        assert rb[s] == r0[s]
+    assert rb["power_loss"] == pytest.approx(r0["power_loss"] - r0["drag"] - r0["jet_oil_acceleration"] - r0["cage_windage"]
+                                             + rb["drag"] + rb["cage_windage"], rel=1e-12)
+    # the fixed-k default reports the balance's numbers without using them
+    assert r0["mixture_corotation"] == 0.0 and r0["mixture_corotation_balance"] == pytest.approx(by_hand["k"], rel=1e-9)
+
+
+def test_balance_outputs_in_the_friction_dataset(default_case):
+    ds = rating.friction_angular_contact(default_case.with_overrides(**{"friction.mixture_corotation_law": "balance"}),
+                                         np.array([14000.0]) * math.pi / 30)
+    for name in ("mixture_corotation_balance", "mixture_corotation_balance_low", "mixture_corotation_balance_high",
+                 "qs_drag_balance_band_low", "qs_drag_balance_band_high", "qs_drag_ring_share"):
+        assert ds[name].attrs.get("units") and ds[name].attrs.get("long_name"), name
+    assert float(ds.mixture_corotation[0]) == float(ds.mixture_corotation_balance[0])
+
+
+def test_bad_corotation_law_exits_2_naming_file_and_key(tmp_path, capsys):
+    from hsbearing import cli
+    from hsbearing.case import CaseError
+
+    out = tmp_path / "x.nc"
+    assert cli.main(["friction", "zhang2016", "--speeds", "14000rpm", "--set", "friction.mixture_corotation_law=dynamic",
+                     "-o", str(out)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert "friction.mixture_corotation_law" in err and len(err.splitlines()) == 1
+    assert not out.exists()
+    from hsbearing.case.load import case_path
+
+    text = Path(case_path("zhang2016")).read_text()
+    assert "[friction]" in text
+    bad = tmp_path / "bad.toml"
+    bad.write_text(text.replace("[friction]", '[friction]\nmixture_corotation_law = "sometimes"', 1))
+    with pytest.raises(CaseError) as e:
+        load_case(bad)
+    assert "bad.toml" in str(e.value) and "friction.mixture_corotation_law" in str(e.value)
