@@ -2,13 +2,15 @@
 
 Usage (with the checkout first on the path)::
 
-    PYTHONPATH=<checkout> .venv/bin/python benchmarks/bench_eyring_rhs_strips.py [--rounds 5]
+    PYTHONPATH=<checkout> .venv/bin/python benchmarks/bench_eyring_rhs_strips.py [--rounds 5] [--own-run 0.02]
 
 1. Captures every call of the law in ``kernel.rhs_kernel`` (case zhang2016, ``lubricant.traction_law = eyring``) at
    the initial state and the 51 regression states of tests/data/regression/kernel_rhs_states.npz: the per-contact
    coefficients (``traction_coefficients_nb``: its arguments) and every strip (``traction_mu_nb``: coefficients,
    slip, strip node).  The capture runs the kernel as plain Python (``NUMBA_DISABLE_JIT=1``, a subprocess) with the
-   two calls wrapped; the arithmetic is the same.
+   two calls wrapped; the arithmetic is the same.  ``--own-run SPAN``: instead, 51 states of a run of the physical
+   law itself (the default case with ``traction_law = eyring`` over SPAN seconds, CVODE as in
+   tools/generators/make_kernel_rhs_states.py, every 80th of 4081 output states), whose slips are its own.
 2. Prints the calls per rhs and, over the captured strips, which branches of ``_kernels.eyring_strip_mu_nb`` the
    mirror node pairs take: sigma_f below the pair-constant tables (< 2, libm), in them (2 ... SIGMA_HARD) or above;
    the pairs taken whole by the plastic shortcut, by pair index; and the classes of the nodes of the other pairs
@@ -35,7 +37,21 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 
 
-def capture(out: str) -> None:
+def own_run_states(span: float) -> np.ndarray:
+    """51 states of a run of the default case with the physical law (compiled), every 80th of 4081."""
+    import hsbearing
+    from hsbearing.solvers.cvode import integrate
+    from hsbearing.systems.angular_contact.dynamics import build_model
+
+    case = hsbearing.load_case("zhang2016", **{"lubricant.traction_law": "eyring"})
+    m = build_model(case)
+    sim = case.simulation
+    res = integrate(m.rhs, m.y0, np.linspace(0.0, span, 4081), rtol=float(sim.rtol),
+                    atol=m.layout.atol(float(sim.atol)), jacfn=m.jac)
+    return np.asarray(res.y)[80::80]
+
+
+def capture(out: str, states: str | None) -> None:
     """Run in a subprocess with NUMBA_DISABLE_JIT=1: record the law's calls of the rhs over the states."""
     import hsbearing
     from hsbearing.models.ball_bearing import kernel as K
@@ -56,7 +72,8 @@ def capture(out: str) -> None:
 
     K.traction_mu_nb, K.traction_coefficients_nb = mu, co
     m = build_model(hsbearing.load_case("zhang2016", **{"lubricant.traction_law": "eyring"}))
-    Y = np.concatenate([m.y0[None, :], np.load(ROOT / "tests/data/regression/kernel_rhs_states.npz")["y_default"]])
+    Y = np.load(states)["y"] if states else np.load(ROOT / "tests/data/regression/kernel_rhs_states.npz")["y_default"]
+    Y = np.concatenate([m.y0[None, :], Y])
     P = m.P.view(np.recarray)  # attribute access to the record's fields in plain Python
     per_rhs = []
     for y in Y:
@@ -109,15 +126,24 @@ def classify(C, R):
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--rounds", type=int, default=5)
+    ap.add_argument("--own-run", type=float, default=None, metavar="SPAN",
+                    help="states of a run of the physical law over SPAN s instead of the regression states")
     ap.add_argument("--capture", default=None, help=argparse.SUPPRESS)
+    ap.add_argument("--states", default=None, help=argparse.SUPPRESS)
     a = ap.parse_args(argv)
     if a.capture:
-        capture(a.capture)
+        capture(a.capture, a.states)
         return 0
     with tempfile.TemporaryDirectory() as tmp:
         out = os.path.join(tmp, "strips.npz")
-        env = dict(os.environ, NUMBA_DISABLE_JIT="1")
-        subprocess.run([sys.executable, __file__, "--capture", out], check=True, env=env)
+        cmd = [sys.executable, __file__, "--capture", out]
+        if a.own_run:
+            np.savez(os.path.join(tmp, "states.npz"), y=own_run_states(a.own_run))
+            cmd += ["--states", os.path.join(tmp, "states.npz")]
+            print(f"states: 51 of a {a.own_run:g} s run of the physical law (and its y0)")
+        else:
+            print("states: y0 and the 51 regression states of bench_rhs_cost.py (a run of the case's own law)")
+        subprocess.run(cmd, check=True, env=dict(os.environ, NUMBA_DISABLE_JIT="1"))
         d = np.load(out)
         C, R, per_rhs = d["contacts"], d["strips"], d["per_rhs"]
     import numba
