@@ -5,6 +5,7 @@ Usage (run it in each checkout to compare, in one sitting)::
     .venv/bin/python benchmarks/bench_rhs_cost.py [--runs 200] [--calls 100] [--no-split] [--no-states] [--law eyring]
     .venv/bin/python benchmarks/bench_rhs_cost.py --ratio eyring     # the physical traction law's cost ratio
     .venv/bin/python benchmarks/bench_rhs_cost.py --ratio eyring --rounds 3   # best of 3 alternated passes
+    .venv/bin/python benchmarks/bench_rhs_cost.py --ratio eyring --own-run 0.02  # at states of an eyring run
 
 Prints, for the default case (zhang2016): the bare ``kernel.rhs_kernel`` and the Python wrapper
 ``DynamicModel.rhs`` at the initial state, microseconds per call as the best of ``--runs`` runs of ``--calls``
@@ -51,6 +52,9 @@ def main(argv=None) -> int:
                          "alternated state by state, CPU time (process_time) best-of: per state and median")
     ap.add_argument("--rounds", type=int, default=1,
                     help="with --ratio: passes over the states, each state's best kept per law (default 1)")
+    ap.add_argument("--own-run", type=float, default=None, metavar="SPAN",
+                    help="with --ratio: the states of a run of law LAW itself over SPAN s (every 80th of 4081, after "
+                         "y0) instead of the regression states (a run of the case's own law)")
     ap.add_argument("--law", default=None,
                     help="lubricant.traction_law of the case (e.g. eyring: the physical model); default: the case's")
     a = ap.parse_args(argv)
@@ -120,7 +124,16 @@ def _ratio(a, K, build_model, hsbearing) -> int:
     ms = {"own": build_model(hsbearing.load_case("zhang2016")),
           a.ratio: build_model(hsbearing.load_case("zhang2016", **{"lubricant.traction_law": a.ratio}))}
     print(f"traction laws: the case's own vs {a.ratio}")
-    Y = np.concatenate([ms["own"].y0[None, :], np.load(STATES)["y_default"]])
+    if a.own_run:
+        from hsbearing.solvers.cvode import integrate
+
+        m, sim = ms[a.ratio], hsbearing.load_case("zhang2016").simulation
+        res = integrate(m.rhs, m.y0, np.linspace(0.0, a.own_run, 4081), rtol=float(sim.rtol),
+                        atol=m.layout.atol(float(sim.atol)), jacfn=m.jac)
+        Y = np.concatenate([ms["own"].y0[None, :], np.asarray(res.y)[80::80]])
+        print(f"states: y0 and 51 states of a {a.own_run:g} s run of {a.ratio}")
+    else:
+        Y = np.concatenate([ms["own"].y0[None, :], np.load(STATES)["y_default"]])
     runs, calls = max(a.runs // 10, 3), max(a.calls // 2, 10)
     best = np.full((len(Y), 2), np.inf)
     for _ in range(max(a.rounds, 1)):  # passes over all states: a busy spell of the machine hits one pass, not all
@@ -134,7 +147,7 @@ def _ratio(a, K, build_model, hsbearing) -> int:
     r = best
     q = r[:, 1] / r[:, 0]
     print(f"rounds {max(a.rounds, 1)}; y0: own law {r[0, 0]:.2f} us, {a.ratio} {r[0, 1]:.2f} us CPU per call: ratio {q[0]:.2f}")
-    print(f"{len(Y) - 1} regression states: own law median {np.median(r[1:, 0]):.1f} us, {a.ratio} median "
+    print(f"{len(Y) - 1} {'run' if a.own_run else 'regression'} states: own law median {np.median(r[1:, 0]):.1f} us, {a.ratio} median "
           f"{np.median(r[1:, 1]):.1f} us; ratio per state median {np.median(q[1:]):.2f} (min {q[1:].min():.2f}, "
           f"max {q[1:].max():.2f}); ratio of the minima {r[1:, 1].min() / r[1:, 0].min():.2f}")
     print("load average at end: " + " ".join(f"{x:.2f}" for x in os.getloadavg()))

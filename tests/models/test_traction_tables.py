@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import math
 
+import numba
 import numpy as np
 import pytest
 
@@ -257,3 +258,55 @@ def test_kernel_dispatch_uses_the_tabulated_twin():
     c = _coefficients("4109", 80.0, 700.0, 16.0, "inner")
     for s in (1e-4, -3e-3, 0.2):
         assert kt.traction_mu_nb(kt.EYRING_LAW_ID, c, s, QU[0]) == kt.eyring_strip_mu_nb(c, s, QU[0])
+
+
+def _plastic_pairs(c, s, u):
+    """Per mirror pair: does eyring_strip_mu_nb take its plastic shortcut (the same test in numpy)?"""
+    Lam, r0, lv, cp, ce = c
+    su = math.sqrt(1.0 - u * u)
+    P = kt._PAIRS
+    tv = r0 * np.arcsinh(np.exp(np.minimum(lv + math.log(s) + cp * su * P[:, 0], 700.0)))
+    g4 = 1.0 + (tv / (Lam * su * P[:, 0])) ** 4
+    sf = tv * g4 / r0
+    its = g4 * np.sqrt(np.sqrt(g4)) / r0
+    return ce * s * su * its * kt._PAIR_MIN > (sf + kt._PLASTIC_MARGIN) * kt._PLASTIC_SAFETY * np.minimum(sf, 1.0)
+
+
+def test_plastic_pair_shortcut_is_bit_identical_to_the_full_pair(monkeypatch):
+    """A mirror pair whose two nodes both lie beyond the build-up (E - sigma_f > 41 for the smaller E, bounded from
+    below before the pair constants by coth sigma_f >= 1 / min(sigma_f, 1)) contributes sigma_f per node without its
+    pair constants (exp, log, tables): the full pair gives sigma_f to the last bit there (both corrections of
+    _buildup_nb skipped), so the function must not change at all.  Checked bit for bit against the same kernel
+    compiled without the shortcut, over the regime grid of the bound test above (every oil, 27-230 degC, 100-5000 N,
+    +-1-100 m/s, every strip, slide-roll +-1e-4 ... 0.3) and dense slip scans through the shortcut's switch."""
+    monkeypatch.setattr(kt, "_PLASTIC_MARGIN", math.inf)
+    full = numba.njit(error_model="numpy")(kt.eyring_strip_mu_nb.py_func)
+    full(_coefficients("4106", 130.0, 700.0, 16.0, "inner"), 0.01, 0.0)  # compiled with the shortcut off
+    monkeypatch.undo()
+    taken = total = 0
+    S = np.geomspace(1e-4, 0.3, 41)
+    for oil in OILS:
+        for T_C in (27.0, 130.0, 230.0):
+            for W in (100.0, 700.0, 5000.0):
+                for U in (1.0, -16.0, 100.0):
+                    for contact in CONTACTS:
+                        c = _coefficients(oil, T_C, W, U, contact)
+                        for u in QU:
+                            for s in S:
+                                for sg in (1.0, -1.0):
+                                    assert kt.eyring_strip_mu_nb(c, sg * s, u) == full(c, sg * s, u), (oil, T_C, W, U, u, s)
+                                pl = _plastic_pairs(c, s, u)
+                                taken += int(pl.sum())
+                                total += pl.size
+    assert 0.2 < taken / total < 0.95, taken / total  # both paths exercised
+    for oil, T_C, W, U in SCANS:  # dense scans: pairs switch between the shortcut and the full pair
+        c = _coefficients(oil, T_C, W, U, "inner")
+        switched = 0
+        prev = None
+        for s in np.geomspace(1e-4, 0.3, 4000):
+            for sg in (1.0, -1.0):
+                assert kt.eyring_strip_mu_nb(c, sg * s, QU[1]) == full(c, sg * s, QU[1]), (oil, s)
+            pl = _plastic_pairs(c, s, QU[1])
+            switched += 0 if prev is None else int(np.sum(pl != prev))
+            prev = pl
+        assert switched > 0

@@ -222,6 +222,13 @@ def _node_pairs(nodes):
 _PAIRS = _node_pairs(MINOR_NODES)
 _NPAIR = _PAIRS.shape[0]
 _SUM_WCS = float(np.sum(MINOR_NODES[:, 2] * MINOR_NODES[:, 1]))  # sum_j w_j cos^2 theta_j: den = su * this
+_PAIR_MIN = np.ascontiguousarray(np.minimum(_PAIRS[:, 1], _PAIRS[:, 2]))  # the smaller 1 +- sin theta_j of a pair
+#: E - sigma_f beyond which the build-up is sigma_f exactly (to the last bit) in _buildup_nb: both its corrections
+#: are skipped there (log1p(e^-t), t >= SOFTPLUS_END = 40; ln(1 - e^z), z <= -40), plus 1 for the rounding of
+#: the lower bound of E that decides it before the pair constants (eyring_strip_mu_nb, the plastic pair)
+_PLASTIC_MARGIN = SOFTPLUS_END + 1.0
+_PLASTIC_SAFETY = 1.0 + 1e-6  # covers the rounding of E (relative 1e-12 at most) and of the build-up's E - sigma_f
+assert SOFTPLUS_END == -LOG1M_EXP.x0 == 40.0
 
 
 @numba.njit(cache=True, nogil=True, inline="always", error_model="numpy")
@@ -305,6 +312,7 @@ def eyring_strip_mu_nb(c, S, u):
     num = 0.0
     for j in range(_NPAIR):
         cs, opn, omn, w, ics = _PAIRS[j, 0], _PAIRS[j, 1], _PAIRS[j, 2], _PAIRS[j, 3], _PAIRS[j, 4]
+        mn = _PAIR_MIN[j]
         tv = r0 * _asinh_exp_nb(lS + csu * cs)
         r = tv * (iLs * ics)  # tau_v / tau_L
         r2 = r * r
@@ -312,6 +320,10 @@ def eyring_strip_mu_nb(c, S, u):
         its = g4 * math.sqrt(math.sqrt(g4)) * ir0  # kappa / tau_0 = 1 / ts
         sf = tv * g4 * ir0  # sigma_f
         if not sf > 0.0:  # an underflowed flow stress (|S| ~ 1e-320)
+            continue
+        if cel * its * mn > (sf + _PLASTIC_MARGIN) * _PLASTIC_SAFETY * min(sf, 1.0):  # both nodes fully plastic
+            # (E >= cel its mn coth sigma_f, coth x >= 1 / min(x, 1)): sigma = sigma_f, no pair constants
+            num += w / its * (sf + sf)
             continue
         lam, em, k1, k2 = 0.0, 1.0, 1.0, 0.0
         fac = its  # 1 / (ts tanh sigma_f)
