@@ -177,9 +177,9 @@ def simulate(case, duration=None, *, overrides=None, stop=None, section=None, rt
 
         require_angular_contact(c, "thermal= and extend= are options of the angular-contact model",
                                 source="simulate", key="thermal" if thermal else "extend")
-    if thermal:
-        c = _thermal_start(c)
     kw = {} if cvode_settings is None else {"cvode_settings": cvode_settings}
+    if thermal:
+        c, kw["race_temperatures"] = _thermal_start(c)
     limit = _quantity(wall_limit, "time", "wall_limit")
     if limit is not None:
         if not limit > 0:
@@ -203,7 +203,8 @@ def simulate(case, duration=None, *, overrides=None, stop=None, section=None, rt
 
 
 def _thermal_start(case):
-    """The case at the lubricant temperature of its thermal equilibrium (``hsbearing run --thermal``)."""
+    """The case at the lubricant temperature of its thermal equilibrium, and the inner and outer race contacts' inlet
+    temperatures (T_ir + T_b)/2, (T_or + T_b)/2 [K] (``hsbearing run --thermal``; rating.race_inlet_temperatures)."""
     from hsbearing.systems.angular_contact.thermal import check_inputs, thermal_equilibrium
 
     check_inputs(case)
@@ -212,7 +213,11 @@ def _thermal_start(case):
         raise CaseError(case.source, "lubricant.oil_flow_rate", th.attrs.get("error") or
                         f"the thermal fixed point did not converge in {int(th.fixed_point_iterations)} iterations "
                         "(thermal.max_iterations, thermal.tolerance)")
-    return case.with_overrides(**{"lubricant.temperature": f"{float(th.lubricant_temperature)!r} K"})
+    from hsbearing.systems.angular_contact.rating import race_inlet_temperatures
+
+    races = race_inlet_temperatures(float(th.inner_ring_temperature), float(th.outer_ring_temperature),
+                                    float(th.ball_temperature))
+    return case.with_overrides(**{"lubricant.temperature": f"{float(th.lubricant_temperature)!r} K"}), races
 
 
 @_api

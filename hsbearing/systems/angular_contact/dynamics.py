@@ -195,8 +195,22 @@ def traction_values(case, alpha) -> dict:
     return dict(tau0=tau0, Lambda=Lam, G=G, c_A=A, c_B=B, c_C=C, c_D=D)
 
 
+def race_oil_values(case, T=None, suffix: str = "") -> dict:
+    """Kernel parameters of one race's contact inlet oil at temperature ``T`` [K] (None: lubricant.temperature):
+    eta_in, alpha, beta_T, T_K, tau0, Lambda, G, their names ending in ``suffix`` ("" the inner race's fields,
+    "_o" the outer race's, kernel_io ``outer_oil``).  The same precedence rules as every other temperature of the
+    case (:func:`_oil`, :func:`_inlet_beta`, :func:`traction_values`), through the case at ``T``."""
+    if T is not None:
+        case = case.with_overrides(**{"lubricant.temperature": f"{float(T)!r} K"})
+    eta, alpha, _ = _oil(case)
+    tv = traction_values(case, alpha)
+    vals = dict(eta_in=eta, alpha=alpha, beta_T=_inlet_beta(case), T_K=case.lubricant.temperature,
+                tau0=tv["tau0"], Lambda=tv["Lambda"], G=tv["G"])
+    return {k + suffix: v for k, v in vals.items()}
+
+
 def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rolling: bool = True,
-                drag: bool = True, initial: str = "quasistatic", **options) -> DynamicModel:
+                drag: bool = True, initial: str = "quasistatic", race_temperatures=None, **options) -> DynamicModel:
     """Build the compiled dynamic model of ``case``.
 
     Parameters
@@ -209,6 +223,11 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
     drag : air-oil drag F_D on the balls
     initial : "quasistatic" (initial state from :func:`hsbearing.systems.angular_contact.quasistatic.solve_case`)
         or "nominal" (balls on the pitch circle at the free contact angle, cage at the epicyclic speed)
+    race_temperatures : (T_inner, T_outer) [K], the contact inlet temperatures of the inner and outer race contacts:
+        each race's inlet viscosity, its slope beta_T, alpha, the traction law's temperature and the physical model's
+        tau0, Lambda, G at its own temperature (:func:`race_oil_values`); None: both at lubricant.temperature
+        (``hsbearing friction/run --thermal`` give (T_ir + T_b)/2 and (T_or + T_b)/2).  The quasi-static initial
+        state, the drag and the cage films stay at lubricant.temperature.
     **options : overrides of :data:`MODEL_DEFAULTS`
     """
     from hsbearing.case import CaseError
@@ -272,6 +291,8 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
         eta_in=eta, alpha=alpha, eta_film=eta, beta_T=_inlet_beta(case), K_oil=_oil_conductivity(case),
         law_id=law, T_K=case.lubricant.temperature, U_eps=opt["rolling_eps"], s_eps=opt["slip_eps"],
         **traction_values(case, alpha),
+        # the outer race's inlet oil: the inner race's values when both races run at lubricant.temperature
+        eta_in_o=eta, alpha_o=alpha, beta_T_o=_inlet_beta(case), T_K_o=case.lubricant.temperature,
         # pocket
         c_p=g.pocket_clearance, K_c=float(cc.K), h_min=opt["pocket_film_min"],
         mu_c=case.friction.cage_coefficient, v0_c=opt["pocket_v0"],
@@ -293,13 +314,19 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
         friction=bool(friction), damping=bool(damping), ehl_rolling=bool(ehl_rolling and damping),
         drag=bool(drag and friction), inlet_heating=case.friction.inlet_heating == "on",
     )
+    tv = traction_values(case, alpha)
+    vals.update(tau0_o=tv["tau0"], Lambda_o=tv["Lambda"], G_o=tv["G"])
+    if race_temperatures is not None:  # each race's contacts at its own inlet temperature
+        T_in, T_out = (float(t) for t in race_temperatures)
+        vals.update(race_oil_values(case, T_in, ""))
+        vals.update(race_oil_values(case, T_out, "_o"))
     p = kio.pack(vals)
     for name in ("m_c", "Ip_c", "Id_c", "m_i", "Ip_i", "Id_i"):
         if not (math.isfinite(vals[name]) and vals[name] > 0):
             raise CaseError(case.source, "cage" if name.endswith("_c") else "bearing",
                             f"cannot derive {name} (give the masses/inertias or the dimensions)")
     hscale = _typical_scales(layout, case)
-    info.update(guide_lands=lands, options=opt, friction=friction, damping=damping, ehl_rolling=ehl_rolling, drag=drag,
+    info.update(guide_lands=lands, options=opt, race_temperatures=race_temperatures, friction=friction, damping=damping, ehl_rolling=ehl_rolling, drag=drag,
                 oil_viscosity=eta, cavity_oil_fraction=X, cavity_oil_fraction_source=X_source, drag_density=rho_e,
                 drag_viscosity=mu_e, drag_orbital_speed=v_orbit, drag_reynolds_number=Re_D, drag_coefficient=C_D,
                 contact_K_inner=float(ci.K), contact_K_outer=float(co.K), pocket_K=float(cc.K))
