@@ -154,8 +154,8 @@ def cmd_run(args) -> int:
                                      "is in hsbearing friction only); a --continue or --extend of this archive runs "
                                      "both races at lubricant.temperature"),
             "thermal_lubricant_temperature": T,
-            "inner_contact_inlet_temperature": race_T[0],
-            "outer_contact_inlet_temperature": race_T[1],
+            "thermal_inner_contact_inlet_temperature": race_T[0],
+            "thermal_outer_contact_inlet_temperature": race_T[1],
             **{f"thermal_{k}": float(th[k]) for k in ("inner_ring_temperature", "outer_ring_temperature", "ball_temperature",
                                                       "cage_temperature", "oil_outlet_temperature")},
         }
