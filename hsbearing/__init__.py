@@ -121,8 +121,9 @@ def simulate(case, duration=None, *, overrides=None, stop=None, section=None, rt
     rtol, atol : float, optional
         CVODE tolerances; None = ``[simulation] rtol`` / ``atol``.
     thermal : bool, default False
-        Solve the thermal network first (:func:`thermal`) and run at its lubricant temperature (``--thermal``;
-        angular-contact cases with ``lubricant.oil_flow_rate``).
+        Solve the thermal network first (:func:`thermal`) and run at its lubricant temperature, each race's
+        contacts at their own inlet temperature (T_ring + T_ball)/2 (``--thermal``; attrs
+        ``thermal_inner_/outer_contact_inlet_temperature``; angular-contact cases with ``lubricant.oil_flow_rate``).
     extend : bool, default False
         While the cage-motion label is undetermined, continue the run in steps up to ``max_duration``
         (``--extend``; angular-contact cases).
@@ -190,6 +191,13 @@ def simulate(case, duration=None, *, overrides=None, stop=None, section=None, rt
                                 key="wall_limit")
         kw["wall_limit"] = limit
     ds = systems.simulate(c, duration=duration, progress=progress, **kw)
+    if thermal:  # which temperatures the race contacts ran at (an extension below keeps them: dynamics.continue_run)
+        Ti, To = kw["race_temperatures"]
+        ds.attrs.update(contact_temperatures=(
+            "hsbearing.simulate(thermal=True): inner race contacts at (T_inner_ring + T_balls)/2, outer at "
+            "(T_outer_ring + T_balls)/2 of the thermal network; cage films, drag and the initial state at its lubricant "
+            "temperature (lubricant.temperature of case_toml)"),
+            thermal_inner_contact_inlet_temperature=Ti, thermal_outer_contact_inlet_temperature=To)
     if extend:
         from hsbearing.systems.angular_contact.extend import DEFAULT_BUDGET_FACTOR, extend_until_determined
 

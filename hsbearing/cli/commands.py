@@ -144,15 +144,16 @@ def cmd_run(args) -> int:
         # which temperatures the run used: each race's contacts at its own inlet temperature; the cage films (the
         # kernel's one film viscosity), the drag and the initial state at the network's lubricant temperature
         thermal_attrs = {
-            "contact_temperatures": ("hsbearing run --thermal: inner race contacts at inner_contact_inlet_temperature = "
+            "contact_temperatures": ("hsbearing run --thermal, from the thermal network's equilibrium: inner race "
+                                     "contacts at thermal_inner_contact_inlet_temperature = "
                                      f"(T_inner_ring + T_balls)/2 = {race_T[0]:.6g} K, outer race contacts at "
-                                     f"outer_contact_inlet_temperature = (T_outer_ring + T_balls)/2 = {race_T[1]:.6g} K "
+                                     f"thermal_outer_contact_inlet_temperature = (T_outer_ring + T_balls)/2 = {race_T[1]:.6g} K "
                                      "(the inlet oil between the ball and that race's surface); guide-land and pocket "
                                      "films, drag and the initial state at the network's lubricant temperature "
                                      f"(T_inner_ring + T_outer_ring + 2 T_balls)/4 = {T:.6g} K (lubricant.temperature of "
                                      "case_toml); the kernel's cage films are isothermal at it (their film temperature "
-                                     "is in hsbearing friction only); a --continue or --extend of this archive runs "
-                                     "both races at lubricant.temperature"),
+                                     "is in hsbearing friction only); a --continue or --extend of this archive keeps "
+                                     "the two inlet temperatures (these attrs)"),
             "thermal_lubricant_temperature": T,
             "thermal_inner_contact_inlet_temperature": race_T[0],
             "thermal_outer_contact_inlet_temperature": race_T[1],

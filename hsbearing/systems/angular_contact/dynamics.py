@@ -608,7 +608,10 @@ def continue_run(previous, duration=None, progress: bool = False, *, source: str
     if not duration > 0:
         raise CaseError("--duration", "duration", f"must be positive, got {duration!r}")
     check_output_samples(case, duration, source="--duration", key="duration")
-    m = build_model(case, initial="nominal")  # the start state comes from the archive
+    # a run --thermal archive: each race's contacts at the inlet temperatures it ran with (attrs; absent: lubricant.temperature)
+    keys = ("thermal_inner_contact_inlet_temperature", "thermal_outer_contact_inlet_temperature")
+    races = tuple(float(previous.attrs[k]) for k in keys) if all(k in previous.attrs for k in keys) else None
+    m = build_model(case, initial="nominal", race_temperatures=races)  # the start state comes from the archive
     names = list(previous["state"].values) if "state" in previous.coords else None
     if names is not None and [str(n) for n in names] != list(m.state_names):
         raise CaseError(source, "final_state", "the stored state layout differs from this hsbearing's model")

@@ -660,12 +660,12 @@ THERMAL_RULE = ("hsbearing friction --thermal: per speed, the thermal network's 
                 "outer_contact_inlet_temperature = (T_outer_ring + T_balls)/2 (contact_inlet_temperature is their mean); "
                 "guide-land film between thermal_cage_temperature and the guiding ring's node temperature, pocket films "
                 "between thermal_ball_temperature and thermal_cage_temperature (friction.thermal_films); the quasi-static "
-                "state, drag, jet and windage with the oil at the network's lubricant temperature "
-                "(T_inner_ring + T_outer_ring + 2 T_balls)/4 = contact_inlet_temperature")
+                "state, drag, jet and windage with the oil at the network's lubricant temperature, which is "
+                "contact_inlet_temperature = (T_inner_ring + T_outer_ring + 2 T_balls)/4 to the fixed point's tolerance")
 for _n, _l in (("contact_inlet_temperature", "mean of inner_contact_inlet_temperature and "
                 "outer_contact_inlet_temperature with --thermal, (T_ir + T_or + 2 T_b)/4 (kept for compatibility: the "
-                "race contacts use their own race's value); also the oil temperature of the quasi-static state, drag, "
-                "jet and windage"),
+                "race contacts use their own race's value); the quasi-static state, drag, jet and windage use the "
+                "network's lubricant temperature, equal to it to the fixed point's tolerance"),
                ("inner_contact_inlet_temperature", "inlet temperature of the inner race contacts (traction, EHL rolling, "
                 "film viscosity) with --thermal: (T_ir + T_b)/2 of the thermal network"),
                ("outer_contact_inlet_temperature", "inlet temperature of the outer race contacts (traction, EHL rolling, "

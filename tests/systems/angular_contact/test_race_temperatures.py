@@ -117,3 +117,58 @@ def test_friction_thermal_archives_both_races(tmp_path, capsys):
     r = rating.quasi_static_power_loss(_at(cw, T_lub), walls=walls, race_temperatures=(Ti, To))
     assert float(ds.qs_power_loss[0]) == pytest.approx(r["power_loss"], rel=1e-9)
     assert float(ds.qs_power_loss_race_traction[0]) == pytest.approx(r["race_traction"], rel=1e-9)
+
+
+def test_run_thermal_and_its_continuation_run_each_race_at_its_temperature(monkeypatch, tmp_path, capsys):
+    """hsbearing run --thermal builds the model with both inlet temperatures, records them, and a --continue of the
+    archive builds it with the same two."""
+    from hsbearing import cli
+    from hsbearing.results import open_run
+    from hsbearing.systems.angular_contact import dynamics
+    from hsbearing.systems.angular_contact.thermal import thermal_equilibrium
+
+    seen = []
+    real = dynamics.build_model
+
+    def spy(case, **kw):
+        seen.append(kw.get("race_temperatures"))
+        return real(case, **kw)
+
+    th = thermal_equilibrium(load_case("zhang2016"))
+    Tb = float(th.ball_temperature)
+    want = (0.5 * (float(th.inner_ring_temperature) + Tb), 0.5 * (float(th.outer_ring_temperature) + Tb))
+    monkeypatch.setattr(dynamics, "build_model", spy)
+    out, out2 = tmp_path / "r.nc", tmp_path / "c.nc"
+    assert cli.main(["run", "zhang2016", "--thermal", "--duration", "0.1ms", "-o", str(out), "-q", "--no-figure"]) == 0
+    assert "contact inlet temperatures: inner race" in capsys.readouterr().out
+    assert seen[-1] == pytest.approx(want, rel=1e-12)  # the run's model (the network's own evaluations come first)
+    ds = open_run(out)
+    assert (ds.attrs["thermal_inner_contact_inlet_temperature"],
+            ds.attrs["thermal_outer_contact_inlet_temperature"]) == pytest.approx(want, rel=1e-12)
+    assert "(T_inner_ring + T_balls)/2" in ds.attrs["contact_temperatures"]
+    seen.clear()
+    assert cli.main(["run", "--continue", str(out), "--duration", "0.1ms", "-o", str(out2), "-q", "--no-figure"]) == 0
+    assert seen and seen[-1] == pytest.approx(want, rel=1e-12)
+
+
+def test_api_simulate_thermal_hands_both_races_to_the_model(monkeypatch):
+    import xarray as xr
+
+    import hsbearing
+    from hsbearing import systems
+    from hsbearing.systems.angular_contact.thermal import thermal_equilibrium
+
+    seen = {}
+
+    def fake(case, **kw):
+        seen.update(kw)
+        return xr.Dataset(attrs={"status": "ok"})
+
+    monkeypatch.setattr(systems, "simulate", fake)
+    ds = hsbearing.simulate("zhang2016", duration="0.1 ms", thermal=True)
+    th = thermal_equilibrium(load_case("zhang2016"))
+    Tb = float(th.ball_temperature)
+    want = (0.5 * (float(th.inner_ring_temperature) + Tb), 0.5 * (float(th.outer_ring_temperature) + Tb))
+    assert seen["race_temperatures"] == pytest.approx(want, rel=1e-12)
+    assert ds.attrs["thermal_inner_contact_inlet_temperature"] == pytest.approx(want[0], rel=1e-12)
+    assert ds.attrs["thermal_outer_contact_inlet_temperature"] == pytest.approx(want[1], rel=1e-12)

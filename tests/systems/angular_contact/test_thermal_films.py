@@ -90,7 +90,9 @@ def test_friction_thermal_feeds_the_network_temperatures(tmp_path, capsys):
     case = load_case("zhang2016")
     th = thermal_equilibrium(case)
     T_lub = float(th.lubricant_temperature)
-    assert float(ds.contact_inlet_temperature[0]) == pytest.approx(T_lub, rel=1e-12)  # the mean of the two races
+    T_mean = 0.25 * (float(th.inner_ring_temperature) + float(th.outer_ring_temperature) + 2 * float(th.ball_temperature))
+    assert float(ds.contact_inlet_temperature[0]) == pytest.approx(T_mean, rel=1e-12)  # the mean of the two races
+    assert float(ds.contact_inlet_temperature[0]) == pytest.approx(T_lub, abs=0.05)  # = the network's, to its tolerance
     assert float(ds.thermal_cage_temperature[0]) == pytest.approx(float(th.cage_temperature), rel=1e-12)
     assert float(ds.land_film_wall_temperature_a[0]) == pytest.approx(float(th.cage_temperature), rel=1e-12)
     assert float(ds.land_film_wall_temperature_b[0]) == pytest.approx(float(th.outer_ring_temperature), rel=1e-12)
@@ -130,7 +132,7 @@ def test_run_thermal_records_the_temperatures_it_used(monkeypatch, tmp_path):
     import xarray as xr
 
     import hsbearing
-    from hsbearing import cli
+    from hsbearing import cli, systems
     from hsbearing.cli import commands
 
     seen = {}
@@ -143,13 +145,15 @@ def test_run_thermal_records_the_temperatures_it_used(monkeypatch, tmp_path):
         return 0
 
     monkeypatch.setattr(hsbearing, "simulate", fake_simulate)
+    monkeypatch.setattr(systems, "simulate", fake_simulate)  # --thermal: each race's inlet temperature to the model
     monkeypatch.setattr(commands, "_finish_run", fake_finish)
     assert cli.main(["run", "zhang2016", "--thermal", "--duration", "1ms", "-o", str(tmp_path / "r.nc"), "-q",
                      "--no-figure"]) == 0
     a = seen["attrs"]
     assert "thermal network" in a["contact_temperatures"]
     for k in ("thermal_lubricant_temperature", "thermal_inner_ring_temperature", "thermal_outer_ring_temperature",
-              "thermal_ball_temperature", "thermal_cage_temperature", "thermal_oil_outlet_temperature"):
+              "thermal_ball_temperature", "thermal_cage_temperature", "thermal_oil_outlet_temperature",
+              "thermal_inner_contact_inlet_temperature", "thermal_outer_contact_inlet_temperature"):
         assert 273.15 < a[k] < 600.0
     T = a["thermal_lubricant_temperature"]
     assert T == pytest.approx(0.25 * (a["thermal_inner_ring_temperature"] + a["thermal_outer_ring_temperature"]
