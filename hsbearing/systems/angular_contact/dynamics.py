@@ -291,8 +291,6 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
         eta_in=eta, alpha=alpha, eta_film=eta, beta_T=_inlet_beta(case), K_oil=_oil_conductivity(case),
         law_id=law, T_K=case.lubricant.temperature, U_eps=opt["rolling_eps"], s_eps=opt["slip_eps"],
         **traction_values(case, alpha),
-        # the outer race's inlet oil: the inner race's values when both races run at lubricant.temperature
-        eta_in_o=eta, alpha_o=alpha, beta_T_o=_inlet_beta(case), T_K_o=case.lubricant.temperature,
         # pocket
         c_p=g.pocket_clearance, K_c=float(cc.K), h_min=opt["pocket_film_min"],
         mu_c=case.friction.cage_coefficient, v0_c=opt["pocket_v0"],
@@ -314,8 +312,8 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
         friction=bool(friction), damping=bool(damping), ehl_rolling=bool(ehl_rolling and damping),
         drag=bool(drag and friction), inlet_heating=case.friction.inlet_heating == "on",
     )
-    tv = traction_values(case, alpha)
-    vals.update(tau0_o=tv["tau0"], Lambda_o=tv["Lambda"], G_o=tv["G"])
+    # the outer race's inlet oil (kernel_io outer_oil): the inner race's values, both races at lubricant.temperature
+    vals.update({f"{k}_o": vals[k] for k in ("eta_in", "alpha", "beta_T", "T_K", "tau0", "Lambda", "G")})
     if race_temperatures is not None:  # each race's contacts at its own inlet temperature
         T_in, T_out = (float(t) for t in race_temperatures)
         vals.update(race_oil_values(case, T_in, ""))
@@ -326,7 +324,8 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
             raise CaseError(case.source, "cage" if name.endswith("_c") else "bearing",
                             f"cannot derive {name} (give the masses/inertias or the dimensions)")
     hscale = _typical_scales(layout, case)
-    info.update(guide_lands=lands, options=opt, race_temperatures=race_temperatures, friction=friction, damping=damping, ehl_rolling=ehl_rolling, drag=drag,
+    info.update(guide_lands=lands, options=opt, race_temperatures=race_temperatures, friction=friction, damping=damping,
+                ehl_rolling=ehl_rolling, drag=drag,
                 oil_viscosity=eta, cavity_oil_fraction=X, cavity_oil_fraction_source=X_source, drag_density=rho_e,
                 drag_viscosity=mu_e, drag_orbital_speed=v_orbit, drag_reynolds_number=Re_D, drag_coefficient=C_D,
                 contact_K_inner=float(ci.K), contact_K_outer=float(co.K), pocket_K=float(cc.K))
