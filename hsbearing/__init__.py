@@ -121,8 +121,9 @@ def simulate(case, duration=None, *, overrides=None, stop=None, section=None, rt
     rtol, atol : float, optional
         CVODE tolerances; None = ``[simulation] rtol`` / ``atol``.
     thermal : bool, default False
-        Solve the thermal network first (:func:`thermal`) and run at its lubricant temperature (``--thermal``;
-        angular-contact cases with ``lubricant.oil_flow_rate``).
+        Solve the thermal network first (:func:`thermal`) and run at its lubricant temperature, each race's
+        contacts at their own inlet temperature (T_ring + T_ball)/2 (``--thermal``; attrs
+        ``thermal_inner_/outer_contact_inlet_temperature``; angular-contact cases with ``lubricant.oil_flow_rate``).
     extend : bool, default False
         While the cage-motion label is undetermined, continue the run in steps up to ``max_duration``
         (``--extend``; angular-contact cases).
@@ -177,9 +178,9 @@ def simulate(case, duration=None, *, overrides=None, stop=None, section=None, rt
 
         require_angular_contact(c, "thermal= and extend= are options of the angular-contact model",
                                 source="simulate", key="thermal" if thermal else "extend")
-    if thermal:
-        c = _thermal_start(c)
     kw = {} if cvode_settings is None else {"cvode_settings": cvode_settings}
+    if thermal:
+        c, kw["race_temperatures"] = _thermal_start(c)
     limit = _quantity(wall_limit, "time", "wall_limit")
     if limit is not None:
         if not limit > 0:
@@ -190,6 +191,13 @@ def simulate(case, duration=None, *, overrides=None, stop=None, section=None, rt
                                 key="wall_limit")
         kw["wall_limit"] = limit
     ds = systems.simulate(c, duration=duration, progress=progress, **kw)
+    if thermal:  # which temperatures the race contacts ran at (an extension below keeps them: dynamics.continue_run)
+        Ti, To = kw["race_temperatures"]
+        ds.attrs.update(contact_temperatures=(
+            "hsbearing.simulate(thermal=True): inner race contacts at (T_inner_ring + T_balls)/2, outer at "
+            "(T_outer_ring + T_balls)/2 of the thermal network; cage films, drag and the initial state at its lubricant "
+            "temperature (lubricant.temperature of case_toml)"),
+            thermal_inner_contact_inlet_temperature=Ti, thermal_outer_contact_inlet_temperature=To)
     if extend:
         from hsbearing.systems.angular_contact.extend import DEFAULT_BUDGET_FACTOR, extend_until_determined
 
@@ -203,7 +211,8 @@ def simulate(case, duration=None, *, overrides=None, stop=None, section=None, rt
 
 
 def _thermal_start(case):
-    """The case at the lubricant temperature of its thermal equilibrium (``hsbearing run --thermal``)."""
+    """The case at the lubricant temperature of its thermal equilibrium, and the inner and outer race contacts' inlet
+    temperatures (T_ir + T_b)/2, (T_or + T_b)/2 [K] (``hsbearing run --thermal``; rating.race_inlet_temperatures)."""
     from hsbearing.systems.angular_contact.thermal import check_inputs, thermal_equilibrium
 
     check_inputs(case)
@@ -212,7 +221,11 @@ def _thermal_start(case):
         raise CaseError(case.source, "lubricant.oil_flow_rate", th.attrs.get("error") or
                         f"the thermal fixed point did not converge in {int(th.fixed_point_iterations)} iterations "
                         "(thermal.max_iterations, thermal.tolerance)")
-    return case.with_overrides(**{"lubricant.temperature": f"{float(th.lubricant_temperature)!r} K"})
+    from hsbearing.systems.angular_contact.rating import race_inlet_temperatures
+
+    races = race_inlet_temperatures(float(th.inner_ring_temperature), float(th.outer_ring_temperature),
+                                    float(th.ball_temperature))
+    return case.with_overrides(**{"lubricant.temperature": f"{float(th.lubricant_temperature)!r} K"}), races
 
 
 @_api

@@ -134,14 +134,29 @@ def cmd_run(args) -> int:
         T = float(th.lubricant_temperature)
         print(f"thermal equilibrium: lubricant temperature {T - 273.15:.3f} degC (oil outlet "
               f"{float(th.oil_outlet_temperature) - 273.15:.3f} degC, {float(th.heat_generated):.4g} W); the run uses it")
+        from hsbearing.systems.angular_contact.rating import race_inlet_temperatures
+
+        race_T = race_inlet_temperatures(float(th.inner_ring_temperature), float(th.outer_ring_temperature),
+                                         float(th.ball_temperature))
+        print(f"contact inlet temperatures: inner race {race_T[0] - 273.15:.3f} degC, outer race "
+              f"{race_T[1] - 273.15:.3f} degC ((T_ring + T_ball)/2 of each race)")
         case = case.with_overrides(**{"lubricant.temperature": f"{T} K"})
-        # which temperatures the run used (the kernel has one oil temperature: race contacts and both cage films)
+        # which temperatures the run used: each race's contacts at its own inlet temperature; the cage films (the
+        # kernel's one film viscosity), the drag and the initial state at the network's lubricant temperature
         thermal_attrs = {
-            "contact_temperatures": ("hsbearing run --thermal: race contacts, guide-land and pocket films all at the thermal "
-                                     "network's lubricant temperature (T_inner_ring + T_outer_ring + 2 T_balls)/4 = "
-                                     f"{T:.6g} K (lubricant.temperature of case_toml); the kernel's cage films are "
-                                     "isothermal at it (their film temperature is in hsbearing friction only)"),
+            "contact_temperatures": ("hsbearing run --thermal, from the thermal network's equilibrium: inner race "
+                                     "contacts at thermal_inner_contact_inlet_temperature = "
+                                     f"(T_inner_ring + T_balls)/2 = {race_T[0]:.6g} K, outer race contacts at "
+                                     f"thermal_outer_contact_inlet_temperature = (T_outer_ring + T_balls)/2 = {race_T[1]:.6g} K "
+                                     "(the inlet oil between the ball and that race's surface); guide-land and pocket "
+                                     "films, drag and the initial state at the network's lubricant temperature "
+                                     f"(T_inner_ring + T_outer_ring + 2 T_balls)/4 = {T:.6g} K (lubricant.temperature of "
+                                     "case_toml); the kernel's cage films are isothermal at it (their film temperature "
+                                     "is in hsbearing friction only); a --continue or --extend of this archive keeps "
+                                     "the two inlet temperatures (these attrs)"),
             "thermal_lubricant_temperature": T,
+            "thermal_inner_contact_inlet_temperature": race_T[0],
+            "thermal_outer_contact_inlet_temperature": race_T[1],
             **{f"thermal_{k}": float(th[k]) for k in ("inner_ring_temperature", "outer_ring_temperature", "ball_temperature",
                                                       "cage_temperature", "oil_outlet_temperature")},
         }
@@ -155,7 +170,12 @@ def cmd_run(args) -> int:
     check_output_path(out, source="-o" if args.output is not None else "output", derived=_run_figures(out, args))
     check_archive_name(args.output)  # one suffix rule for every command's -o archive
     try:
-        ds = simulate(case, duration=duration, progress=not args.quiet)
+        if thermal_attrs:  # each race's contacts at its own inlet temperature (dynamics.build_model)
+            from hsbearing import systems
+
+            ds = systems.simulate(case, duration=duration, progress=not args.quiet, race_temperatures=race_T)
+        else:
+            ds = simulate(case, duration=duration, progress=not args.quiet)
         ds.attrs.update(thermal_attrs)
         if budget is not None:
             from hsbearing.systems.angular_contact.extend import extend_until_determined

@@ -62,7 +62,7 @@ from hsbearing.models.ball_bearing.ring import (
     tilt_generalised_moments,
     tilt_rotation,
 )
-from hsbearing.models.traction._kernels import traction_coefficients_nb, traction_mu_nb
+from hsbearing.models.traction._kernels import race_traction_coefficients_nb, traction_mu_nb
 
 # Parameters: the record P (one-element structured array, P[0] read as ``p.<group>.<name>``) and the
 # output columns AUX / GAUX are declared, with units, in hsbearing.models.ball_bearing.kernel_io.
@@ -87,6 +87,11 @@ RaceMotion = namedtuple("RaceMotion", ["vx", "vr", "vt", "ox", "orr", "ot", "Wx"
 #: constants of one race contact: equivalent radius along rolling [m], ellipticity [-], semi-major axis
 #: coefficient a = acoef Q^(1/3) [m/N^(1/3)]
 ContactShape = namedtuple("ContactShape", ["Rx", "ke", "acoef"])
+#: the inlet oil of one race's contacts, at that race's contact inlet temperature: inlet viscosity [Pa s],
+#: pressure-viscosity coefficient [1/Pa], -d ln(eta)/dT [1/K], temperature of the traction law [K], and the physical
+#: traction model's tau0 [Pa], Lambda [-], G [Pa] (kernel_io: the inner race's lubricant/traction fields, the outer's
+#: outer_oil fields)
+ContactOil = namedtuple("ContactOil", ["eta_in", "alpha", "beta_T", "T_K", "tau0", "Lambda", "G"])
 #: what one race contact puts on the ball (ball frame) and its by-products
 RaceContact = namedtuple("RaceContact", [
     "fx", "fr", "ft",  # traction force on the ball [N]
@@ -145,12 +150,13 @@ def _surface_velocities(px_, pr_, pt_, x, r, vx, vr, thd, wx, wy, wz, rvx, rvr, 
 
 
 @njit(cache=True, error_model="numpy")  # no ZeroDivisionError branch per division (cost only)
-def _race_contact(p, qu, qw, load, ball, race, shape):
+def _race_contact(p, qu, qw, load, ball, race, shape, oil):
     """Traction and EHL rolling force of one ball/race contact, in the ball frame (x, r, t).
 
     ``load`` (:data:`ContactLoad`): normal load Q and unit normal n = (nx, nr, nt) from the ball centre towards
     the groove centre; ``ball`` (:data:`BallMotion`); ``race`` (:data:`RaceMotion`): race translational velocity,
-    race centre position, race angular velocity -- all in the ball frame; ``shape`` (:data:`ContactShape`).
+    race centre position, race angular velocity -- all in the ball frame; ``shape`` (:data:`ContactShape`);
+    ``oil`` (:data:`ContactOil`): the inlet oil of this race's contacts (its own contact inlet temperature).
     Returns a :data:`RaceContact`: the force on the ball (fx, fr, ft), the moment about the ball
     centre (mx, mr, mt) -- the traction distribution's spin couple and the
     EHL rolling-resistance couple included --, traction components (rolling,
@@ -197,9 +203,11 @@ def _race_contact(p, qu, qw, load, ball, race, shape):
         phi_film = 1.0
         if p.switches.inlet_heating:  # the physical traction law's film sees the inlet factor (slip 0, like the
             # reported films: the centre slip is an output of this traction)
-            phi_film = inlet_heating_factor(p.lubricant.eta_in, p.lubricant.beta_T, p.lubricant.K_oil, U,
+            phi_film = inlet_heating_factor(oil.eta_in, oil.beta_T, p.lubricant.K_oil, U,
                                             1.5 * Q * ke / (math.pi * a * a), p.race.Ep, 0.0)
-        tc = traction_coefficients_nb(p, Q, U, Rx, ke, a, phi_film)  # per-contact coefficients (traction/_kernels)
+        # per-contact coefficients (traction/_kernels) with this race's inlet oil
+        tc = race_traction_coefficients_nb(p, Q, U, Rx, ke, a, phi_film, oil.T_K, oil.eta_in, oil.alpha, oil.tau0,
+                                           oil.Lambda, oil.G)
         iU = 1.0 / U
         seps = p.traction.s_eps
         # symmetric nodes (qu[n-1-k] = -qu[k], Gauss-Legendre): phi of the mirror node is exactly -phi, so its
@@ -253,11 +261,11 @@ def _race_contact(p, qu, qw, load, ball, race, shape):
                 if k == qu.size // 2:
                     S0 = s1 / U
     if p.switches.ehl_rolling:
-        FR = ehl_rolling_force(U, Q, Rx, ke, p.race.Ep, p.lubricant.eta_in, p.lubricant.alpha)
+        FR = ehl_rolling_force(U, Q, Rx, ke, p.race.Ep, oil.eta_in, oil.alpha)
         if p.switches.inlet_heating:  # one inlet factor per contact from its own speed, pressure and slip
             a_h = acoef * np.cbrt(Q)
             p_h = 1.5 * Q * ke / (math.pi * a_h * a_h)  # p_max = 3 Q / (2 pi a b), b = a / k
-            FR *= inlet_heating_rolling_factor(inlet_heating_factor(p.lubricant.eta_in, p.lubricant.beta_T,
+            FR *= inlet_heating_rolling_factor(inlet_heating_factor(oil.eta_in, oil.beta_T,
                                                                     p.lubricant.K_oil, U, p_h, p.race.Ep, S0))
         sg = Ut / U
         # F_R at the contact against the rolling sense, F_H = F_R through the ball centre:
@@ -370,7 +378,9 @@ def ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, pmode, pcache, 
             Wx, Wr, Wt = Wsx, Wsy * c + Wsz * s, -Wsy * s + Wsz * c
             ci = _race_contact(p, qu, qw, ContactLoad(Qi, nxi, nri, nti), ball,
                                RaceMotion(rvx, rvr, rvt, ox, orr, ot, Wx, Wr, Wt),
-                               ContactShape(p.race.Rx_i, p.race.k_i, p.race.acoef_i))
+                               ContactShape(p.race.Rx_i, p.race.k_i, p.race.acoef_i),
+                               ContactOil(p.lubricant.eta_in, p.lubricant.alpha, p.lubricant.beta_T, p.traction.T_K,
+                                          p.traction.tau0, p.traction.Lambda, p.traction.G))
             tfx, tfr, tft, tmx, tmr, tmt = ci.fx, ci.fr, ci.ft, ci.mx, ci.mr, ci.mt
             Ti1, Ti2, Si, Ui, FRi, sri, PTi, PEi = ci.T_roll, ci.T_trans, ci.S0, ci.U, ci.F_R, ci.spin_roll, ci.P_trac, ci.P_ehl
             fbx = Qi * nxi + tfx  # force of the inner race on the ball (ball frame)
@@ -394,7 +404,9 @@ def ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, pmode, pcache, 
             Qo = hertz_normal_load(dlt_o, dltd_o, p.race.K_o, p.race.cd_o * damp)
             co = _race_contact(p, qu, qw, ContactLoad(Qo, nxo, nro, nto), ball,
                                RaceMotion(0.0, 0.0, 0.0, 0.0, 0.0, 0.0, wo, 0.0, 0.0),  # fixed ring, speed wo about X
-                               ContactShape(p.race.Rx_o, p.race.k_o, p.race.acoef_o))
+                               ContactShape(p.race.Rx_o, p.race.k_o, p.race.acoef_o),
+                               ContactOil(p.outer_oil.eta_in_o, p.outer_oil.alpha_o, p.outer_oil.beta_T_o,
+                                          p.outer_oil.T_K_o, p.outer_oil.tau0_o, p.outer_oil.Lambda_o, p.outer_oil.G_o))
             tfx, tfr, tft, tmx, tmr, tmt = co.fx, co.fr, co.ft, co.mx, co.mr, co.mt
             To1, To2, So, Uo, FRo, sro, PTo, PEo = co.T_roll, co.T_trans, co.S0, co.U, co.F_R, co.spin_roll, co.P_trac, co.P_ehl
             outer = (Qo * nxo + tfx, Qo * nro + tfr, tft, tmx, tmr, tmt)  # (the outer normal has no t component)

@@ -61,14 +61,14 @@ PARAMETERS = (
     ("race", "omega_i", _F, "rad/s", "inner-ring speed about its axis (prescribed)"),
     ("race", "omega_o", _F, "rad/s", "outer-ring speed about X (prescribed)"),
     # ---- lubricant
-    ("lubricant", "eta_in", _F, "Pa s", "inlet viscosity of the race contacts (EHL rolling force)"),
-    ("lubricant", "alpha", _F, "1/Pa", "pressure-viscosity coefficient"),
+    ("lubricant", "eta_in", _F, "Pa s", "inlet viscosity of the inner race contacts (EHL rolling force, traction; outer: eta_in_o)"),
+    ("lubricant", "alpha", _F, "1/Pa", "pressure-viscosity coefficient of the inner race contacts (outer: alpha_o)"),
     ("lubricant", "eta_film", _F, "Pa s", "viscosity of the pocket and guide-land films"),
-    ("lubricant", "beta_T", _F, "1/K", "temperature-viscosity coefficient -d ln(eta)/dT at the inlet (inlet shear heating)"),
+    ("lubricant", "beta_T", _F, "1/K", "temperature-viscosity coefficient -d ln(eta)/dT at the inner contacts' inlet (inlet shear heating; outer: beta_T_o)"),
     ("lubricant", "K_oil", _F, "W/(m K)", "oil thermal conductivity (inlet shear heating)"),
     # ---- traction law of the race contacts (models.traction)
     ("traction", "law_id", _I, "1", "traction law (hsbearing.models.traction.law_id)"),
-    ("traction", "T_K", _F, "K", "lubricant temperature of the traction law"),
+    ("traction", "T_K", _F, "K", "inlet temperature of the inner race contacts for the traction law (outer: T_K_o)"),
     ("traction", "U_eps", _F, "m/s", "regularisation of the rolling speed |U|"),
     ("traction", "s_eps", _F, "m/s", "regularisation of the slip speed in the traction direction"),
     ("traction", "tau0", _F, "Pa", "Eyring stress of the physical traction model (law eyring; models.traction.eyring)"),
@@ -78,6 +78,15 @@ PARAMETERS = (
     ("traction", "c_B", _F, "1", "user coefficient B of mu = (A + B S) exp(-C S) + D"),
     ("traction", "c_C", _F, "1", "user coefficient C of mu = (A + B S) exp(-C S) + D"),
     ("traction", "c_D", _F, "1", "user coefficient D of mu = (A + B S) exp(-C S) + D"),
+    # ---- the outer race contacts' inlet oil: the same quantities as eta_in, alpha, beta_T, T_K, tau0, Lambda, G at the
+    # outer contacts' inlet temperature (equal to them when both races run at one temperature, every default build)
+    ("outer_oil", "eta_in_o", _F, "Pa s", "inlet viscosity of the outer race contacts"),
+    ("outer_oil", "alpha_o", _F, "1/Pa", "pressure-viscosity coefficient of the outer race contacts"),
+    ("outer_oil", "beta_T_o", _F, "1/K", "temperature-viscosity coefficient at the outer contacts' inlet"),
+    ("outer_oil", "T_K_o", _F, "K", "inlet temperature of the outer race contacts for the traction law"),
+    ("outer_oil", "tau0_o", _F, "Pa", "Eyring stress of the physical traction model at the outer contacts"),
+    ("outer_oil", "Lambda_o", _F, "1", "limiting-shear-stress coefficient at the outer contacts"),
+    ("outer_oil", "G_o", _F, "Pa", "elastic shear modulus of the film at the outer contacts"),
     # ---- ball/cage pocket (models.pocket)
     ("pocket", "c_p", _F, "m", "pocket clearance (pocket radius - ball radius)"),
     ("pocket", "K_c", _F, "N/m^1.5", "Hertz load-deflection constant ball/pocket"),

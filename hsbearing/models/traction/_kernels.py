@@ -40,7 +40,7 @@ from hsbearing.models.traction.zhang2016 import (
     W_FLOOR,
 )
 
-__all__ = ["coefficients_nb", "mu_nb", "traction_coefficients_nb", "traction_mu_nb", "eyring_coefficients_nb",
+__all__ = ["coefficients_nb", "mu_nb", "traction_coefficients_nb", "race_traction_coefficients_nb", "traction_mu_nb", "eyring_coefficients_nb",
            "eyring_strip_mu_nb", "eyring_strip_mu_exact_nb", "table_eval_nb", "EYRING_LAW_ID", "COEFFICIENTS_LAW_ID"]
 
 #: Law ids of the oil-independent laws (the registered seed laws are rows 0, 1, ... of zhang2016.PARAMS):
@@ -412,14 +412,23 @@ def traction_coefficients_nb(p, W, U, Rx, k, a, phi_T=1.0):
     W normal load [N], U rolling speed [m/s], Rx [m], k = a/b [-], a semi-major axis [m]; phi_T the contact's
     inlet-heating film factor (the physical model's central film only; 1 = isothermal).
     """
+    return race_traction_coefficients_nb(p, W, U, Rx, k, a, phi_T, p.traction.T_K, p.lubricant.eta_in, p.lubricant.alpha,
+                                         p.traction.tau0, p.traction.Lambda, p.traction.G)
+
+
+@numba.njit(cache=True, nogil=True)
+def race_traction_coefficients_nb(p, W, U, Rx, k, a, phi_T, T_K, eta_in, alpha, tau0, Lam, G):
+    """:func:`traction_coefficients_nb` with the inlet oil of one race given: its temperature T_K [K] (seed laws),
+    inlet viscosity eta_in [Pa s], pressure-viscosity coefficient alpha [1/Pa] and the physical model's tau0 [Pa],
+    Lambda [-], G [Pa] at that temperature (the kernel's inner race: the record's ``lubricant``/``traction`` fields;
+    the outer race: its ``outer_oil`` fields).  The law and the user coefficients come from the record ``p``."""
     lid = p.traction.law_id
     if lid >= 0:
-        A, B, C, D = coefficients_nb(lid, W, U, p.traction.T_K, p.race.Ep, Rx)
+        A, B, C, D = coefficients_nb(lid, W, U, T_K, p.race.Ep, Rx)
         return A, B, C, D, 0.0
     if lid == COEFFICIENTS_LAW_ID:
         return p.traction.c_A, p.traction.c_B, p.traction.c_C, p.traction.c_D, 0.0
-    return eyring_coefficients_nb(W, U, p.race.Ep, Rx, k, a, p.lubricant.eta_in, p.lubricant.alpha,
-                                  p.traction.tau0, p.traction.Lambda, p.traction.G, phi_T)
+    return eyring_coefficients_nb(W, U, p.race.Ep, Rx, k, a, eta_in, alpha, tau0, Lam, G, phi_T)
 
 
 @numba.njit(cache=True, nogil=True)

@@ -129,8 +129,16 @@ def friction_command(case, args) -> int:
           "starved .. flooded): "
           + ", ".join(f"{lo:.4g}..{hi:.4g}" for lo, hi in zip(ds.qs_total_band_low.values, ds.qs_total_band_high.values)))
     if "contact_inlet_temperature" in ds:
-        print("--thermal: contact inlet temperature " + ", ".join(f"{t - 273.15:.4g}" for t in ds.contact_inlet_temperature.values)
-              + " degC; rings " + ", ".join(f"{a - 273.15:.4g}/{b - 273.15:.4g}" for a, b in zip(
+        if "inner_contact_inlet_temperature" in ds:  # each race's contacts at their own inlet temperature
+            head = ("--thermal: contact inlet temperature inner/outer race " + ", ".join(
+                f"{a - 273.15:.4g}/{b - 273.15:.4g}" for a, b in zip(ds.inner_contact_inlet_temperature.values,
+                                                                    ds.outer_contact_inlet_temperature.values))
+                    + " degC ((T_ring + T_ball)/2 of each race; mean " + ", ".join(
+                        f"{t - 273.15:.4g}" for t in ds.contact_inlet_temperature.values) + " degC)")
+        else:
+            head = "--thermal: contact inlet temperature " + ", ".join(
+                f"{t - 273.15:.4g}" for t in ds.contact_inlet_temperature.values) + " degC"
+        print(head + "; rings " + ", ".join(f"{a - 273.15:.4g}/{b - 273.15:.4g}" for a, b in zip(
                   ds.thermal_inner_ring_temperature.values, ds.thermal_outer_ring_temperature.values))
               + " degC; balls " + ", ".join(f"{t - 273.15:.4g}" for t in ds.thermal_ball_temperature.values)
               + " degC; cage " + ", ".join(f"{t - 273.15:.4g}" for t in ds.thermal_cage_temperature.values)

@@ -48,7 +48,7 @@ def _unit_load_axes(Rx, Ry, E1, nu1, E2, nu2):
     return np.asarray(c.a), np.asarray(c.b)
 
 
-def contact_state_variables(case, Qi, Qo, ai, ao, Ui, Uo) -> dict:
+def contact_state_variables(case, Qi, Qo, ai, ao, Ui, Uo, race_temperatures=None) -> dict:
     """Per-contact Hertz and EHL state from loads [N], contact angles [rad] and entrainment speeds [m/s].
 
     Arrays of any common shape (time, ball).  Hertz: exact elliptic solution
@@ -60,7 +60,9 @@ def contact_state_variables(case, Qi, Qo, ai, ao, Ui, Uo) -> dict:
     ``friction.inlet_heating = "on"`` times the inlet-shear-heating factor phi_T of each contact -- the same factor
     and inputs as the kernel's EHL rolling force, at the centre slide-roll ratio 0: the slip is not an input here).  lambda with the composite roughness of
     ``materials.ball.surface_roughness`` and ``materials.races.surface_roughness``.
-    Unloaded contacts: p = 0, film and lambda NaN.
+    Unloaded contacts: p = 0, film and lambda NaN.  ``race_temperatures`` (T_inner, T_outer) [K]: each race's film
+    with the oil at its own contact inlet temperature (as the kernel's ``build_model(race_temperatures=...)``);
+    None: both at lubricant.temperature.
     """
     from hsbearing.models import ehl, hertz
     from hsbearing.models.geometry import curvature_radii, derive
@@ -69,13 +71,21 @@ def contact_state_variables(case, Qi, Qo, ai, ao, Ui, Uo) -> dict:
     g = derive(case)
     mb, mr = case.materials.ball, case.materials.races
     Ep = float(hertz.reduced_modulus(mb.elastic_modulus, mb.poisson_ratio, mr.elastic_modulus, mr.poisson_ratio))
-    try:
-        lp = ehl.lubricant_parameters(case)
-    except (KeyError, AttributeError):
-        lp = None
+    def oil(c):
+        try:
+            return ehl.lubricant_parameters(c)
+        except (KeyError, AttributeError):
+            return None
+
+    lp = oil(case)
     sigma = float(composite_roughness(mb.surface_roughness, mr.surface_roughness))
     out = {}
+    case0 = case
     for side, Q, al, U in (("inner", Qi, ai, Ui), ("outer", Qo, ao, Uo)):
+        if race_temperatures is not None:  # this race's oil at its own contact inlet temperature
+            T_side = float(race_temperatures[0] if side == "inner" else race_temperatures[1])
+            case = case0.with_overrides(**{"lubricant.temperature": f"{T_side!r} K"})
+            lp = oil(case)
         Q = np.asarray(Q, dtype=float)
         al = np.asarray(al, dtype=float)
         U = np.abs(np.asarray(U, dtype=float))
@@ -113,9 +123,10 @@ def contact_state_variables(case, Qi, Qo, ai, ao, Ui, Uo) -> dict:
     return out
 
 
-def quasi_static_contact_state(case, qs) -> dict:
+def quasi_static_contact_state(case, qs, race_temperatures=None) -> dict:
     """:func:`contact_state_variables` of a quasi-static Dataset (its loads, angles, orbit speeds; entrainment
-    speed |omega_race - omega_m| (r_b -/+ (D/2) cos alpha) as the quasi-static solver's film)."""
+    speed |omega_race - omega_m| (r_b -/+ (D/2) cos alpha) as the quasi-static solver's film); ``race_temperatures``
+    as there."""
     from hsbearing.models.geometry import derive
 
     D = derive(case).D
@@ -123,7 +134,8 @@ def quasi_static_contact_state(case, qs) -> dict:
     ai, ao = qs["inner_contact_angle"].values, qs["outer_contact_angle"].values
     ui = np.abs(case.operating.inner_speed - wm) * (rb - 0.5 * D * np.cos(ai))
     uo = np.abs(case.operating.outer_speed - wm) * (rb + 0.5 * D * np.cos(ao))
-    return contact_state_variables(case, qs["inner_contact_load"].values, qs["outer_contact_load"].values, ai, ao, ui, uo)
+    return contact_state_variables(case, qs["inner_contact_load"].values, qs["outer_contact_load"].values, ai, ao, ui, uo,
+                                   race_temperatures=race_temperatures)
 
 
 def spin_to_roll_relative(ratio_entrainment, alpha, D, r_b, side: str, roll_sign=1.0):

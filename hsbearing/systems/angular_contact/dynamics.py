@@ -195,8 +195,22 @@ def traction_values(case, alpha) -> dict:
     return dict(tau0=tau0, Lambda=Lam, G=G, c_A=A, c_B=B, c_C=C, c_D=D)
 
 
+def race_oil_values(case, T=None, suffix: str = "") -> dict:
+    """Kernel parameters of one race's contact inlet oil at temperature ``T`` [K] (None: lubricant.temperature):
+    eta_in, alpha, beta_T, T_K, tau0, Lambda, G, their names ending in ``suffix`` ("" the inner race's fields,
+    "_o" the outer race's, kernel_io ``outer_oil``).  The same precedence rules as every other temperature of the
+    case (:func:`_oil`, :func:`_inlet_beta`, :func:`traction_values`), through the case at ``T``."""
+    if T is not None:
+        case = case.with_overrides(**{"lubricant.temperature": f"{float(T)!r} K"})
+    eta, alpha, _ = _oil(case)
+    tv = traction_values(case, alpha)
+    vals = dict(eta_in=eta, alpha=alpha, beta_T=_inlet_beta(case), T_K=case.lubricant.temperature,
+                tau0=tv["tau0"], Lambda=tv["Lambda"], G=tv["G"])
+    return {k + suffix: v for k, v in vals.items()}
+
+
 def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rolling: bool = True,
-                drag: bool = True, initial: str = "quasistatic", **options) -> DynamicModel:
+                drag: bool = True, initial: str = "quasistatic", race_temperatures=None, **options) -> DynamicModel:
     """Build the compiled dynamic model of ``case``.
 
     Parameters
@@ -209,6 +223,11 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
     drag : air-oil drag F_D on the balls
     initial : "quasistatic" (initial state from :func:`hsbearing.systems.angular_contact.quasistatic.solve_case`)
         or "nominal" (balls on the pitch circle at the free contact angle, cage at the epicyclic speed)
+    race_temperatures : (T_inner, T_outer) [K], the contact inlet temperatures of the inner and outer race contacts:
+        each race's inlet viscosity, its slope beta_T, alpha, the traction law's temperature and the physical model's
+        tau0, Lambda, G at its own temperature (:func:`race_oil_values`); None: both at lubricant.temperature
+        (``hsbearing friction/run --thermal`` give (T_ir + T_b)/2 and (T_or + T_b)/2).  The quasi-static initial
+        state, the drag and the cage films stay at lubricant.temperature.
     **options : overrides of :data:`MODEL_DEFAULTS`
     """
     from hsbearing.case import CaseError
@@ -293,13 +312,20 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
         friction=bool(friction), damping=bool(damping), ehl_rolling=bool(ehl_rolling and damping),
         drag=bool(drag and friction), inlet_heating=case.friction.inlet_heating == "on",
     )
+    # the outer race's inlet oil (kernel_io outer_oil): the inner race's values, both races at lubricant.temperature
+    vals.update({f"{k}_o": vals[k] for k in ("eta_in", "alpha", "beta_T", "T_K", "tau0", "Lambda", "G")})
+    if race_temperatures is not None:  # each race's contacts at its own inlet temperature
+        T_in, T_out = (float(t) for t in race_temperatures)
+        vals.update(race_oil_values(case, T_in, ""))
+        vals.update(race_oil_values(case, T_out, "_o"))
     p = kio.pack(vals)
     for name in ("m_c", "Ip_c", "Id_c", "m_i", "Ip_i", "Id_i"):
         if not (math.isfinite(vals[name]) and vals[name] > 0):
             raise CaseError(case.source, "cage" if name.endswith("_c") else "bearing",
                             f"cannot derive {name} (give the masses/inertias or the dimensions)")
     hscale = _typical_scales(layout, case)
-    info.update(guide_lands=lands, options=opt, friction=friction, damping=damping, ehl_rolling=ehl_rolling, drag=drag,
+    info.update(guide_lands=lands, options=opt, race_temperatures=race_temperatures, friction=friction, damping=damping,
+                ehl_rolling=ehl_rolling, drag=drag,
                 oil_viscosity=eta, cavity_oil_fraction=X, cavity_oil_fraction_source=X_source, drag_density=rho_e,
                 drag_viscosity=mu_e, drag_orbital_speed=v_orbit, drag_reynolds_number=Re_D, drag_coefficient=C_D,
                 contact_K_inner=float(ci.K), contact_K_outer=float(co.K), pocket_K=float(cc.K))
@@ -581,7 +607,10 @@ def continue_run(previous, duration=None, progress: bool = False, *, source: str
     if not duration > 0:
         raise CaseError("--duration", "duration", f"must be positive, got {duration!r}")
     check_output_samples(case, duration, source="--duration", key="duration")
-    m = build_model(case, initial="nominal")  # the start state comes from the archive
+    # a run --thermal archive: each race's contacts at the inlet temperatures it ran with (attrs; absent: lubricant.temperature)
+    keys = ("thermal_inner_contact_inlet_temperature", "thermal_outer_contact_inlet_temperature")
+    races = tuple(float(previous.attrs[k]) for k in keys) if all(k in previous.attrs for k in keys) else None
+    m = build_model(case, initial="nominal", race_temperatures=races)  # the start state comes from the archive
     names = list(previous["state"].values) if "state" in previous.coords else None
     if names is not None and [str(n) for n in names] != list(m.state_names):
         raise CaseError(source, "final_state", "the stored state layout differs from this hsbearing's model")

@@ -203,7 +203,8 @@ def life_cli(args) -> int:
     return 0
 
 
-def quasi_static_power_loss(case, speed=None, with_state: bool = False, walls: dict | None = None, bands: bool = True):
+def quasi_static_power_loss(case, speed=None, with_state: bool = False, walls: dict | None = None, bands: bool = True,
+                            race_temperatures=None):
     """Power loss by source [W] at the quasi-static state, with the dynamic model's contact functions.
 
     The dynamic model is built from the case (:func:`hsbearing.systems.angular_contact.dynamics.build_model`); its
@@ -224,6 +225,8 @@ def quasi_static_power_loss(case, speed=None, with_state: bool = False, walls: d
     case : Case.  speed : inner-ring speed [rad/s] (None: the case's).
     walls : body temperatures [K] of the film walls, keys ``inner_ring``, ``outer_ring``, ``balls``, ``cage`` (the
         thermal network's, ``hsbearing friction --thermal``); None: every wall at ``lubricant.temperature``.
+    race_temperatures : (T_inner, T_outer) [K], the race contacts' inlet temperatures (traction, EHL rolling and the
+        starvation band's films of each race at its own; ``build_model``); None: both at lubricant.temperature.
     bands : False for a caller that reads only the sources and totals (a quasi-static sweep point): the starvation
         band, the costly one (0.1-0.25 s), is not computed and no ``*_band_low``/``*_band_high`` key is returned
         (never half a set of bands).
@@ -238,7 +241,7 @@ def quasi_static_power_loss(case, speed=None, with_state: bool = False, walls: d
 
     if speed is not None:
         case = case.with_overrides(**{"operating.inner_speed": f"{float(speed)} rad/s"})
-    m = build_model(case)
+    m = build_model(case, race_temperatures=race_temperatures)
     aux, gaux = m.outputs(m.y0)
     pv = power_variables(aux[None], gaux[None])
     out = {s: float(pv[f"power_loss_{s}"][0]) for s in SOURCES}
@@ -255,8 +258,8 @@ def quasi_static_power_loss(case, speed=None, with_state: bool = False, walls: d
             del out[key]
     w = abs(case.operating.inner_speed - case.operating.outer_speed)
     out["friction_torque"] = out["power_loss"] / w if w > 0 else float("nan")
-    if with_state:  # the quasi-static Dataset the state comes from, and the case at that speed
-        out["state"], out["case"] = m.info["quasistatic"], case
+    if with_state:  # the quasi-static Dataset the state comes from, the case at that speed, the race temperatures
+        out["state"], out["case"], out["race_temperatures"] = m.info["quasistatic"], case, race_temperatures
     return out
 
 
@@ -438,7 +441,8 @@ def _starvation_band(case, m, out, aux):
     seen = []  # (Hbar, m, m*) of every loaded contact, for the investigation tools
     cache = {}
     qs = m.info["quasistatic"]
-    st = quasi_static_contact_state(case, qs)
+    # each race's films at its own contact inlet temperature (as the kernel's F_R; None: lubricant.temperature)
+    st = quasi_static_contact_state(case, qs, race_temperatures=m.info.get("race_temperatures"))
     g = derive(case)
     for side, col in (("inner", "P_ehl_i"), ("outer", "P_ehl_o")):
         P = aux[:, AUX_INDEX[col]]
@@ -616,9 +620,10 @@ def require_angular_contact(case, what: str, *, source: str | None = None, key: 
 
 def _thermal_row(case, w):
     """``hsbearing friction --thermal`` at inner-ring speed w [rad/s]: the thermal equilibrium of the case at w, then
-    the quasi-static power loss with its temperatures at the contacts: the race contacts (traction, EHL rolling, film
-    viscosity) at the network's lubricant temperature (T_ir + T_or + 2 T_b)/4 -- one inlet temperature for both
-    race contacts, the rule of the network's fixed point -- and the guide-land and pocket films between their walls'
+    the quasi-static power loss with its temperatures at the contacts: each race's contacts (traction, EHL rolling,
+    film viscosity) at its own inlet temperature, (T_ir + T_b)/2 inner and (T_or + T_b)/2 outer
+    (:func:`race_inlet_temperatures`), the quasi-static state, drag, jet and windage at the network's lubricant
+    temperature (T_ir + T_or + 2 T_b)/4, and the guide-land and pocket films between their walls'
     node temperatures (cage / guiding ring; ball / cage).  A CaseError naming lubricant.oil_flow_rate if the network
     has no steady state at w."""
     from hsbearing.systems.angular_contact.thermal import thermal_equilibrium
@@ -632,20 +637,39 @@ def _thermal_row(case, w):
     T = {"inner_ring": float(th.inner_ring_temperature), "outer_ring": float(th.outer_ring_temperature),
          "balls": float(th.ball_temperature), "cage": float(th.cage_temperature)}
     T_lub = float(th.lubricant_temperature)
+    T_i, T_o = race_inlet_temperatures(T["inner_ring"], T["outer_ring"], T["balls"])
     r = quasi_static_power_loss(cw.with_overrides(**{"lubricant.temperature": f"{T_lub} K"}), None, with_state=True,
-                                walls=T)
-    r["thermal"] = dict(T, oil=float(th.oil_outlet_temperature), contact=T_lub, iterations=float(th.fixed_point_iterations))
+                                walls=T, race_temperatures=(T_i, T_o))
+    r["thermal"] = dict(T, oil=float(th.oil_outlet_temperature), contact=0.5 * (T_i + T_o), inner_contact=T_i,
+                        outer_contact=T_o, lubricant=T_lub, iterations=float(th.fixed_point_iterations))
     return r
 
 
-THERMAL_RULE = ("hsbearing friction --thermal: per speed, the thermal network's equilibrium (hsbearing thermal); race "
-                "contacts (traction, EHL rolling, EHL film) at contact_inlet_temperature = (T_inner_ring + T_outer_ring + "
-                "2 T_balls)/4, the same for the inner and outer race; guide-land film between thermal_cage_temperature "
-                "and the guiding ring's node temperature, pocket films between thermal_ball_temperature and "
-                "thermal_cage_temperature (friction.thermal_films); drag, jet and windage with the oil at "
-                "contact_inlet_temperature")
-for _n, _l in (("contact_inlet_temperature", "temperature of the race contacts' oil (traction, EHL rolling, viscosity) "
-                "with --thermal: the thermal network's (T_ir + T_or + 2 T_b)/4"),
+def race_inlet_temperatures(T_inner_ring: float, T_outer_ring: float, T_balls: float) -> tuple[float, float]:
+    """Contact inlet temperatures [K] of the inner and outer race contacts from the bearing's surface temperatures:
+    the oil drawn into a ball/race contact lies between the two surfaces that meet there and takes their mean,
+    T_in,i = (T_ir + T_b)/2 and T_in,o = (T_or + T_b)/2 -- this package's rule (an assumption, docs/power_loss.md
+    "Temperatures at the contacts"): an isothermal inlet at the mean of its two walls, as the guide-land and pocket
+    films take their walls (cage_films).  Their mean is the network's (T_ir + T_or + 2 T_b)/4."""
+    return 0.5 * (T_inner_ring + T_balls), 0.5 * (T_outer_ring + T_balls)
+
+
+THERMAL_RULE = ("hsbearing friction --thermal: per speed, the thermal network's equilibrium (hsbearing thermal); each "
+                "race's contacts (traction, EHL rolling, EHL film) at their own inlet temperature, the inlet oil between "
+                "the ball and that race's surface: inner_contact_inlet_temperature = (T_inner_ring + T_balls)/2, "
+                "outer_contact_inlet_temperature = (T_outer_ring + T_balls)/2 (contact_inlet_temperature is their mean); "
+                "guide-land film between thermal_cage_temperature and the guiding ring's node temperature, pocket films "
+                "between thermal_ball_temperature and thermal_cage_temperature (friction.thermal_films); the quasi-static "
+                "state, drag, jet and windage with the oil at the network's lubricant temperature, which is "
+                "contact_inlet_temperature = (T_inner_ring + T_outer_ring + 2 T_balls)/4 to the fixed point's tolerance")
+for _n, _l in (("contact_inlet_temperature", "mean of inner_contact_inlet_temperature and "
+                "outer_contact_inlet_temperature with --thermal, (T_ir + T_or + 2 T_b)/4 (kept for compatibility: the "
+                "race contacts use their own race's value); the quasi-static state, drag, jet and windage use the "
+                "network's lubricant temperature, equal to it to the fixed point's tolerance"),
+               ("inner_contact_inlet_temperature", "inlet temperature of the inner race contacts (traction, EHL rolling, "
+                "film viscosity) with --thermal: (T_ir + T_b)/2 of the thermal network"),
+               ("outer_contact_inlet_temperature", "inlet temperature of the outer race contacts (traction, EHL rolling, "
+                "film viscosity) with --thermal: (T_or + T_b)/2 of the thermal network"),
                ("thermal_inner_ring_temperature", "inner ring node temperature of the thermal network (--thermal)"),
                ("thermal_outer_ring_temperature", "outer ring node temperature of the thermal network (--thermal)"),
                ("thermal_ball_temperature", "ball node temperature of the thermal network (--thermal)"),
@@ -683,8 +707,8 @@ def friction_angular_contact(case, speeds, *, thermal: bool = False):
     warns = []
     for r in rows:
         q = r.pop("state")
-        for x in contact_state.warnings_for(q.assign(**{k: ("ball", v) for k, v in
-                                                        contact_state.quasi_static_contact_state(r.pop("case"), q).items()}), case):
+        cs = contact_state.quasi_static_contact_state(r.pop("case"), q, race_temperatures=r.pop("race_temperatures"))
+        for x in contact_state.warnings_for(q.assign(**{k: ("ball", v) for k, v in cs.items()}), case):
             if x not in warns:
                 warns.append(x)
     data = {f"qs_power_loss_{s}": np.array([r[s] for r in rows]) for s in tuple(SOURCES) + CAVITY_SOURCES}
@@ -699,7 +723,8 @@ def friction_angular_contact(case, speeds, *, thermal: bool = False):
         data[name] = np.array([r[key] for r in rows])
     data["qs_power_loss"] = np.array([r["power_loss"] for r in rows])
     if thermal:
-        for name, key in (("contact_inlet_temperature", "contact"), ("thermal_inner_ring_temperature", "inner_ring"),
+        for name, key in (("contact_inlet_temperature", "contact"), ("inner_contact_inlet_temperature", "inner_contact"),
+                          ("outer_contact_inlet_temperature", "outer_contact"), ("thermal_inner_ring_temperature", "inner_ring"),
                           ("thermal_outer_ring_temperature", "outer_ring"), ("thermal_ball_temperature", "balls"),
                           ("thermal_cage_temperature", "cage"), ("thermal_oil_outlet_temperature", "oil")):
             data[name] = np.array([r["thermal"][key] for r in rows])

@@ -443,7 +443,8 @@ _ATTR_UNITS = {"network_residual_W": "W", "network_G_ball_inner": "W/K", "networ
                **{f"network_{k}": "m" for k in ("D", "dm", "B", "d", "Do", "DH", "BH", "Ls")},
                **{f"network_{k}": "m^2" for k in ("A_ir", "A_or", "A_balls", "A_cage", "A_housing")}}
 _ATTR_UNITS.update({f"thermal_{k}": "K" for k in ("lubricant_temperature", "inner_ring_temperature", "outer_ring_temperature",
-                                                  "ball_temperature", "cage_temperature", "oil_outlet_temperature")})
+                                                  "ball_temperature", "cage_temperature", "oil_outlet_temperature",
+                                                  "inner_contact_inlet_temperature", "outer_contact_inlet_temperature")})
 for _a, _u in _ATTR_UNITS.items():  # the thermal_* ones: the attrs of a run archive of hsbearing run --thermal
     register_attr_units(_a, _u)
 

@@ -120,8 +120,12 @@ def test_thermal_needs_a_flow():
 
 
 def test_run_thermal_starts_at_the_equilibrium_temperature(monkeypatch, capsys, tmp_path):
-    """hsbearing run --thermal hands the dynamics the case at the thermal equilibrium's lubricant temperature."""
+    """hsbearing run --thermal hands the dynamics the case at the thermal equilibrium's lubricant temperature and
+    each race's contact inlet temperature (T_ring + T_ball)/2."""
     import hsbearing
+    from hsbearing import systems
+    from hsbearing.case import load_case
+    from hsbearing.systems.angular_contact.thermal import thermal_equilibrium
 
     seen = {}
 
@@ -130,14 +134,21 @@ def test_run_thermal_starts_at_the_equilibrium_temperature(monkeypatch, capsys, 
 
     def fake_simulate(case, **kw):
         seen["T"] = case.lubricant.temperature
+        seen["races"] = kw.get("race_temperatures")
         raise Stop
 
     monkeypatch.setattr(hsbearing, "simulate", fake_simulate)
+    monkeypatch.setattr(systems, "simulate", fake_simulate)
     with pytest.raises(Stop):
         cli.main(["run", "zhang2016", "--thermal", "--duration", "1ms", "-o", str(tmp_path / "r.nc"), "-q", "--no-figure"])
     out = capsys.readouterr().out
     assert "thermal equilibrium: lubricant temperature" in out
     assert seen["T"] - 273.15 == pytest.approx(131.81, abs=0.05)  # docs/thermal.md (regression of our own network)
+    assert "contact inlet temperatures: inner race" in out
+    th = thermal_equilibrium(load_case("zhang2016"))
+    Tb = float(th.ball_temperature)
+    assert seen["races"] == pytest.approx((0.5 * (float(th.inner_ring_temperature) + Tb),
+                                           0.5 * (float(th.outer_ring_temperature) + Tb)), rel=1e-12)
 
 
 def test_oil_convection_follows_the_oil_temperature_for_a_lubricant_file():

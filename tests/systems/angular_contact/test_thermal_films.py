@@ -76,8 +76,8 @@ def test_hotter_walls_thin_the_films(case):
 
 
 def test_friction_thermal_feeds_the_network_temperatures(tmp_path, capsys):
-    """hsbearing friction --thermal: per speed the thermal equilibrium's temperatures reach the contacts (race contacts
-    at its lubricant temperature, films between their walls' nodes); the archive holds the temperatures used."""
+    """hsbearing friction --thermal: per speed the thermal equilibrium's temperatures reach the contacts (each race's
+    contacts at (T_ring + T_ball)/2, films between their walls' nodes); the archive holds the temperatures used."""
     from hsbearing import cli
     from hsbearing.results import open_run
     from hsbearing.systems.angular_contact.thermal import thermal_equilibrium
@@ -90,14 +90,18 @@ def test_friction_thermal_feeds_the_network_temperatures(tmp_path, capsys):
     case = load_case("zhang2016")
     th = thermal_equilibrium(case)
     T_lub = float(th.lubricant_temperature)
-    assert float(ds.contact_inlet_temperature[0]) == pytest.approx(T_lub, rel=1e-12)
+    T_mean = 0.25 * (float(th.inner_ring_temperature) + float(th.outer_ring_temperature) + 2 * float(th.ball_temperature))
+    assert float(ds.contact_inlet_temperature[0]) == pytest.approx(T_mean, rel=1e-12)  # the mean of the two races
+    assert float(ds.contact_inlet_temperature[0]) == pytest.approx(T_lub, abs=0.05)  # = the network's, to its tolerance
     assert float(ds.thermal_cage_temperature[0]) == pytest.approx(float(th.cage_temperature), rel=1e-12)
     assert float(ds.land_film_wall_temperature_a[0]) == pytest.approx(float(th.cage_temperature), rel=1e-12)
     assert float(ds.land_film_wall_temperature_b[0]) == pytest.approx(float(th.outer_ring_temperature), rel=1e-12)
     assert float(ds.pocket_film_wall_temperature_a[0]) == pytest.approx(float(th.ball_temperature), rel=1e-12)
     walls = {"inner_ring": float(th.inner_ring_temperature), "outer_ring": float(th.outer_ring_temperature),
              "balls": float(th.ball_temperature), "cage": float(th.cage_temperature)}
-    r = rating.quasi_static_power_loss(case.with_overrides(**{"lubricant.temperature": f"{T_lub} K"}), walls=walls)
+    T_races = rating.race_inlet_temperatures(walls["inner_ring"], walls["outer_ring"], walls["balls"])
+    r = rating.quasi_static_power_loss(case.with_overrides(**{"lubricant.temperature": f"{T_lub} K"}), walls=walls,
+                                       race_temperatures=T_races)
     assert float(ds.qs_power_loss[0]) == pytest.approx(r["power_loss"], rel=1e-9)
     plain = open_run(_plain(tmp_path))
     assert "contact_inlet_temperature" not in plain
@@ -128,7 +132,7 @@ def test_run_thermal_records_the_temperatures_it_used(monkeypatch, tmp_path):
     import xarray as xr
 
     import hsbearing
-    from hsbearing import cli
+    from hsbearing import cli, systems
     from hsbearing.cli import commands
 
     seen = {}
@@ -141,13 +145,15 @@ def test_run_thermal_records_the_temperatures_it_used(monkeypatch, tmp_path):
         return 0
 
     monkeypatch.setattr(hsbearing, "simulate", fake_simulate)
+    monkeypatch.setattr(systems, "simulate", fake_simulate)  # --thermal: each race's inlet temperature to the model
     monkeypatch.setattr(commands, "_finish_run", fake_finish)
     assert cli.main(["run", "zhang2016", "--thermal", "--duration", "1ms", "-o", str(tmp_path / "r.nc"), "-q",
                      "--no-figure"]) == 0
     a = seen["attrs"]
     assert "thermal network" in a["contact_temperatures"]
     for k in ("thermal_lubricant_temperature", "thermal_inner_ring_temperature", "thermal_outer_ring_temperature",
-              "thermal_ball_temperature", "thermal_cage_temperature", "thermal_oil_outlet_temperature"):
+              "thermal_ball_temperature", "thermal_cage_temperature", "thermal_oil_outlet_temperature",
+              "thermal_inner_contact_inlet_temperature", "thermal_outer_contact_inlet_temperature"):
         assert 273.15 < a[k] < 600.0
     T = a["thermal_lubricant_temperature"]
     assert T == pytest.approx(0.25 * (a["thermal_inner_ring_temperature"] + a["thermal_outer_ring_temperature"]
