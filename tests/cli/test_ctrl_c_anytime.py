@@ -48,7 +48,8 @@ def _hsbearing_started(pid: int) -> bool:
 
 
 def _start(out: Path, cmd):
-    env = dict(os.environ, PYTHONPATH=str(ROOT))
+    # faulthandler on: a command that hangs is sent SIGABRT by _communicate, which then prints every thread's stack
+    env = dict(os.environ, PYTHONPATH=str(ROOT), PYTHONFAULTHANDLER="1")
     proc = subprocess.Popen([sys.executable, "-m", "hsbearing.cli", *cmd, "-o", str(out)], stdout=subprocess.PIPE,
                             stderr=subprocess.PIPE, text=True, env=env, cwd=str(out.parent),
                             preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
@@ -88,11 +89,26 @@ def test_handled_interrupt_out_of_string_exec_code_exits_130_under_python_m(tmp_
     assert "Traceback" not in p.stderr
 
 
+def _communicate(proc, timeout: float = 300.0):
+    """proc.communicate; a command still running after ``timeout`` s is aborted (SIGABRT: with faulthandler on it
+    prints the stack of every thread) and the test fails with that dump, so that a hang says where it hung."""
+    try:
+        return proc.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        proc.send_signal(signal.SIGABRT)
+        try:
+            _, err = proc.communicate(timeout=30)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+            _, err = proc.communicate()
+        pytest.fail(f"{' '.join(proc.args[3:])} still running {timeout:g} s after start/SIGINT; stacks:\n{err[-6000:]}")
+
+
 def _campaign(tmp_path, n: int, seed: int, cmd):
     ref_dir = tmp_path / "ref"
     ref_dir.mkdir(parents=True)
     proc, t_ready = _start(ref_dir / "run.nc", cmd)
-    _, err = proc.communicate(timeout=300)
+    _, err = _communicate(proc)
     life = time.monotonic() - t_ready
     assert proc.returncode == 0, err[-600:]
     rng = random.Random(seed)
@@ -107,7 +123,7 @@ def _campaign(tmp_path, n: int, seed: int, cmd):
             time.sleep(max(0.0, t_ready + delay - time.monotonic()))
             if proc.poll() is None:
                 proc.send_signal(signal.SIGINT)
-            _, err = proc.communicate(timeout=300)
+            _, err = _communicate(proc)
         finally:
             if proc.poll() is None:
                 proc.kill()
