@@ -37,13 +37,14 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 
 
-def own_run_states(span: float) -> np.ndarray:
-    """51 states of a run of the default case with the physical law (compiled), every 80th of 4081."""
+def own_run_states(span: float, law: str = "eyring") -> np.ndarray:
+    """51 states of a run of the default case with the traction law ``law`` (compiled; default the physical law),
+    every 80th of 4081 (also used by bench_rhs_cost.py --own-run)."""
     import hsbearing
     from hsbearing.solvers.cvode import integrate
     from hsbearing.systems.angular_contact.dynamics import build_model
 
-    case = hsbearing.load_case("zhang2016", **{"lubricant.traction_law": "eyring"})
+    case = hsbearing.load_case("zhang2016", **{"lubricant.traction_law": law})
     m = build_model(case)
     sim = case.simulation
     res = integrate(m.rhs, m.y0, np.linspace(0.0, span, 4081), rtol=float(sim.rtol),

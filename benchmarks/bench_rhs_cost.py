@@ -125,12 +125,9 @@ def _ratio(a, K, build_model, hsbearing) -> int:
           a.ratio: build_model(hsbearing.load_case("zhang2016", **{"lubricant.traction_law": a.ratio}))}
     print(f"traction laws: the case's own vs {a.ratio}")
     if a.own_run:
-        from hsbearing.solvers.cvode import integrate
+        from bench_eyring_rhs_strips import own_run_states  # the same run, one definition (this script's directory)
 
-        m, sim = ms[a.ratio], hsbearing.load_case("zhang2016").simulation
-        res = integrate(m.rhs, m.y0, np.linspace(0.0, a.own_run, 4081), rtol=float(sim.rtol),
-                        atol=m.layout.atol(float(sim.atol)), jacfn=m.jac)
-        Y = np.concatenate([ms["own"].y0[None, :], np.asarray(res.y)[80::80]])
+        Y = np.concatenate([ms["own"].y0[None, :], own_run_states(a.own_run, a.ratio)])
         print(f"states: y0 and 51 states of a {a.own_run:g} s run of {a.ratio}")
     else:
         Y = np.concatenate([ms["own"].y0[None, :], np.load(STATES)["y_default"]])
