@@ -317,8 +317,9 @@ def _cavity_losses(case, m, out):
     jet = windage = 0.0
     if fr.cavity_losses == "on":
         # with the balance the supplied oil's acceleration is inside the drag (its throughflow term): not counted twice
-        if lub.oil_flow_rate is not None and lub.lubrication in ("oil_jet", "oil_air") and not balance:
-            jet = churning.jet_oil_acceleration_power(lub.density * lub.oil_flow_rate, v)[0]
+        m_oil = _supplied_oil_mass_flow(lub)
+        if m_oil > 0.0 and not balance:
+            jet = churning.jet_oil_acceleration_power(m_oil, v)[0]
         c = case.cage
         w_c = 2.0 * v / g.dm  # the cage's angular velocity at the quasi-static state
         if c.bore_diameter and c.outside_diameter and rho_e > 0.0:
@@ -338,6 +339,14 @@ def _cavity_losses(case, m, out):
     out["mixture_corotation_balance_high"] = bal["k_high"] if bal else nan
     P_bal = [geo * c["P_balls"] + c["P_inner"] + c["P_outer"] for c in bal["corners"]] if bal else [0.0]
     out["drag_balance_band_low"], out["drag_balance_band_high"] = min(P_bal), max(P_bal)
+
+
+def _supplied_oil_mass_flow(lub) -> float:
+    """Mass flow [kg/s] of the oil supplied into the cavity: density x ``oil_flow_rate`` for a jet or air-oil supply
+    with a flow rate, else 0 (the jet-oil acceleration term and the mixture balance's throughflow)."""
+    if lub.oil_flow_rate is None or lub.lubrication not in ("oil_jet", "oil_air"):
+        return 0.0
+    return lub.density * lub.oil_flow_rate
 
 
 def _mixture_balance(case, m, g, v, rho_e, mu_e):
@@ -367,8 +376,7 @@ def _mixture_balance(case, m, g, v, rho_e, mu_e):
     if not r_i < r_m < r_o:
         r_i, r_o = r_m * (1.0 - gamma), r_m * (1.0 + gamma)
     length = b.width or g.D
-    m_oil = lub.density * lub.oil_flow_rate if (lub.oil_flow_rate is not None
-                                                and lub.lubrication in ("oil_jet", "oil_air")) else 0.0
+    m_oil = _supplied_oil_mass_flow(lub)
     m_air = 2.0 * drag_law.AIR_DENSITY * churning.free_disc_pumped_flow(op.inner_speed, r_i,
                                                                         drag_law.AIR_VISCOSITY / drag_law.AIR_DENSITY)
     C_fixed = m.info["options"]["drag_coefficient"]
