@@ -25,7 +25,7 @@ import xarray as xr
 
 from hsbearing.case.load import special_file_kind
 
-__all__ = ["Variable", "VARIABLES", "register", "make_dataset", "write_netcdf", "open_run", "solver_attrs", "atomic_write",
+__all__ = ["Variable", "VARIABLES", "register", "make_dataset", "write_netcdf", "open_run", "solver_attrs", "atomic_write", "sigint_held_during_netcdf_io",
            "ATTR_UNITS", "register_attr_units", "with_attr_units", "check_output_path"]
 
 
@@ -395,15 +395,16 @@ def write_netcdf(ds: xr.Dataset, path: str | os.PathLike, *, fallback: bool = Tr
         for name, var in ds.variables.items()
         if var.dtype.kind in "fiub" and var.ndim > 0
     }
-    try:
-        with atomic_write(path) as tmp:
-            ds.to_netcdf(tmp, engine="netcdf4", format="NETCDF4", encoding=encoding)
-    except (OSError, RuntimeError) as exc:  # netCDF4 reports a full disk / EFBIG as RuntimeError("NetCDF: HDF error")
-        from hsbearing.errors import OutputWriteError
+    with sigint_held_during_netcdf_io():  # a Ctrl-C inside xarray's netCDF backend can leave its lock taken
+        try:
+            with atomic_write(path) as tmp:
+                ds.to_netcdf(tmp, engine="netcdf4", format="NETCDF4", encoding=encoding)
+        except (OSError, RuntimeError) as exc:  # netCDF4 reports a full disk / EFBIG as RuntimeError("NetCDF: HDF error")
+            from hsbearing.errors import OutputWriteError
 
-        reason = _write_failure_reason(exc, final_target(path).parent)
-        saved = _write_fallback(ds, path, encoding) if fallback else None
-        raise OutputWriteError(path, reason, saved) from None
+            reason = _write_failure_reason(exc, final_target(path).parent)
+            saved = _write_fallback(ds, path, encoding) if fallback else None
+            raise OutputWriteError(path, reason, saved) from None
     return path
 
 
@@ -481,6 +482,41 @@ def deferred_sigint():
         signal.signal(signal.SIGINT, old)
 
 
+@contextlib.contextmanager
+def sigint_held_during_netcdf_io():
+    """Hold Ctrl-C off during a netCDF read or write and deliver it when the I/O has ended.
+
+    xarray's netCDF backend takes a combination of locks (netCDF-C's, HDF5's and, for a write, the file's:
+    ``xarray.backends.locks.CombinedLock``) one after the other in a Python loop.  A KeyboardInterrupt raised by
+    the SIGINT handler between that loop's acquisitions and the ``with`` statement that owns them leaves the locks
+    taken; ``to_netcdf``'s ``finally: store.close()`` (or the ``with open_dataset(...)`` exit) then waits for them
+    forever.  Seen once in about 150 interrupted commands (the Ctrl-C campaign, tests/cli/test_ctrl_c_anytime.py:
+    a ``quasistatic`` blocked in ``xarray.backends.locks.acquire`` under ``write_netcdf``); reproduced
+    deterministically in tests/test_netcdf_interrupt.py.  So no KeyboardInterrupt is raised inside: a SIGINT
+    received meanwhile is handed to the previous handler once the block has ended (``signal.default_int_handler``:
+    a KeyboardInterrupt there; the collector of :func:`deferred_sigint`: one more collected Ctrl-C), whether the
+    block ended normally or by an exception.  A write that completes is kept (complete archive, then the
+    interrupt).  Only in the main thread (signal handlers can only be set there, and only it receives
+    KeyboardInterrupt); elsewhere nothing changes."""
+    import signal
+    import threading
+
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    got: list[int] = []
+    old = signal.signal(signal.SIGINT, lambda signum, frame: got.append(signum))
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, old)
+        if got:
+            if callable(old):
+                old(signal.SIGINT, None)
+            elif old == signal.SIG_DFL:
+                os.kill(os.getpid(), signal.SIGINT)
+
+
 def open_run(path: str | os.PathLike) -> xr.Dataset:
     """Open an archive written by hsbearing, loaded into memory (the file is closed).
 
@@ -496,7 +532,7 @@ def open_run(path: str | os.PathLike) -> xr.Dataset:
     if not Path(path).is_file():
         raise CaseError(name, None, "no such archive" if not Path(path).exists() else "not a file")
     try:
-        with xr.open_dataset(path, engine="netcdf4") as ds:
+        with sigint_held_during_netcdf_io(), xr.open_dataset(path, engine="netcdf4") as ds:
             ds = ds.load()
     except Exception as exc:  # noqa: BLE001 - any netCDF/HDF failure means: not an archive we can read
         raise CaseError(name, None, f"not a readable netCDF archive ({type(exc).__name__})") from None

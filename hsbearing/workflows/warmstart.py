@@ -103,7 +103,9 @@ class WarmNearest:
             return simulate(case, duration=duration)
         src = self.seeds[nearest(sorted(self.seeds), idx)]
         try:
-            with xr.open_dataset(src) as nb:
+            from hsbearing.results import sigint_held_during_netcdf_io
+
+            with sigint_held_during_netcdf_io(), xr.open_dataset(src) as nb:
                 nb = nb[["final_state"]].assign_attrs(nb.attrs).load()
         except (OSError, KeyError, ValueError):
             return simulate(case, duration=duration)  # the seed failed: this point runs cold

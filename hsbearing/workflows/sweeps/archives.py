@@ -14,7 +14,7 @@ import xarray as xr
 from hsbearing.case import (
     CaseError,
 )
-from hsbearing.results import write_netcdf
+from hsbearing.results import sigint_held_during_netcdf_io, write_netcdf
 from hsbearing.workflows.sweeps.plan import LOCK_NAME, Point, SweepPlan
 from hsbearing.workflows.sweeps.points import point_summary, scalar_value
 
@@ -25,7 +25,7 @@ def archive_is_complete(path: str | os.PathLike) -> bool:
     """True if ``path`` opens as netCDF, carries the ``status`` attribute and every variable's data reads
     back (HDF5 checksums and zlib streams verified: a corrupted archive is not complete)."""
     try:
-        with xr.open_dataset(path, engine="netcdf4") as ds:
+        with sigint_held_during_netcdf_io(), xr.open_dataset(path, engine="netcdf4") as ds:
             if "status" not in ds.attrs:
                 return False
             ds.load()
@@ -46,7 +46,7 @@ def read_record(path: Path, expected_hash: str | None = None) -> dict | None:
     result: None, so the point is recomputed.
     """
     try:
-        with xr.open_dataset(path, engine="netcdf4") as ds:
+        with sigint_held_during_netcdf_io(), xr.open_dataset(path, engine="netcdf4") as ds:
             if "status" not in ds.attrs:
                 return None
             if expected_hash is not None and str(ds.attrs.get("sweep_point_hash", "")) != expected_hash:
