@@ -62,6 +62,17 @@ References
     In the laminar limit without balls, throughflow or side walls the two half-gap Couette moments balance at
     exactly the Couette angular velocity at r_m ([1]): the Couette solution restricted to r_i .. r_m is the
     Couette flow between those radii.
+[7] The wall moments of a gap with a core (derived here): Bilgen & Boulos's C_M ([4]) is the moment G of a WHOLE
+    gap r1 .. r2 whose walls differ by d_omega; at high Reynolds number the gap is a core in (near) solid-body
+    rotation between two wall layers (Batchelor's inviscid core with boundary layers, the picture of [4]'s
+    supercritical data), and in steady state both layers transmit the same G (d/dr (r^2 tau) = 0).  A layer's shear
+    follows the correlation's own wall law: G ~ Re^-0.2 d_omega^2 gives tau ~ rho^0.8 mu^0.2 (r d)^1.8 s^-0.2 with
+    d the layer's jump, so 2 pi r^2 L tau = G at both walls makes d ~ r^-(19/9): d_1 / d_2 = (r2 / r1)^(19/9), and
+    d_1 + d_2 = d_omega.  Hence the moment of the wall at r_w on a core d slower than it (r_o the other wall) is
+    G_BB at the full-gap jump d (1 + (r_w / r_o)^(19/9)); the two layers in series reproduce G_BB(d_omega) exactly.
+    (The former use of [4] across each HALF gap with the layer's own jump gave ~1/3.5 of this, 2^1.8 x 2^0.1.)
+    Checked against our own finite-difference solution of the turbulent Couette flow with a mixing length
+    (Nikuradse's distribution, van Driest's damping) across the gap (tests/models/test_churning.py).
 """
 
 from __future__ import annotations
@@ -73,7 +84,8 @@ from hsbearing.models.ball_bearing.drag import ball_drag_coefficient
 __all__ = ["couette_mixture_angular_velocity", "couette_corotation_fraction", "ball_drag_power",
            "jet_oil_acceleration_power", "rotating_annulus_windage_moment", "DISC_LAMINAR_CM", "DISC_TURBULENT_CM",
            "drag_band", "taylor_couette_gap_moment", "free_disc_pumped_flow", "mixture_momentum_balance",
-           "VON_KARMAN_H_INF", "FREE_DISC_TURBULENT_CW"]
+           "VON_KARMAN_H_INF", "FREE_DISC_TURBULENT_CW", "taylor_couette_wall_moment",
+           "WALL_SPLIT_EXPONENT"]
 
 #: c_M Re^1/2 of a free disc, both faces, laminar ([3]: wall shear 0.6159 rho nu^1/2 omega^3/2 r per face, so
 #: M = 2 x 2 pi 0.6159 rho nu^1/2 omega^3/2 R^4 / 4 = 1.935 rho nu^1/2 omega^3/2 R^4 = 3.87 Re^-1/2 (1/2 rho omega^2 R^5))
@@ -86,6 +98,9 @@ VON_KARMAN_H_INF = 0.8845
 FREE_DISC_TURBULENT_CW = 0.219
 #: Bilgen & Boulos regimes ([4], recalled): (upper Re of the regime, coefficient, Re exponent)
 _BB_REGIMES = ((64.0, 10.0, -1.0), (500.0, 2.0, -0.6), (1.0e4, 1.03, -0.5), (math.inf, 0.065, -0.2))
+#: the exponent p of the split of a turbulent gap's jump between its two wall layers, d_in / d_out = (r_o / r_i)^p
+#: ([7]: equal moments 2 pi r^2 L tau and tau ~ rho^0.8 mu^0.2 (r d)^1.8 s^-0.2, the wall law of the Re^-0.2 regime)
+WALL_SPLIT_EXPONENT = 19.0 / 9.0
 
 
 def couette_mixture_angular_velocity(omega_i: float, omega_o: float, r_i: float, r_o: float, r: float) -> float:
@@ -214,14 +229,46 @@ def taylor_couette_gap_moment(d_omega: float, r1: float, r2: float, length: floa
     w = abs(d_omega)
     m = 4.0 * math.pi * mu * length * r1 * r1 * r2 * r2 * w / (r2 * r2 - r1 * r1)  # [1]
     if turbulent and rho > 0.0:
-        s = r2 - r1
-        Re = rho * w * r1 * s / mu
-        if Re >= 64.0:
-            for re_max, c, e in _BB_REGIMES:
-                if Re < re_max:
-                    C_M = c * (s / r1) ** 0.3 * Re**e  # [4]
-                    break
-            m = max(m, 0.5 * C_M * math.pi * rho * w * w * r1**4 * length)
+        m = max(m, _bilgen_boulos_moment(w, r1, r2, length, rho, mu))
+    return math.copysign(m, d_omega)
+
+
+def _bilgen_boulos_moment(w: float, r1: float, r2: float, length: float, rho: float, mu: float) -> float:
+    """|M| of Bilgen & Boulos's correlation for the whole gap r1 .. r2 at the jump w >= 0 ([4]); 0 below Re = 64."""
+    s = r2 - r1
+    Re = rho * w * r1 * s / mu
+    if Re < 64.0:
+        return 0.0
+    for re_max, c, e in _BB_REGIMES:
+        if Re < re_max:
+            C_M = c * (s / r1) ** 0.3 * Re**e  # [4]
+            break
+    return 0.5 * C_M * math.pi * rho * w * w * r1**4 * length
+
+
+def taylor_couette_wall_moment(d_omega: float, r_wall: float, r_other: float, r_core: float, length: float,
+                               rho: float, mu: float, turbulent: bool = True) -> float:
+    """Moment [N m] that ONE wall of a gap exerts on the gap's core in solid-body rotation, the wall at radius r_wall
+    turning d_omega = omega_wall - omega_core [rad/s] faster than the core, the gap closed by a wall at r_other; signed
+    like d_omega ([7]).
+
+    Turbulent: the full-gap moment of Bilgen & Boulos (:func:`taylor_couette_gap_moment` between min and max of
+    r_wall, r_other) at the full-gap jump d_omega (1 + (r_wall / r_other)^(19/9)) -- the jump the whole gap would need
+    for this wall's layer to carry d_omega, when both layers transmit the same moment and each follows the
+    correlation's wall law tau ~ (r d_omega)^1.8 ([7]).  Laminar: the exact circular Couette moment across
+    r_wall .. r_core (the wall to the core's radius, [1]).  ``turbulent``: the larger of the two, else the laminar.
+    """
+    if not (r_wall > 0.0 and r_other > 0.0 and r_wall != r_other):
+        raise ValueError("need r_wall > 0, r_other > 0 and r_wall != r_other")
+    if not min(r_wall, r_other) < r_core < max(r_wall, r_other):
+        raise ValueError("the core radius must lie between the walls")
+    if d_omega == 0.0:
+        return 0.0
+    r1, r2 = min(r_wall, r_core), max(r_wall, r_core)
+    m = abs(taylor_couette_gap_moment(d_omega, r1, r2, length, rho, mu, turbulent=False))  # [1]
+    if turbulent and rho > 0.0:
+        full = abs(d_omega) * (1.0 + (r_wall / r_other) ** WALL_SPLIT_EXPONENT)  # [7]
+        m = max(m, _bilgen_boulos_moment(full, min(r_wall, r_other), max(r_wall, r_other), length, rho, mu))
     return math.copysign(m, d_omega)
 
 
@@ -242,11 +289,13 @@ def free_disc_pumped_flow(omega: float, R: float, nu: float) -> float:
 def mixture_momentum_balance(*, Z: int, D: float, r_m: float, r_i: float, r_o: float, length: float,
                              omega_i: float, omega_o: float, omega_c: float, rho_e: float, mu_e: float,
                              drag_coefficient, mass_flow: float, side_walls: bool = False,
-                             turbulent: bool = True, balls: bool = True) -> dict:
+                             turbulent: bool = True, balls: bool = True, wall_law: str = "full_gap") -> dict:
     """Steady swirl of the cavity mixture from its angular-momentum balance ([6]).
 
     Walls: the inner ring's surface at r_i turning at omega_i, the outer ring's at r_o turning at omega_o (both of
-    axial length ``length``), each coupled to the mixture's core at r_m through :func:`taylor_couette_gap_moment`;
+    axial length ``length``), each coupled to the mixture's core through :func:`taylor_couette_wall_moment` (the
+    full gap r_i .. r_o, [7]; ``wall_law = "half_gap"``: the former :func:`taylor_couette_gap_moment` across r_i .. r_m
+    and r_m .. r_o with each layer's own jump, kept for comparison only);
     with ``side_walls`` the two side openings r_i .. r_o as stationary walls (:func:`rotating_annulus_windage_moment`
     at the core's angular velocity).  Balls: Z balls on the pitch circle at the cage speed v = omega_c r_m, drag
     1/2 C_D rho_e (pi D^2/4) (v - u)|v - u| on the mixture ([2]), C_D = ``drag_coefficient(|v - u|)`` (the drag law's
@@ -265,6 +314,8 @@ def mixture_momentum_balance(*, Z: int, D: float, r_m: float, r_i: float, r_o: f
         raise ValueError("mass flow must not be negative")
     if not 0.0 < r_i < r_m < r_o:
         raise ValueError("need 0 < r_i < r_m < r_o")
+    if wall_law not in ("full_gap", "half_gap"):
+        raise ValueError("wall_law must be 'full_gap' or 'half_gap'")
     A = 0.25 * math.pi * D * D
     v = omega_c * r_m
 
@@ -273,8 +324,12 @@ def mixture_momentum_balance(*, Z: int, D: float, r_m: float, r_i: float, r_o: f
         w = v - u
         C = drag_coefficient(abs(w)) if (balls and w != 0.0) else 0.0
         F = 0.5 * C * rho_e * A * w * abs(w) if balls else 0.0  # [2], on the mixture
-        M_in = taylor_couette_gap_moment(omega_i - w_f, r_i, r_m, length, rho_e, mu_e, turbulent)
-        M_out = taylor_couette_gap_moment(w_f - omega_o, r_m, r_o, length, rho_e, mu_e, turbulent)
+        if wall_law == "half_gap":
+            M_in = taylor_couette_gap_moment(omega_i - w_f, r_i, r_m, length, rho_e, mu_e, turbulent)
+            M_out = taylor_couette_gap_moment(w_f - omega_o, r_m, r_o, length, rho_e, mu_e, turbulent)
+        else:  # [7]: M_out is the moment of the core on the outer ring's surface
+            M_in = taylor_couette_wall_moment(omega_i - w_f, r_i, r_o, r_m, length, rho_e, mu_e, turbulent)
+            M_out = -taylor_couette_wall_moment(omega_o - w_f, r_o, r_i, r_m, length, rho_e, mu_e, turbulent)
         M_side = (-rotating_annulus_windage_moment(w_f, r_i, r_o, rho_e, mu_e)) if side_walls else 0.0
         M_flow = mass_flow * u * r_m
         return F, C, M_in, M_out, M_side, M_flow
