@@ -248,7 +248,7 @@ def _bearing(sign=1.0, **kw):
     return args
 
 
-def _torques(u, a, side):
+def _torques(u, a, side, cage=None):
     """The moments on the mixture written out here (no churning call): balls, inner and outer wall layer (laminar:
     Couette across the wall .. r_m; turbulent: Bilgen & Boulos's full gap at the full-gap jump of the layer; the
     larger), side openings (free-disc law), throughflow."""
@@ -278,11 +278,31 @@ def _torques(u, a, side):
         turb = abs(gap(abs(dw) * (1.0 + (r_w / r_x) ** (19.0 / 9.0)), a_, b_))
         return math.copysign(max(lam, turb), dw)
 
+    def wall_at(dw, r_w, r_x, length):  # the same law over another length, the core at mid gap if r_m is not in it
+        r_c = r_m if min(r_w, r_x) < r_m < max(r_w, r_x) else 0.5 * (r_w + r_x)
+        r1, r2 = min(r_w, r_c), max(r_w, r_c)
+        lam = 4 * math.pi * mu * length * r1**2 * r2**2 * abs(dw) / (r2**2 - r1**2)
+        a_, b_ = min(r_w, r_x), max(r_w, r_x)
+        turb = abs(gap(abs(dw) * (1.0 + (r_w / r_x) ** (19.0 / 9.0)), a_, b_)) * length / L
+        return math.copysign(max(lam, turb), dw)
+
     M = a["Z"] * 0.5 * a["drag_coefficient"](abs(v - u)) * rho * A * (v - u) * abs(v - u) * r_m
-    M += wall(a["omega_i"] - w_f, a["r_i"], a["r_o"]) + wall(a["omega_o"] - w_f, a["r_o"], a["r_i"])
-    if side:
+    if cage is None:
+        M += wall(a["omega_i"] - w_f, a["r_i"], a["r_o"]) + wall(a["omega_o"] - w_f, a["r_o"], a["r_i"])
+    else:  # beside the cage ring faces ring; over its width each ring faces the cage (guided side: a film, left out)
+        w_c, rb, ro_c, wd = a["omega_c"], cage["r_bore"], cage["r_outside"], cage["width"]
+        M += wall_at(a["omega_i"] - w_f, a["r_i"], a["r_o"], L - wd) + wall_at(a["omega_o"] - w_f, a["r_o"], a["r_i"], L - wd)
+        if cage["guidance"] != "inner_ring":
+            M += wall_at(a["omega_i"] - w_f, a["r_i"], rb, wd) + wall_at(w_c - w_f, rb, a["r_i"], wd)
+        if cage["guidance"] != "outer_ring":
+            M += wall_at(a["omega_o"] - w_f, a["r_o"], ro_c, wd) + wall_at(w_c - w_f, ro_c, a["r_o"], wd)
+        nu, dc = mu / rho, w_c - w_f  # the two side faces: free-disc law at the cage's speed relative to the core
+        lam = 0.5 * 3.87 * rho * math.sqrt(nu) * abs(dc) ** 1.5 * (ro_c**4 - rb**4)
+        turb = 0.5 * 0.146 * rho * nu**0.2 * abs(dc) ** 1.8 * (ro_c**4.6 - rb**4.6)
+        M += math.copysign(max(lam, turb), dc)
+    if side:  # the side openings as stationary walls: Boedewadt laminar (G'(0) 0.7729), free-disc turbulent
         nu = mu / rho
-        lam = 0.5 * 3.87 * rho * math.sqrt(nu) * abs(w_f) ** 1.5 * (a["r_o"] ** 4 - a["r_i"] ** 4)
+        lam = math.pi * 0.7729 * rho * math.sqrt(nu) * abs(w_f) ** 1.5 * (a["r_o"] ** 4 - a["r_i"] ** 4)
         turb = 0.5 * 0.146 * rho * nu**0.2 * abs(w_f) ** 1.8 * (a["r_o"] ** 4.6 - a["r_i"] ** 4.6)
         M -= math.copysign(max(lam, turb), w_f)
     return M - a["mass_flow"] * u * r_m
@@ -430,3 +450,85 @@ def test_wall_moment_laminar_is_couette_to_the_core(d_omega):
     assert abs(new["M_inner"]) > 2.0 * abs(old["M_inner"])  # the full-gap law: ~3.5x the half-gap moment of a layer
     with pytest.raises(ValueError):
         churning.mixture_momentum_balance(wall_law="log", **a)
+
+
+_CAGE = {"r_bore": 0.02265, "r_outside": 0.0255, "width": 8.25e-3}
+
+
+@pytest.mark.parametrize("sign", [1.0, -1.0])
+@pytest.mark.parametrize("guidance", ["outer_ring", "inner_ring", "ball"])
+def test_balance_with_cage_against_spin_up_and_power(sign, guidance):
+    """The cage's bore, outside surface and side faces in the balance: the mixture spun up in time with the moments
+    written out in _torques (rings beside the cage, each ring against the cage over its width, the guided surface
+    left out, the side faces by the free-disc law) reaches the balance's swirl from rest and from above the cage speed;
+    the returned moments sum to 0; given (balls + ring surfaces + cage) = spent (wake + wall layers + outflow);
+    the cage raises k unless it hides the driving inner ring's surface (inner-ring guidance); both senses, each
+    guidance."""
+    a = _bearing(sign)
+    cage = {**_CAGE, "guidance": guidance}
+    bal = churning.mixture_momentum_balance(cage=cage, **a)
+    I = a["rho_e"] * math.pi * (a["r_o"] ** 2 - a["r_i"] ** 2) * a["length"] * a["r_m"] ** 2
+    for u0 in (0.0, 1.3 * a["omega_c"] * a["r_m"]):
+        sol = solve_ivp(lambda t, y: [_torques(y[0] * a["r_m"], a, False, cage) / I], (0.0, 0.05), [u0 / a["r_m"]],
+                        method="LSODA", rtol=1e-10, atol=1e-10)
+        assert sol.y[0, -1] * a["r_m"] == pytest.approx(bal["u"], rel=1e-6)
+    Ms = [bal[k] for k in ("M_balls", "M_inner", "M_outer", "M_cage", "M_side", "M_flow")]
+    assert abs(sum(Ms)) < 1e-9 * max(abs(x) for x in Ms)
+    given = bal["P_balls"] + bal["P_inner"] + bal["P_outer"] + bal["P_cage"]
+    spent = bal["P_wake"] + bal["P_walls"] + bal["P_outflow_ke"] + bal["P_mixing"]
+    assert given == pytest.approx(spent, rel=1e-9) and bal["P_cage"] > 0.0
+    k0 = churning.mixture_momentum_balance(**a)["k"]
+    # outer-ring or ball guidance: the cage pulls the core towards its speed; an inner-ring-guided cage's land hides
+    # the inner ring's surface under the cage (a film), which takes more drive away than the cage adds
+    assert bal["k"] > k0 if guidance != "inner_ring" else bal["k"] < k0
+
+
+def test_balance_cage_alone_and_bad_cage():
+    """Rings at rest, no balls, no throughflow, the cage turning: the core turns between 0 and the cage's speed, in
+    the cage's sense; a cage outside the ring walls or with a bad guidance raises."""
+    a = _bearing(omega_i=0.0, mass_flow=0.0, balls=False)
+    for sign in (1.0, -1.0):
+        b = churning.mixture_momentum_balance(**{**a, "omega_c": sign * 3000.0}, cage={**_CAGE, "guidance": "ball"})
+        assert 0.0 < b["k"] < 1.0 and sign * b["u"] > 0.0
+    for bad in ({**_CAGE, "r_bore": 0.02, "guidance": "ball"}, {**_CAGE, "r_outside": 0.026, "guidance": "ball"},
+                {**_CAGE, "guidance": "land"}):
+        with pytest.raises(ValueError):
+            churning.mixture_momentum_balance(**a, cage=bad)
+
+
+def _boedewadt():
+    """Our own solution of Boedewadt's similarity equations (a fluid rotating as a body over a stationary wall):
+    F'' = F^2 - G^2 + H F' + 1, G'' = 2 F G + H G', H' = -2 F; F = G = H = 0 at the wall, F = 0, G = 1 at zeta = 30."""
+    def rhs(z, y):
+        F, Fp, G, Gp, H = y
+        return np.vstack([Fp, F * F - G * G + H * Fp + 1.0, Gp, 2 * F * G + H * Gp, -2 * F])
+
+    z = np.linspace(0.0, 30.0, 3001)
+    e = np.exp(-z)
+    y0 = np.vstack([-e * np.sin(z), -e * (np.cos(z) - np.sin(z)), 1 - e * np.cos(z), e * (np.cos(z) + np.sin(z)),
+                    1.35 * (1 - e)])
+    sol = solve_bvp(rhs, lambda a, b: np.array([a[0], a[2], a[4], b[0], b[2] - 1.0]), z, y0, tol=1e-8, max_nodes=100000)
+    assert sol.status == 0
+    return sol
+
+
+def test_stationary_wall_laminar_against_boedewadt_solution():
+    """Laminar: the wall shear constant is our Boedewadt solution's G'(0) (0.77289; Rogers & Lance's 0.7729, 1e-4),
+    F'(0) -0.9420; the moment is the quadrature of the wall shear tau = G'(0) rho nu^1/2 omega^3/2 r over the two faces,
+    25.5 % above the free disc's; both senses; the turbulent branch (the free disc's) takes over above Re ~ 1.2e5."""
+    sol = _boedewadt()
+    G0, F0 = float(sol.y[3, 0]), float(sol.y[1, 0])
+    assert G0 == pytest.approx(churning.BOEDEWADT_G0, abs=1e-4) and F0 == pytest.approx(-0.9420, abs=1e-4)
+    r1, r2, rho, mu = 0.02, 0.026, 1.2, 1.8e-5
+    nu = mu / rho
+    for om in (30.0, -30.0):  # Re = omega r2^2 / nu ~ 1.4e3: laminar
+        quad_M = 2 * quad(lambda r: G0 * rho * math.sqrt(nu) * abs(om) ** 1.5 * r * 2 * math.pi * r * r, r1, r2)[0]
+        M = churning.stationary_wall_moment(om, r1, r2, rho, mu)
+        assert M == pytest.approx(-math.copysign(quad_M, om), rel=2e-4)
+        free = churning.rotating_annulus_windage_moment(om, r1, r2, rho, mu)
+        assert M / free == pytest.approx(0.7729 / 0.6159, rel=1e-3)
+    hi = 3.0e5 * nu / r2**2  # Re 3e5: turbulent, the free disc's law
+    assert churning.stationary_wall_moment(hi, r1, r2, rho, mu) == churning.rotating_annulus_windage_moment(hi, r1, r2, rho, mu)
+    assert churning.stationary_wall_moment(0.0, r1, r2, rho, mu) == 0.0
+    with pytest.raises(ValueError):
+        churning.stationary_wall_moment(1.0, r2, r1, rho, mu)
