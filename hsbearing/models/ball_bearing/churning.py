@@ -12,9 +12,10 @@ acceleration, cage windage"):
   speed it leaves with (momentum conservation, derived below).
 * :func:`rotating_annulus_windage_moment`: the moment of a thin annulus (the cage side faces) turning in a fluid
   at rest (von Karman's rotating disc, [3]); a labelled estimate of the cage windage.
-* :func:`taylor_couette_gap_moment`, :func:`free_disc_pumped_flow`, :func:`mixture_momentum_balance`: the steady
-  angular-momentum balance of the cavity mixture (balls' drag, rotating and stationary ring walls, side openings,
-  throughflow entering without swirl), solved for the mixture's swirl speed u at the pitch circle ([4], [5], [6]).
+* :func:`taylor_couette_gap_moment`, :func:`taylor_couette_wall_moment`, :func:`stationary_wall_moment`,
+  :func:`free_disc_pumped_flow`, :func:`mixture_momentum_balance`: the steady angular-momentum balance of the cavity
+  mixture (balls' drag, rotating and stationary ring walls, the cage's surfaces, side openings, throughflow entering
+  without swirl), solved for the mixture's swirl speed u at the pitch circle ([4]-[9]).
 
 References
 ----------
@@ -54,14 +55,14 @@ References
 [6] The mixture's angular-momentum balance (derived here; control volume: the annulus between the rings' lands
     over the bearing width, the mixture lumped into one swirl speed u at the pitch radius r_m, i.e. a core in
     solid-body rotation between wall layers as in turbulent Taylor-Couette flow): in steady state
-    Z r_m F_b(v - u) + M_in - M_out - M_side - (m_oil + m_air) u r_m = 0, with F_b the ball drag of [2] (force on
-    the mixture), M_in the moment of the inner ring's surface on the core across the half gap r_i .. r_m, M_out that
-    of the core on the outer ring's surface across r_m .. r_o ([4], each with its own relative speed and sign),
-    M_side the two side openings taken as stationary walls under the rotating core ([3], a band: 0 or both) and the
-    throughflow entering without swirl and leaving with u.  Every term is monotone in u, so the root is unique.
-    In the laminar limit without balls, throughflow or side walls the two half-gap Couette moments balance at
-    exactly the Couette angular velocity at r_m ([1]): the Couette solution restricted to r_i .. r_m is the
-    Couette flow between those radii.
+    Z r_m F_b(v - u) + M_in - M_out + M_cage - M_side - (m_oil + m_air) u r_m = 0, with F_b the ball drag of [2]
+    (force on the mixture), M_in the moment of the inner ring's surface on the core across its wall layer, M_out that
+    of the core on the outer ring's surface ([7], each with its own relative speed and sign), M_cage the cage's
+    surfaces ([8]), M_side the two side openings taken as stationary walls under the rotating core ([9], a band: 0
+    or both) and the throughflow entering without swirl and leaving with u.  Every term is monotone in u, so the
+    root is unique.  In the laminar limit without balls, throughflow, cage or side walls the two Couette moments
+    across r_i .. r_m and r_m .. r_o balance at exactly the Couette angular velocity at r_m ([1]): the Couette
+    solution restricted to r_i .. r_m is the Couette flow between those radii.
 [7] The wall moments of a gap with a core (derived here): Bilgen & Boulos's C_M ([4]) is the moment G of a WHOLE
     gap r1 .. r2 whose walls differ by d_omega; at high Reynolds number the gap is a core in (near) solid-body
     rotation between two wall layers (Batchelor's inviscid core with boundary layers, the picture of [4]'s
