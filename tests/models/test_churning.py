@@ -457,7 +457,8 @@ _CAGE = {"r_bore": 0.02265, "r_outside": 0.0255, "width": 8.25e-3}
 
 @pytest.mark.parametrize("sign", [1.0, -1.0])
 @pytest.mark.parametrize("guidance", ["outer_ring", "inner_ring", "ball"])
-def test_balance_with_cage_against_spin_up_and_power(sign, guidance):
+@pytest.mark.parametrize("side,outer", [(False, False), (True, False), (False, True)])
+def test_balance_with_cage_against_spin_up_and_power(sign, guidance, side, outer):
     """The cage's bore, outside surface and side faces in the balance: the mixture spun up in time with the moments
     written out in _torques (rings beside the cage, each ring against the cage over its width, the guided surface
     left out, the side faces by the free-disc law) reaches the balance's swirl from rest and from above the cage speed;
@@ -465,22 +466,25 @@ def test_balance_with_cage_against_spin_up_and_power(sign, guidance):
     the cage raises k unless it hides the driving inner ring's surface (inner-ring guidance); both senses, each
     guidance."""
     a = _bearing(sign)
+    if outer:  # the outer ring turning, the inner ring at rest
+        a.update(omega_i=0.0, omega_o=sign * 7540.0, omega_c=0.5 * sign * 7540.0 * 1.14)
     cage = {**_CAGE, "guidance": guidance}
-    bal = churning.mixture_momentum_balance(cage=cage, **a)
+    bal = churning.mixture_momentum_balance(cage=cage, side_walls=side, **a)
     I = a["rho_e"] * math.pi * (a["r_o"] ** 2 - a["r_i"] ** 2) * a["length"] * a["r_m"] ** 2
     for u0 in (0.0, 1.3 * a["omega_c"] * a["r_m"]):
-        sol = solve_ivp(lambda t, y: [_torques(y[0] * a["r_m"], a, False, cage) / I], (0.0, 0.05), [u0 / a["r_m"]],
+        sol = solve_ivp(lambda t, y: [_torques(y[0] * a["r_m"], a, side, cage) / I], (0.0, 0.05), [u0 / a["r_m"]],
                         method="LSODA", rtol=1e-10, atol=1e-10)
         assert sol.y[0, -1] * a["r_m"] == pytest.approx(bal["u"], rel=1e-6)
     Ms = [bal[k] for k in ("M_balls", "M_inner", "M_outer", "M_cage", "M_side", "M_flow")]
     assert abs(sum(Ms)) < 1e-9 * max(abs(x) for x in Ms)
     given = bal["P_balls"] + bal["P_inner"] + bal["P_outer"] + bal["P_cage"]
     spent = bal["P_wake"] + bal["P_walls"] + bal["P_outflow_ke"] + bal["P_mixing"]
-    assert given == pytest.approx(spent, rel=1e-9) and bal["P_cage"] > 0.0
-    k0 = churning.mixture_momentum_balance(**a)["k"]
-    # outer-ring or ball guidance: the cage pulls the core towards its speed; an inner-ring-guided cage's land hides
-    # the inner ring's surface under the cage (a film), which takes more drive away than the cage adds
-    assert bal["k"] > k0 if guidance != "inner_ring" else bal["k"] < k0
+    assert given == pytest.approx(spent, rel=1e-9) and bal["P_cage"] > 0.0 and 0.0 < bal["k"] < 1.3
+    if not (side or outer):
+        k0 = churning.mixture_momentum_balance(**a)["k"]
+        # outer-ring or ball guidance: the cage pulls the core towards its speed; an inner-ring-guided cage's land
+        # hides the inner ring's surface under the cage (a film), which takes more drive away than the cage adds
+        assert bal["k"] > k0 if guidance != "inner_ring" else bal["k"] < k0
 
 
 def test_balance_cage_alone_and_bad_cage():
