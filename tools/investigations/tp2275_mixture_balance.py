@@ -12,7 +12,7 @@ before these data were compared; both bearings validate, none calibrates.
 
 Usage: PYTHONPATH=. python tools/investigations/tp2275_mixture_balance.py   (~3 min on the shared machine)
        PYTHONPATH=. python tools/investigations/tp2275_mixture_balance.py --sensitivity   (the balance's sensitivity
-       to the wall law and to an oil recirculation, 35-mm, ~30 s)
+       to the wall law, the cage's surfaces and an oil recirculation, 35-mm, ~30 s)
 """
 
 from __future__ import annotations
@@ -43,10 +43,11 @@ def report(title, case, measured):
     ns = sorted(measured)
     meas = np.array([measured[n] for n in ns])
     print(f"\n## {title}")
-    print("| n [r/min] | measured [W] | k balance (band) | contacts* [W] | ball drag [W] | ring surface [W] | cage windage [W] "
+    print("| n [r/min] | measured [W] | k balance (band) | contacts* [W] | ball drag [W] | ring surface [W] | cage surfaces [W] "
           "| total balance [W] (ratio) | churning band [W] | total band [W] (ratio) | total k = 0 [W] (ratio) |")
     print("|" + "---|" * 11)
     cols = {k: [] for k in ("bal", "lo", "hi", "k0", "contacts", "churn", "ball", "churn_k0")}
+    cage_note = set()
     for n, m in zip(ns, meas):
         w = n * math.pi / 30
         b = quasi_static_power_loss(bal_case, w)
@@ -58,6 +59,7 @@ def report(title, case, measured):
         for key, val in (("bal", b["power_loss"]), ("lo", lo), ("hi", hi), ("k0", f["power_loss"]), ("contacts", contacts),
                          ("churn", b["drag"]), ("ball", ball), ("churn_k0", f["drag"] + f["jet_oil_acceleration"])):
             cols[key].append(val)
+        cage_note.add(b["mixture_balance_cage"])
         print(f"| {n} | {m:.0f} | {b['mixture_corotation']:.3f} ({b['mixture_corotation_balance_low']:.3f}.."
               f"{b['mixture_corotation_balance_high']:.3f}) | {contacts:.0f} | {ball:.1f} | {b['drag_ring_share']:.1f} | "
               f"{b['cage_windage']:.1f} | {b['power_loss']:.0f} ({b['power_loss'] / m:.2f}) | "
@@ -68,7 +70,8 @@ def report(title, case, measured):
           f"churning {e['churn']:.2f} (k = 0: drag + jet {e['churn_k0']:.2f}) | {e['lo']:.2f}..{e['hi']:.2f} | {e['k0']:.2f} |")
     print("(* contacts = race traction + EHL rolling + pocket film + guide land; churning = ball drag + ring surface; "
           "with the balance the jet-oil term is inside the churning (throughflow); band: side openings as stationary "
-          "walls or not x air throughflow 0 or the inner ring's free-disc pumping x C_D subcritical or crisis)")
+          "walls or not x air throughflow 0 or the inner ring's free-disc pumping x C_D subcritical or crisis; "
+          f"cage surfaces = the cage windage with the balance on: {'; '.join(sorted(cage_note))})")
 
 
 def sensitivity(case, speeds=(28000, 72000)):
@@ -87,20 +90,30 @@ def sensitivity(case, speeds=(28000, 72000)):
         w = n * math.pi / 30
         m = build_model(case.with_overrides(**{"operating.inner_speed": f"{w} rad/s"}))
         inputs.append((w, *(float(m.info[x]) for x in ("drag_orbital_speed", "drag_density", "drag_viscosity"))))
-    print("\n## Sensitivity of the balance (35-mm; wall moments x f via the wall length, throughflow x N)")
+    c = case.cage
+    cage = {"r_bore": 0.5 * c.bore_diameter, "r_outside": 0.5 * c.outside_diameter, "width": c.width,
+            "guidance": c.guidance}
+    print("\n## Sensitivity of the balance (35-mm; wall moments x f via the wall and cage lengths, throughflow x N; "
+          "churning = balls + ring surface + cage surfaces)")
     print("| variant | " + " | ".join(f"k at {n} | churning at {n} [W]" for n in speeds) + " | churning exponent |")
     print("|" + "---|" * (2 * len(speeds) + 2))
-    for label, f, N in (("nominal", 1, 1), ("walls x 0.5", 0.5, 1), ("walls x 2", 2, 1), ("walls x 4", 4, 1),
-                        ("throughflow x 3", 1, 3), ("throughflow x 10", 1, 10), ("throughflow x 20", 1, 20)):
+    for label, f, N, law, with_cage in (
+            ("nominal (full-gap wall law, cage surfaces)", 1, 1, "full_gap", True),
+            ("full-gap wall law, no cage", 1, 1, "full_gap", False),
+            ("former half-gap wall law, no cage (before)", 1, 1, "half_gap", False),
+            ("walls x 0.5 (our mixing-length level)", 0.5, 1, "full_gap", True), ("walls x 2", 2, 1, "full_gap", True),
+            ("throughflow x 3", 1, 3, "full_gap", True), ("throughflow x 10", 1, 10, "full_gap", True),
+            ("throughflow x 20", 1, 20, "full_gap", True)):
         ks, Ps = [], []
         for w, v, rho, mu in inputs:
             res = churning.mixture_momentum_balance(
                 Z=b.ball_count, D=b.ball_diameter, r_m=r_m, r_i=0.5 * b.inner_land_diameter,
                 r_o=0.5 * b.outer_land_diameter, length=f * b.width, omega_i=w, omega_o=0.0, omega_c=v / r_m,
                 rho_e=rho, mu_e=mu, drag_coefficient=lambda x, rho=rho, mu=mu: ball_drag_coefficient(rho, mu, x, b.ball_diameter)[0],
-                mass_flow=N * lub.density * lub.oil_flow_rate)
+                mass_flow=N * lub.density * lub.oil_flow_rate, wall_law=law,
+                cage={**cage, "width": f * cage["width"]} if with_cage else None)
             ks.append(res["k"])
-            Ps.append(res["P_balls"] + res["P_inner"])
+            Ps.append(res["P_balls"] + res["P_inner"] + res["P_cage"])
         print(f"| {label} | " + " | ".join(f"{k:.3f} | {P:.1f}" for k, P in zip(ks, Ps)) + f" | {exponent(list(speeds), Ps):.2f} |")
 
 

@@ -12,9 +12,10 @@ acceleration, cage windage"):
   speed it leaves with (momentum conservation, derived below).
 * :func:`rotating_annulus_windage_moment`: the moment of a thin annulus (the cage side faces) turning in a fluid
   at rest (von Karman's rotating disc, [3]); a labelled estimate of the cage windage.
-* :func:`taylor_couette_gap_moment`, :func:`free_disc_pumped_flow`, :func:`mixture_momentum_balance`: the steady
-  angular-momentum balance of the cavity mixture (balls' drag, rotating and stationary ring walls, side openings,
-  throughflow entering without swirl), solved for the mixture's swirl speed u at the pitch circle ([4], [5], [6]).
+* :func:`taylor_couette_gap_moment`, :func:`taylor_couette_wall_moment`, :func:`stationary_wall_moment`,
+  :func:`free_disc_pumped_flow`, :func:`mixture_momentum_balance`: the steady angular-momentum balance of the cavity
+  mixture (balls' drag, rotating and stationary ring walls, the cage's surfaces, side openings, throughflow entering
+  without swirl), solved for the mixture's swirl speed u at the pitch circle ([4]-[9]).
 
 References
 ----------
@@ -54,14 +55,36 @@ References
 [6] The mixture's angular-momentum balance (derived here; control volume: the annulus between the rings' lands
     over the bearing width, the mixture lumped into one swirl speed u at the pitch radius r_m, i.e. a core in
     solid-body rotation between wall layers as in turbulent Taylor-Couette flow): in steady state
-    Z r_m F_b(v - u) + M_in - M_out - M_side - (m_oil + m_air) u r_m = 0, with F_b the ball drag of [2] (force on
-    the mixture), M_in the moment of the inner ring's surface on the core across the half gap r_i .. r_m, M_out that
-    of the core on the outer ring's surface across r_m .. r_o ([4], each with its own relative speed and sign),
-    M_side the two side openings taken as stationary walls under the rotating core ([3], a band: 0 or both) and the
-    throughflow entering without swirl and leaving with u.  Every term is monotone in u, so the root is unique.
-    In the laminar limit without balls, throughflow or side walls the two half-gap Couette moments balance at
-    exactly the Couette angular velocity at r_m ([1]): the Couette solution restricted to r_i .. r_m is the
-    Couette flow between those radii.
+    Z r_m F_b(v - u) + M_in - M_out + M_cage - M_side - (m_oil + m_air) u r_m = 0, with F_b the ball drag of [2]
+    (force on the mixture), M_in the moment of the inner ring's surface on the core across its wall layer, M_out that
+    of the core on the outer ring's surface ([7], each with its own relative speed and sign), M_cage the cage's
+    surfaces ([8]), M_side the two side openings taken as stationary walls under the rotating core ([9], a band: 0
+    or both) and the throughflow entering without swirl and leaving with u.  Every term is monotone in u, so the
+    root is unique.  In the laminar limit without balls, throughflow, cage or side walls the two Couette moments
+    across r_i .. r_m and r_m .. r_o balance at exactly the Couette angular velocity at r_m ([1]): the Couette
+    solution restricted to r_i .. r_m is the Couette flow between those radii.
+[7] The wall moments of a gap with a core (derived here): Bilgen & Boulos's C_M ([4]) is the moment G of a WHOLE
+    gap r1 .. r2 whose walls differ by d_omega; at high Reynolds number the gap is a core in (near) solid-body
+    rotation between two wall layers (Batchelor's inviscid core with boundary layers, the picture of [4]'s
+    supercritical data), and in steady state both layers transmit the same G (d/dr (r^2 tau) = 0).  A layer's shear
+    follows the correlation's own wall law: G ~ Re^-0.2 d_omega^2 gives tau ~ rho^0.8 mu^0.2 (r d)^1.8 s^-0.2 with
+    d the layer's jump, so 2 pi r^2 L tau = G at both walls makes d ~ r^-(19/9): d_1 / d_2 = (r2 / r1)^(19/9), and
+    d_1 + d_2 = d_omega.  Hence the moment of the wall at r_w on a core d slower than it (r_o the other wall) is
+    G_BB at the full-gap jump d (1 + (r_w / r_o)^(19/9)); the two layers in series reproduce G_BB(d_omega) exactly.
+    (The former use of [4] across each HALF gap with the layer's own jump gave ~1/3.5 of this, 2^1.8 x 2^0.1.)
+    Checked against our own finite-difference solution of the turbulent Couette flow with a mixing length
+    (Nikuradse's distribution, van Driest's damping) across the gap (tests/models/test_churning.py).
+[8] The cage in the annulus (derived here): the cage turns at omega_c with its bore facing the inner ring's land and
+    its outside surface facing the outer ring's land over the cage's width; each such pair is a gap with the
+    mixture's core between two wall layers ([7]), the core at the common swirl u / r_m; beside the cage the two
+    rings face each other ([7]); the side faces are the free disc ([3]) at the cage's speed relative to the core
+    (a disc in a co-rotating fluid; the free-disc law at the relative speed is an estimate, not a solved flow).  The
+    guided surface is a thin oil film (the guide-land loss), not a wall layer of the mixture: left out.
+[9] Boedewadt U. T., "Die Drehstroemung ueber festem Grunde", Z. angew. Math. Mech. 20 (1940) 241: a fluid rotating
+    as a body over a stationary wall, similarity solution u = r omega F, v = r omega G, w = (nu omega)^1/2 H with
+    F'' = F^2 - G^2 + H F' + 1, G'' = 2 F G + H G', H' = -2 F, F = G = H = 0 at the wall, F -> 0, G -> 1 far
+    from it; G'(0) = 0.7729, F'(0) = -0.9420 (values as tabulated by Rogers M. H., Lance G. N., J. Fluid Mech. 7
+    (1960) 617, RECALLED, not read; checked against our own solution of the equations, tests/models/test_churning.py).
 """
 
 from __future__ import annotations
@@ -73,7 +96,8 @@ from hsbearing.models.ball_bearing.drag import ball_drag_coefficient
 __all__ = ["couette_mixture_angular_velocity", "couette_corotation_fraction", "ball_drag_power",
            "jet_oil_acceleration_power", "rotating_annulus_windage_moment", "DISC_LAMINAR_CM", "DISC_TURBULENT_CM",
            "drag_band", "taylor_couette_gap_moment", "free_disc_pumped_flow", "mixture_momentum_balance",
-           "VON_KARMAN_H_INF", "FREE_DISC_TURBULENT_CW"]
+           "VON_KARMAN_H_INF", "FREE_DISC_TURBULENT_CW", "taylor_couette_wall_moment",
+           "WALL_SPLIT_EXPONENT", "stationary_wall_moment", "BOEDEWADT_G0"]
 
 #: c_M Re^1/2 of a free disc, both faces, laminar ([3]: wall shear 0.6159 rho nu^1/2 omega^3/2 r per face, so
 #: M = 2 x 2 pi 0.6159 rho nu^1/2 omega^3/2 R^4 / 4 = 1.935 rho nu^1/2 omega^3/2 R^4 = 3.87 Re^-1/2 (1/2 rho omega^2 R^5))
@@ -86,6 +110,12 @@ VON_KARMAN_H_INF = 0.8845
 FREE_DISC_TURBULENT_CW = 0.219
 #: Bilgen & Boulos regimes ([4], recalled): (upper Re of the regime, coefficient, Re exponent)
 _BB_REGIMES = ((64.0, 10.0, -1.0), (500.0, 2.0, -0.6), (1.0e4, 1.03, -0.5), (math.inf, 0.065, -0.2))
+#: G'(0) of Boedewadt's flow (a fluid in solid-body rotation over a stationary wall): wall shear
+#: tau = G'(0) rho nu^1/2 omega^3/2 r ([9]; 0.7729 recalled, checked against our own solution, 0.77289)
+BOEDEWADT_G0 = 0.7729
+#: the exponent p of the split of a turbulent gap's jump between its two wall layers, d_in / d_out = (r_o / r_i)^p
+#: ([7]: equal moments 2 pi r^2 L tau and tau ~ rho^0.8 mu^0.2 (r d)^1.8 s^-0.2, the wall law of the Re^-0.2 regime)
+WALL_SPLIT_EXPONENT = 19.0 / 9.0
 
 
 def couette_mixture_angular_velocity(omega_i: float, omega_o: float, r_i: float, r_o: float, r: float) -> float:
@@ -214,15 +244,67 @@ def taylor_couette_gap_moment(d_omega: float, r1: float, r2: float, length: floa
     w = abs(d_omega)
     m = 4.0 * math.pi * mu * length * r1 * r1 * r2 * r2 * w / (r2 * r2 - r1 * r1)  # [1]
     if turbulent and rho > 0.0:
-        s = r2 - r1
-        Re = rho * w * r1 * s / mu
-        if Re >= 64.0:
-            for re_max, c, e in _BB_REGIMES:
-                if Re < re_max:
-                    C_M = c * (s / r1) ** 0.3 * Re**e  # [4]
-                    break
-            m = max(m, 0.5 * C_M * math.pi * rho * w * w * r1**4 * length)
+        m = max(m, _bilgen_boulos_moment(w, r1, r2, length, rho, mu))
     return math.copysign(m, d_omega)
+
+
+def _bilgen_boulos_moment(w: float, r1: float, r2: float, length: float, rho: float, mu: float) -> float:
+    """|M| of Bilgen & Boulos's correlation for the whole gap r1 .. r2 at the jump w >= 0 ([4]); 0 below Re = 64."""
+    s = r2 - r1
+    Re = rho * w * r1 * s / mu
+    if Re < 64.0:
+        return 0.0
+    for re_max, c, e in _BB_REGIMES:
+        if Re < re_max:
+            C_M = c * (s / r1) ** 0.3 * Re**e  # [4]
+            break
+    return 0.5 * C_M * math.pi * rho * w * w * r1**4 * length
+
+
+def taylor_couette_wall_moment(d_omega: float, r_wall: float, r_other: float, r_core: float, length: float,
+                               rho: float, mu: float, turbulent: bool = True) -> float:
+    """Moment [N m] that ONE wall of a gap exerts on the gap's core in solid-body rotation, the wall at radius r_wall
+    turning d_omega = omega_wall - omega_core [rad/s] faster than the core, the gap closed by a wall at r_other; signed
+    like d_omega ([7]).
+
+    Turbulent: the full-gap moment of Bilgen & Boulos (:func:`taylor_couette_gap_moment` between min and max of
+    r_wall, r_other) at the full-gap jump d_omega (1 + (r_wall / r_other)^(19/9)) -- the jump the whole gap would need
+    for this wall's layer to carry d_omega, when both layers transmit the same moment and each follows the
+    correlation's wall law tau ~ (r d_omega)^1.8 ([7]).  Laminar: the exact circular Couette moment across
+    r_wall .. r_core (the wall to the core's radius, [1]).  ``turbulent``: the larger of the two, else the laminar.
+    """
+    if not (r_wall > 0.0 and r_other > 0.0 and r_wall != r_other):
+        raise ValueError("need r_wall > 0, r_other > 0 and r_wall != r_other")
+    if not min(r_wall, r_other) < r_core < max(r_wall, r_other):
+        raise ValueError("the core radius must lie between the walls")
+    if d_omega == 0.0:
+        return 0.0
+    r1, r2 = min(r_wall, r_core), max(r_wall, r_core)
+    m = abs(taylor_couette_gap_moment(d_omega, r1, r2, length, rho, mu, turbulent=False))  # [1]
+    if turbulent and rho > 0.0:
+        full = abs(d_omega) * (1.0 + (r_wall / r_other) ** WALL_SPLIT_EXPONENT)  # [7]
+        m = max(m, _bilgen_boulos_moment(full, min(r_wall, r_other), max(r_wall, r_other), length, rho, mu))
+    return math.copysign(m, d_omega)
+
+
+def stationary_wall_moment(omega_f: float, r1: float, r2: float, rho: float, mu: float) -> float:
+    """Moment [N m] that two stationary annular walls r1..r2 (the side openings, one face each) exert on a fluid
+    above them turning as a body at omega_f; signed opposite to omega_f ([9]).
+
+    Laminar: Boedewadt's flow, wall shear tau = BOEDEWADT_G0 rho nu^1/2 |omega_f|^3/2 r, so
+    M = pi BOEDEWADT_G0 rho nu^1/2 |omega_f|^3/2 (r2^4 - r1^4) for the two faces (25.5 % above the free disc's
+    0.6159); turbulent: the free disc's 1/7-power law of :func:`rotating_annulus_windage_moment` at the relative
+    speed (no turbulent Boedewadt law was read); the larger of the two.
+    """
+    if not 0.0 <= r1 < r2:
+        raise ValueError("need 0 <= r1 < r2")
+    if omega_f == 0.0 or rho == 0.0:
+        return 0.0
+    nu = mu / rho
+    w = abs(omega_f)
+    m_lam = math.pi * BOEDEWADT_G0 * rho * math.sqrt(nu) * w**1.5 * (r2**4 - r1**4)  # [9]
+    m_turb = 0.5 * DISC_TURBULENT_CM * rho * nu**0.2 * w**1.8 * (r2**4.6 - r1**4.6)  # [3]
+    return -math.copysign(max(m_lam, m_turb), omega_f)
 
 
 def free_disc_pumped_flow(omega: float, R: float, nu: float) -> float:
@@ -242,22 +324,35 @@ def free_disc_pumped_flow(omega: float, R: float, nu: float) -> float:
 def mixture_momentum_balance(*, Z: int, D: float, r_m: float, r_i: float, r_o: float, length: float,
                              omega_i: float, omega_o: float, omega_c: float, rho_e: float, mu_e: float,
                              drag_coefficient, mass_flow: float, side_walls: bool = False,
-                             turbulent: bool = True, balls: bool = True) -> dict:
+                             turbulent: bool = True, balls: bool = True, wall_law: str = "full_gap",
+                             cage: dict | None = None) -> dict:
     """Steady swirl of the cavity mixture from its angular-momentum balance ([6]).
 
     Walls: the inner ring's surface at r_i turning at omega_i, the outer ring's at r_o turning at omega_o (both of
-    axial length ``length``), each coupled to the mixture's core at r_m through :func:`taylor_couette_gap_moment`;
-    with ``side_walls`` the two side openings r_i .. r_o as stationary walls (:func:`rotating_annulus_windage_moment`
+    axial length ``length``), each coupled to the mixture's core through :func:`taylor_couette_wall_moment` (the
+    full gap r_i .. r_o, [7]; ``wall_law = "half_gap"``: the former :func:`taylor_couette_gap_moment` across r_i .. r_m
+    and r_m .. r_o with each layer's own jump, kept for comparison only);
+    with ``side_walls`` the two side openings r_i .. r_o as stationary walls (:func:`stationary_wall_moment`, [9],
     at the core's angular velocity).  Balls: Z balls on the pitch circle at the cage speed v = omega_c r_m, drag
     1/2 C_D rho_e (pi D^2/4) (v - u)|v - u| on the mixture ([2]), C_D = ``drag_coefficient(|v - u|)`` (the drag law's
     C_D at the relative speed).  Throughflow: ``mass_flow`` [kg/s] entering without swirl and leaving at u.
 
+    ``cage`` (dict r_bore, r_outside, width [m], guidance "outer_ring" | "inner_ring" | "ball"; r_i < r_bore < r_m <
+    r_outside < r_o): the cage turning at omega_c inside the annulus ([8]).  Over the cage's width the inner ring faces
+    the cage's bore across r_i .. r_bore and the outer ring faces the cage's outside surface across r_outside .. r_o
+    (each pair a gap of :func:`taylor_couette_wall_moment`); beside the cage (length - width) the rings face each other
+    across r_i .. r_o; the cage's two side faces (when width < length) exchange the free-disc moment
+    (:func:`rotating_annulus_windage_moment`) at the cage's speed relative to the core.  A guide land is a film, not a
+    wall layer of the mixture: an outer-ring-guided cage's outside surface and the outer land over the cage's width
+    (an inner-ring-guided cage's bore and the inner land) are left out of the balance (their loss is the guide land's).
+
     Returns dict: u [m/s], k = u / v (nan if the cage stands still), omega_f = u / r_m, the moments on the mixture
-    (``M_balls``, ``M_inner``, ``M_outer``, ``M_side``, ``M_flow``; they sum to ~0), the ball force on the mixture
-    per ball ``F_ball`` (= - the drag on the ball), C_D, and the powers: ``P_balls`` = Z F_ball v (what the balls'
-    drivers spend), ``P_wake`` = Z F_ball (v - u), ``P_inner`` = M_inner omega_i (the inner ring's surface),
-    ``P_outer`` = -M_outer omega_o, the dissipation in the wall layers ``P_walls``, the outflow's kinetic energy
-    ``P_outflow_ke`` = 1/2 m u^2 and the pick-up dissipation ``P_mixing`` = 1/2 m u^2.
+    (``M_balls``, ``M_inner``, ``M_outer``, ``M_cage``, ``M_side``, ``M_flow``; they sum to ~0), the ball force on
+    the mixture per ball ``F_ball`` (= - the drag on the ball), C_D, and the powers: ``P_balls`` = Z F_ball v (what
+    the balls' drivers spend), ``P_wake`` = Z F_ball (v - u), ``P_inner`` = M_inner omega_i (the inner ring's
+    surface), ``P_outer`` = -M_outer omega_o, ``P_cage`` = M_cage omega_c (the cage's surfaces), the dissipation in
+    the wall layers ``P_walls``, the outflow's kinetic energy ``P_outflow_ke`` = 1/2 m u^2 and the pick-up
+    dissipation ``P_mixing`` = 1/2 m u^2.
     """
     from scipy.optimize import brentq
 
@@ -265,23 +360,55 @@ def mixture_momentum_balance(*, Z: int, D: float, r_m: float, r_i: float, r_o: f
         raise ValueError("mass flow must not be negative")
     if not 0.0 < r_i < r_m < r_o:
         raise ValueError("need 0 < r_i < r_m < r_o")
+    if wall_law not in ("full_gap", "half_gap"):
+        raise ValueError("wall_law must be 'full_gap' or 'half_gap'")
+    if cage is not None:
+        r_cb, r_co, w_cage, guide = cage["r_bore"], cage["r_outside"], cage["width"], cage["guidance"]
+        if not r_i < r_cb < r_m < r_co < r_o or w_cage <= 0.0:
+            raise ValueError("need r_i < cage bore radius < r_m < cage outside radius < r_o and a cage width > 0")
+        if guide not in ("outer_ring", "inner_ring", "ball"):
+            raise ValueError("cage guidance must be outer_ring, inner_ring or ball")
+        w_in = min(w_cage, length)  # over the cage's width
+        L_free = length - w_in  # beside the cage: ring faces ring
+    else:
+        L_free = length
     A = 0.25 * math.pi * D * D
     v = omega_c * r_m
+
+    def wall(d, r_w, r_x, L):  # moment of the wall r_w on the core of the gap r_w .. r_x over the length L
+        if L <= 0.0:
+            return 0.0
+        return taylor_couette_wall_moment(d, r_w, r_x, 0.5 * (r_w + r_x) if not min(r_w, r_x) < r_m < max(r_w, r_x)
+                                          else r_m, L, rho_e, mu_e, turbulent)
 
     def parts(u):
         w_f = u / r_m
         w = v - u
         C = drag_coefficient(abs(w)) if (balls and w != 0.0) else 0.0
         F = 0.5 * C * rho_e * A * w * abs(w) if balls else 0.0  # [2], on the mixture
-        M_in = taylor_couette_gap_moment(omega_i - w_f, r_i, r_m, length, rho_e, mu_e, turbulent)
-        M_out = taylor_couette_gap_moment(w_f - omega_o, r_m, r_o, length, rho_e, mu_e, turbulent)
-        M_side = (-rotating_annulus_windage_moment(w_f, r_i, r_o, rho_e, mu_e)) if side_walls else 0.0
+        if wall_law == "half_gap":
+            M_in = taylor_couette_gap_moment(omega_i - w_f, r_i, r_m, L_free, rho_e, mu_e, turbulent)
+            M_out = taylor_couette_gap_moment(w_f - omega_o, r_m, r_o, L_free, rho_e, mu_e, turbulent)
+        else:  # [7]: M_out is the moment of the core on the outer ring's surface
+            M_in = wall(omega_i - w_f, r_i, r_o, L_free)
+            M_out = -wall(omega_o - w_f, r_o, r_i, L_free)
+        M_cage = 0.0
+        if cage is not None:  # [8]
+            if guide != "inner_ring":  # the inner land and the cage's bore face each other across the mixture
+                M_in += wall(omega_i - w_f, r_i, r_cb, w_in)
+                M_cage += wall(omega_c - w_f, r_cb, r_i, w_in)
+            if guide != "outer_ring":
+                M_out -= wall(omega_o - w_f, r_o, r_co, w_in)
+                M_cage += wall(omega_c - w_f, r_co, r_o, w_in)
+            if L_free > 0.0:  # the side faces inside the control volume
+                M_cage -= rotating_annulus_windage_moment(omega_c - w_f, r_cb, r_co, rho_e, mu_e)
+        M_side = (-stationary_wall_moment(w_f, r_i, r_o, rho_e, mu_e)) if side_walls else 0.0
         M_flow = mass_flow * u * r_m
-        return F, C, M_in, M_out, M_side, M_flow
+        return F, C, M_in, M_out, M_cage, M_side, M_flow
 
     def f(u):
-        F, _, M_in, M_out, M_side, M_flow = parts(u)
-        return Z * F * r_m + M_in - M_out - M_side - M_flow
+        F, _, M_in, M_out, M_cage, M_side, M_flow = parts(u)
+        return Z * F * r_m + M_in - M_out + M_cage - M_side - M_flow
 
     speeds = (0.0, v, omega_i * r_m, omega_o * r_m)
     lo, hi = min(speeds), max(speeds)
@@ -295,12 +422,12 @@ def mixture_momentum_balance(*, Z: int, D: float, r_m: float, r_i: float, r_o: f
             u = hi
         else:
             u = brentq(f, lo, hi, xtol=1e-13 * (hi - lo), rtol=1e-15, maxiter=200)
-    F, C, M_in, M_out, M_side, M_flow = parts(u)
+    F, C, M_in, M_out, M_cage, M_side, M_flow = parts(u)
     w_f = u / r_m
     P_inner, P_outer = M_in * omega_i, -M_out * omega_o
-    P_walls = M_in * (omega_i - w_f) + M_out * (w_f - omega_o) + M_side * w_f
+    P_walls = M_in * (omega_i - w_f) + M_out * (w_f - omega_o) + M_cage * (omega_c - w_f) + M_side * w_f
     return {"u": u, "k": u / v if v != 0.0 else float("nan"), "omega_f": w_f, "v": v, "C_D": C,
-            "F_ball": F, "M_balls": Z * F * r_m, "M_inner": M_in, "M_outer": -M_out, "M_side": -M_side,
-            "M_flow": -M_flow, "P_balls": Z * F * v, "P_wake": Z * F * (v - u), "P_inner": P_inner,
-            "P_outer": P_outer, "P_walls": P_walls, "P_outflow_ke": 0.5 * mass_flow * u * u,
-            "P_mixing": 0.5 * mass_flow * u * u}
+            "F_ball": F, "M_balls": Z * F * r_m, "M_inner": M_in, "M_outer": -M_out, "M_cage": M_cage,
+            "M_side": -M_side, "M_flow": -M_flow, "P_balls": Z * F * v, "P_wake": Z * F * (v - u),
+            "P_inner": P_inner, "P_outer": P_outer, "P_cage": M_cage * omega_c, "P_walls": P_walls,
+            "P_outflow_ke": 0.5 * mass_flow * u * u, "P_mixing": 0.5 * mass_flow * u * u}

@@ -112,7 +112,8 @@ def friction_command(case, args) -> int:
               + ", ".join(f"{x:.3g} ({lo:.3g}..{hi:.3g})" for x, lo, hi in kb)
               + "; churning band [W] (balls + ring surface) "
               + ", ".join(f"{lo:.4g}..{hi:.4g}" for lo, hi in zip(ds.qs_drag_balance_band_low.values,
-                                                                  ds.qs_drag_balance_band_high.values)))
+                                                                  ds.qs_drag_balance_band_high.values))
+              + (f"; {ds.attrs['mixture_balance_cage']}" if ds.attrs.get("mixture_balance_cage") else ""))
     for key, what in (("land", "guide-land film"), ("pocket", "pocket films")):
         Tm = ds[f"{key}_film_temperature"].values
         if np.any(np.isfinite(Tm)):

@@ -315,6 +315,7 @@ def _cavity_losses(case, m, out):
     else:
         out["drag_mixture_share"] = 0.0
     jet = windage = 0.0
+    out["mixture_balance_cage"] = bal["cage_note"] if bal else "no balance (cage at rest or no mixture)"
     if fr.cavity_losses == "on":
         # with the balance the supplied oil's acceleration is inside the drag (its throughflow term): not counted twice
         m_oil = _supplied_oil_mass_flow(lub)
@@ -322,7 +323,9 @@ def _cavity_losses(case, m, out):
             jet = churning.jet_oil_acceleration_power(m_oil, v)[0]
         c = case.cage
         w_c = 2.0 * v / g.dm  # the cage's angular velocity at the quasi-static state
-        if c.bore_diameter and c.outside_diameter and rho_e > 0.0:
+        if balance and b["cage"]:  # the cage's surfaces are terms of the balance: their power is the cage windage
+            windage = b["P_cage"]
+        elif c.bore_diameter and c.outside_diameter and rho_e > 0.0:
             M = churning.rotating_annulus_windage_moment((1.0 - k) * w_c, 0.5 * c.bore_diameter, 0.5 * c.outside_diameter,
                                                          rho_e, mu_e)
             windage = -M * w_c  # the moment resists the cage's motion relative to the mixture; the cage moves at w_c
@@ -357,6 +360,9 @@ def _mixture_balance(case, m, g, v, rho_e, mu_e):
     radii r_m (1 -+ gamma)) over ``bearing.width`` (absent: the ball diameter).  Throughflow: the supplied oil,
     density x ``oil_flow_rate`` (jet or air-oil supply; else none), plus air from 0 (nominal) to the flow the inner
     ring's two side faces pump as free discs (the band's other end, with the side openings as stationary walls).
+    Cage: its bore, outside surface and side faces turning at the cage speed (``cage.bore_diameter``,
+    ``outside_diameter``, ``width``, ``guidance``: the guided surface is a film, not a wall of the mixture); without
+    those keys the cage's surfaces are left out (``cage_note`` says which key is missing; nothing is invented).
     C_D: the drag law's (held subcritical, or the case's ``lubricant``-independent override) at the relative speed;
     the band also takes the sphere's crisis branch.  Returns None when the cage stands still or there is no mixture.
     Returns dict nominal (the balance's dict, = corners[0]), corners (the four balances: side openings off/on with
@@ -376,6 +382,17 @@ def _mixture_balance(case, m, g, v, rho_e, mu_e):
     if not r_i < r_m < r_o:
         r_i, r_o = r_m * (1.0 - gamma), r_m * (1.0 + gamma)
     length = b.width or g.D
+    c = case.cage
+    cage, missing = None, [k for k in ("bore_diameter", "outside_diameter", "width") if not getattr(c, k)]
+    if missing:
+        note = "cage surfaces left out: " + ", ".join(f"cage.{k}" for k in missing) + " not given"
+    elif not r_i < 0.5 * c.bore_diameter < r_m < 0.5 * c.outside_diameter < r_o:
+        note = "cage surfaces left out: the cage does not lie between the ring walls of the balance"
+    else:
+        cage = {"r_bore": 0.5 * c.bore_diameter, "r_outside": 0.5 * c.outside_diameter, "width": c.width,
+                "guidance": c.guidance}
+        faces = {"outer_ring": "bore", "inner_ring": "outside surface", "ball": "bore, outside surface"}[c.guidance]
+        note = f"cage surfaces in the balance: {faces}" + (", side faces" if c.width < length else "")
     m_oil = _supplied_oil_mass_flow(lub)
     m_air = 2.0 * drag_law.AIR_DENSITY * churning.free_disc_pumped_flow(op.inner_speed, r_i,
                                                                         drag_law.AIR_VISCOSITY / drag_law.AIR_DENSITY)
@@ -389,14 +406,15 @@ def _mixture_balance(case, m, g, v, rho_e, mu_e):
             max(rho_e * w * g.D / mu_e, drag_law.RE_FLOOR))
 
     common = dict(Z=g.Z, D=g.D, r_m=r_m, r_i=r_i, r_o=r_o, length=length, omega_i=op.inner_speed,
-                  omega_o=op.outer_speed, omega_c=w_c, rho_e=rho_e, mu_e=mu_e)
+                  omega_o=op.outer_speed, omega_c=w_c, rho_e=rho_e, mu_e=mu_e, cage=cage)
     corners = []
     for side, air in ((False, 0.0), (True, m_air)):
         for cd in (c_sub, c_crisis):
             corners.append(churning.mixture_momentum_balance(drag_coefficient=cd, mass_flow=m_oil + air,
                                                              side_walls=side, **common))
     ks = [c["k"] for c in corners]
-    return {"nominal": corners[0], "corners": corners, "k_low": min(ks), "k_high": max(ks)}
+    return {"nominal": {**corners[0], "cage": cage is not None}, "corners": corners, "k_low": min(ks), "k_high": max(ks),
+            "cage_note": note}
 
 
 def _film_corrections(case, m, out, walls=None):
@@ -781,5 +799,6 @@ def friction_angular_contact(case, speeds, *, thermal: bool = False):
                            note_quasi_static=NOTE_QS, note_skf=NOTE_SKF, cavity_oil_fraction_source=xsrc,
                            contact_temperatures=THERMAL_RULE if thermal else
                            "lubricant.temperature at every contact and film wall (no --thermal)",
-                           warnings=" | ".join(warns) if warns else "none")
+                           warnings=" | ".join(warns) if warns else "none",
+                           mixture_balance_cage=" | ".join(dict.fromkeys(r["mixture_balance_cage"] for r in rows)))
     return make_dataset(data, coords={"speed": w}, attrs=attrs)

@@ -111,13 +111,17 @@ def test_balance_option_assembles_the_balance(default_case, speed):
         Z=b.ball_count, D=b.ball_diameter, r_m=r_m, r_i=0.5 * b.inner_land_diameter, r_o=0.5 * b.outer_land_diameter,
         length=b.width, omega_i=case.operating.inner_speed, omega_o=0.0, omega_c=v / r_m, rho_e=rho, mu_e=mu,
         drag_coefficient=lambda w: ball_drag_coefficient(rho, mu, w, b.ball_diameter)[0],
-        mass_flow=lub.density * lub.oil_flow_rate)
+        mass_flow=lub.density * lub.oil_flow_rate,
+        cage={"r_bore": 0.5 * case.cage.bore_diameter, "r_outside": 0.5 * case.cage.outside_diameter,
+              "width": case.cage.width, "guidance": case.cage.guidance})
     geo = r0["drag"] / (b.ball_count * churning.ball_drag_power(v, 0.0, b.ball_diameter, rho, r0["drag_coefficient"])[1])
     assert abs(geo - 1.0) < 1e-2
     assert rb["mixture_corotation"] == pytest.approx(by_hand["k"], rel=1e-9) and 0.0 < rb["mixture_corotation"] < 1.0
     assert rb["drag"] == pytest.approx(geo * by_hand["P_balls"] + by_hand["P_inner"], rel=1e-9)
     assert rb["drag_ring_share"] == pytest.approx(by_hand["P_inner"], rel=1e-9)
     assert rb["jet_oil_acceleration"] == 0.0 and rb["drag"] < r0["drag"]
+    assert rb["cage_windage"] == pytest.approx(by_hand["P_cage"], rel=1e-9) and by_hand["P_cage"] > 0.0
+    assert rb["mixture_balance_cage"] == "cage surfaces in the balance: bore, side faces"
     assert rb["mixture_corotation_balance_low"] <= rb["mixture_corotation"] <= rb["mixture_corotation_balance_high"]
     assert rb["drag_balance_band_low"] <= rb["drag"] * (1 + 1e-12) <= rb["drag_balance_band_high"] * (1 + 1e-12)
     for s in ("race_traction", "ehl_rolling", "guide_land", "pocket_film"):
@@ -156,3 +160,17 @@ def test_bad_corotation_law_exits_2_naming_file_and_key(tmp_path, capsys):
     with pytest.raises(CaseError) as e:
         load_case(bad)
     assert "bad.toml" in str(e.value) and "friction.mixture_corotation_law" in str(e.value)
+
+
+def test_balance_with_a_cage_outside_its_walls_leaves_the_cage_out(default_case):
+    """A cage whose bore lies below the inner ring's land (the land raised above it): the balance runs without the
+    cage's surfaces (nothing invented), the result says why, and the cage windage is the side-face estimate at (1 - k)
+    of the cage speed, as with a fixed k.  (The angular-contact model requires cage.bore_diameter, outside_diameter
+    and width, so the missing-key branch of the note cannot be reached from a valid case.)"""
+    over = {"friction.mixture_corotation_law": "balance"}
+    full = rating.quasi_static_power_loss(default_case.with_overrides(**over))
+    r = rating.quasi_static_power_loss(default_case.with_overrides(**over, **{"bearing.inner_land_diameter": "45 mm"}))
+    assert r["mixture_balance_cage"] == "cage surfaces left out: the cage does not lie between the ring walls of the balance"
+    assert full["mixture_balance_cage"] == "cage surfaces in the balance: bore, side faces"
+    assert 0.0 < r["mixture_corotation"] < 1.0 and r["cage_windage"] > 0.0
+    assert r["cage_windage"] != full["cage_windage"]
