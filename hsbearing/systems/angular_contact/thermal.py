@@ -518,19 +518,29 @@ def thermal_equilibrium(case, *, progress=None, T_start=None, x0_nodes=None, rac
     # the race inlet offset the losses are evaluated with: from the latest network (the start's nodes if given)
     d_race = race_inlet_offset(T_nodes) if per_race and T_nodes is not None else 0.0
     for it in range(1, th.max_iterations + 1):
-        try:
-            c = case.with_overrides(**{"lubricant.temperature": f"{T_lub} K"})
-        except CaseError as exc:  # the fixed point left the oil's range: no equilibrium at this oil flow
+        races = (T_lub + d_race, T_lub - d_race) if per_race else None
+        checks = [("lubricant temperature", T_lub)]
+        if races is not None and d_race != 0.0:  # each race's inlet must lie in the oil's range too (build_model)
+            checks += [("inner race inlet temperature", races[0]), ("outer race inlet temperature", races[1])]
+        cases_at, bad = [], None
+        for what, T_what in checks:
+            try:
+                cases_at.append(case.with_overrides(**{"lubricant.temperature": f"{T_what} K"}))
+            except CaseError as exc:
+                bad = (what, T_what, exc)
+                break
+        if bad:  # the fixed point left the oil's range: no equilibrium at this oil flow
+            what, T_what, exc = bad
             if not hist_T:  # the start itself is outside the oil's data: bad input
-                raise
+                raise exc
             # a result, not bad input (thermal runaway at this flow): the last network solved is kept, with its status
-            runaway = (f"no thermal equilibrium: at iteration {it} the lubricant temperature reaches {T_lub - 273.15:.1f} degC "
+            runaway = (f"no thermal equilibrium: at iteration {it} the {what} reaches {T_what - 273.15:.1f} degC "
                        f"(power {hist_P[-1]:.4g} W at {hist_T[-1] - 273.15:.1f} degC, oil flow "
                        f"{case.lubricant.oil_flow_rate * 6e4:.4g} L/min), beyond the oil's range ({exc.message}); "
                        "more oil flow (lubricant.oil_flow_rate) or a cooler inlet is needed")
             it -= 1
             break
-        races = (T_lub + d_race, T_lub - d_race) if per_race else None
+        c = cases_at[0]  # the case at T_lub
         src, heat, qs = heat_by_body(c, walls=T_nodes, race_temperatures=races)
         net, info = bearing_network(c, heat, qs, T_in)
         x0 = None if T_nodes is None else [T_nodes[n] for n in NODES]

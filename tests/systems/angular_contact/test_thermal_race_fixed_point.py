@@ -147,3 +147,15 @@ def test_a_non_converging_case_keeps_its_status_and_message():
         _thermal_row(c, c.operating.inner_speed)
     with pytest.raises(ValueError, match="race_rule"):
         thermal_equilibrium(case, race_rule="mean")
+
+
+def test_a_race_inlet_beyond_the_oil_range_is_no_equilibrium(monkeypatch):
+    """A race inlet temperature that leaves the oil's range while the lubricant temperature is still inside it is
+    the same answer as the lubricant leaving it (thermal runaway at this oil flow), not an exception: status
+    no_equilibrium, the last network solved kept, the message names the race inlet and the oil flow."""
+    monkeypatch.setattr(thermal, "race_inlet_offset", lambda T: 300.0)  # an inner inlet 300 K above T_lub
+    ds = thermal_equilibrium(load_case("zhang2016"))
+    assert ds.attrs["status"] == "no_equilibrium" and ds.attrs["converged"] == 0
+    assert "inner race inlet temperature" in ds.attrs["error"] and "lubricant.oil_flow_rate" in ds.attrs["error"]
+    assert int(ds.fixed_point_iterations) == ds.sizes["iteration"] == 1
+    assert abs(float(ds.heat_balance_error)) < 1e-12
