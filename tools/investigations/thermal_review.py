@@ -25,8 +25,8 @@ sys.path.insert(0, "tests/helpers")
 # ----------------------------------------------------------------------------- the cases
 def cases():
     """(label, case) of every case the network is used on (docs/thermal.md, "Review")."""
-    import issue29_speed_exponents as se
     import tp2275_power_loss as tp
+    import tp2275_speed_exponents as se
 
     from hsbearing.case import load_case
 

@@ -3,8 +3,9 @@ temperature, the network's (T_ir + T_or + 2 T_b)/4 (before), against each race a
 (T_or + T_b)/2 outer (after; ``hsbearing friction --thermal``).  docs/power_loss.md, "Each race at its own inlet
 temperature".
 
-One thermal equilibrium per speed, shared by the two rows (the network does not depend on the rule: it is solved
-before the contacts are evaluated).  "before" is ``quasi_static_power_loss`` with both races at the network's
+One thermal equilibrium per speed, shared by the two rows: the network's own fixed point evaluates each race at its
+own inlet temperature (``thermal_equilibrium``'s default; tools/investigations/tp2275_thermal_fixed_point.py compares
+it with the former fixed point), and the two rows evaluate the contacts on that one network.  "before" is ``quasi_static_power_loss`` with both races at the network's
 lubricant temperature, i.e. the kernel with one oil temperature (bit-identical to the single-temperature kernel,
 tests/systems/angular_contact/test_race_temperatures.py).  Two settings: the defaults (inlet heating off) and
 ``friction.inlet_heating = on`` (step 3 of tools/investigations/tp2275_thermal_films.py).  Case and measured heat:

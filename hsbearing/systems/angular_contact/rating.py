@@ -650,8 +650,9 @@ def _thermal_row(case, w):
     film viscosity) at its own inlet temperature, (T_ir + T_b)/2 inner and (T_or + T_b)/2 outer
     (:func:`race_inlet_temperatures`), the quasi-static state, drag, jet and windage at the network's lubricant
     temperature (T_ir + T_or + 2 T_b)/4, and the guide-land and pocket films between their walls'
-    node temperatures (cage / guiding ring; ball / cage).  A CaseError naming lubricant.oil_flow_rate if the network
-    has no steady state at w."""
+    node temperatures (cage / guiding ring; ball / cage).  The network's fixed point evaluated its heat by the same
+    rule (``thermal_equilibrium``, race_rule ``per_race``), so these losses are the heat it balanced, to the fixed
+    point's tolerance.  A CaseError naming lubricant.oil_flow_rate if the network has no steady state at w."""
     from hsbearing.systems.angular_contact.thermal import thermal_equilibrium
 
     cw = case.with_overrides(**{"operating.inner_speed": f"{float(w)} rad/s"})

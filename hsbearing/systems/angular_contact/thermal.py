@@ -219,7 +219,7 @@ POWER_SOURCE_NOTE = {
 }
 
 
-def heat_by_body(case, walls: dict | None = None) -> tuple[dict, dict, object]:
+def heat_by_body(case, walls: dict | None = None, race_temperatures=None) -> tuple[dict, dict, object]:
     """Power loss by source and contact [W] and the heat each node receives [W], from the source that
     ``thermal.power_source`` chooses (docs/power_loss.md, "Quasi-static, dynamic and SKF: what each includes").
 
@@ -231,6 +231,10 @@ def heat_by_body(case, walls: dict | None = None) -> tuple[dict, dict, object]:
     temperatures [K], the previous network solution; None: every wall at ``lubricant.temperature``), as in
     ``hsbearing friction`` (:func:`hsbearing.systems.angular_contact.rating.film_factors`, ``friction.thermal_films``).
 
+    ``race_temperatures`` (T_inner, T_outer) [K]: each race's contacts (traction, EHL rolling, damping) with the oil
+    at that race's inlet temperature (``build_model(race_temperatures=...)``, as ``hsbearing friction --thermal``);
+    None: both at ``lubricant.temperature``.  The quasi-static state and the drag keep ``lubricant.temperature``.
+
     Split (docs/thermal.md): a race contact's traction, EHL rolling and damping losses half to the ring, half
     to the ball; the pocket losses half to the ball, half to the cage; the guide-land loss half to the cage,
     half to the guiding ring; the ball drag to the oil (the churned mixture).
@@ -240,7 +244,7 @@ def heat_by_body(case, walls: dict | None = None) -> tuple[dict, dict, object]:
     from hsbearing.models.ball_bearing.kernel import AUX_INDEX, GAUX_INDEX
     from hsbearing.systems.angular_contact.dynamics import build_model
 
-    m = build_model(case)
+    m = build_model(case, race_temperatures=race_temperatures)
     aux, gaux = m.outputs(m.y0)
     if case.thermal.power_source == "dynamic":
         aux, gaux = _dynamic_outputs(case, m)
@@ -386,9 +390,25 @@ def bearing_network(case, heat: dict, qs, T_in: float | None = None) -> tuple[Ne
 
 
 def contact_temperature(T: dict) -> float:
-    """The lubricant temperature the traction and viscosity use: the mean of the two race contacts' body means,
-    ((T_ir + T_b)/2 + (T_or + T_b)/2)/2."""
+    """The lubricant temperature the quasi-static state, the drag and the viscosity of the oil node use: the mean
+    of the two race contacts' inlet temperatures, ((T_ir + T_b)/2 + (T_or + T_b)/2)/2."""
     return 0.25 * (T["inner_ring"] + T["outer_ring"] + 2.0 * T["balls"])
+
+
+def race_inlet_offset(T: dict) -> float:
+    """Half the difference of the two race contacts' inlet temperatures [K]: the inner inlet (T_ir + T_b)/2 lies
+    this much above :func:`contact_temperature` and the outer inlet (T_or + T_b)/2 as much below it,
+    (T_ir - T_or)/4 (``rating.race_inlet_temperatures``)."""
+    return 0.25 * (T["inner_ring"] - T["outer_ring"])
+
+
+#: ``thermal_equilibrium(race_rule=...)``: how the fixed point evaluates the race contacts' losses
+RACE_RULES = {
+    "per_race": "each race's contacts at its own inlet temperature, inner (T_inner_ring + T_balls)/2, outer "
+                "(T_outer_ring + T_balls)/2 (the fixed point's lubricant temperature plus -/+ (T_inner_ring - "
+                "T_outer_ring)/4 of the latest network)",
+    "lubricant": "both races' contacts at the fixed point's lubricant temperature (the former rule)",
+}
 
 
 _VARS = [
@@ -404,8 +424,12 @@ _VARS = [
     ("oil_inlet_temperature", (), "K", "oil supply temperature"),
     ("oil_outlet_temperature", (), "K", "oil outlet temperature = the well-mixed cavity oil (thermal network)"),
     ("ambient_temperature", (), "K", "air temperature around housing and shaft"),
-    ("lubricant_temperature", (), "K", "temperature the traction law and the viscosity use at equilibrium: mean of "
-     "the race contacts' body temperatures"),
+    ("lubricant_temperature", (), "K", "temperature the quasi-static state, the drag and the oil use at equilibrium: "
+     "mean of the race contacts' inlet temperatures"),
+    ("inner_race_inlet_temperature", (), "K", "temperature the inner race contacts' losses were evaluated at in the last "
+     "fixed-point iteration: (T_inner_ring + T_balls)/2 to the fixed point's tolerance (race_temperature_rule per_race)"),
+    ("outer_race_inlet_temperature", (), "K", "temperature the outer race contacts' losses were evaluated at in the last "
+     "fixed-point iteration: (T_outer_ring + T_balls)/2 to the fixed point's tolerance (race_temperature_rule per_race)"),
     ("heat_generated", (), "W", "power loss at the thermal equilibrium, sum over the sources"),
     ("heat_removed_by_oil", (), "W", "heat carried away by the oil, m c_p (T_out - T_in)"),
     ("heat_removed_by_conduction", (), "W", "heat leaving through the housing and the shaft to the air"),
@@ -413,6 +437,10 @@ _VARS = [
     ("fixed_point_iterations", (), "1", "power <-> temperature iterations to the fixed point"),
     ("iteration_lubricant_temperature", ("iteration",), "K", "lubricant temperature used by each fixed-point iteration"),
     ("iteration_power_loss", ("iteration",), "W", "power loss at each fixed-point iteration"),
+    ("iteration_inner_race_inlet_temperature", ("iteration",), "K", "inner race contacts' inlet temperature used by each "
+     "fixed-point iteration"),
+    ("iteration_outer_race_inlet_temperature", ("iteration",), "K", "outer race contacts' inlet temperature used by each "
+     "fixed-point iteration"),
 ]
 for _n, _d, _u, _l in _VARS:
     register(_n, _d, _u, _l)
@@ -457,48 +485,79 @@ STATUS_NO_EQUILIBRIUM = "no_equilibrium"
 MAX_FIXED_POINT_STEP = 40.0
 
 
-def thermal_equilibrium(case, *, progress=None, T_start=None, x0_nodes=None):
+def thermal_equilibrium(case, *, progress=None, T_start=None, x0_nodes=None, race_rule: str = "per_race"):
     """Fixed point of the power loss and the thermal network; returns the Dataset (docs/thermal.md).
 
     ``T_start`` [K]: the lubricant temperature of the first iteration (default the oil inlet temperature);
     ``x0_nodes`` [K]: the node temperatures the first network solve starts from (default all at the mean of
-    the fixed nodes).  Both only move the starting point (the uniqueness check of docs/thermal.md)."""
+    the fixed nodes).  Both only move the starting point (the uniqueness check of docs/thermal.md).
+
+    ``race_rule`` (:data:`RACE_RULES`): ``per_race`` (default) evaluates each race's contact losses at that race's
+    inlet temperature: the iterate's lubricant temperature T_lub plus (inner) or minus (outer) the offset
+    (T_ir - T_or)/4 of the latest network solved (zero before the first), so that at the fixed point they are
+    (T_ir + T_b)/2 and (T_or + T_b)/2 of the converged network, the temperatures ``hsbearing friction --thermal``
+    evaluates its losses at.  The quasi-static state, the drag and the oil node keep T_lub, the guide-land and
+    pocket films their walls' node temperatures.  Converged when T_lub and both race inlet temperatures move by
+    less than ``thermal.tolerance`` (|dT_lub| + |d offset| < tolerance); with equal ring temperatures (offset 0)
+    this is the former criterion and the iteration is the former one, bit for bit.  ``lubricant``: both races at
+    T_lub (the former rule, kept for comparison)."""
     from hsbearing.case import as_case
     from hsbearing.errors import CaseError
 
     case = as_case(case)
+    if race_rule not in RACE_RULES:
+        raise ValueError(f"race_rule must be one of {', '.join(RACE_RULES)}, got {race_rule!r}")
     th = case.thermal
     T_in = th.oil_inlet_temperature or case.lubricant.temperature
     T_lub = T_in if T_start is None else float(T_start)
-    hist_T, hist_P = [], []
+    hist_T, hist_P, hist_Ti, hist_To = [], [], [], []
     T_nodes, converged, it, runaway = None, False, 0, ""
     if x0_nodes is not None:
         T_nodes = dict(zip(NODES, (float(v) for v in x0_nodes)))
+    per_race = race_rule == "per_race"
+    # the race inlet offset the losses are evaluated with: from the latest network (the start's nodes if given)
+    d_race = race_inlet_offset(T_nodes) if per_race and T_nodes is not None else 0.0
     for it in range(1, th.max_iterations + 1):
-        try:
-            c = case.with_overrides(**{"lubricant.temperature": f"{T_lub} K"})
-        except CaseError as exc:  # the fixed point left the oil's range: no equilibrium at this oil flow
+        races = (T_lub + d_race, T_lub - d_race) if per_race else None
+        checks = [("lubricant temperature", T_lub)]
+        if races is not None and d_race != 0.0:  # each race's inlet must lie in the oil's range too (build_model)
+            checks += [("inner race inlet temperature", races[0]), ("outer race inlet temperature", races[1])]
+        cases_at, bad = [], None
+        for what, T_what in checks:
+            try:
+                cases_at.append(case.with_overrides(**{"lubricant.temperature": f"{T_what} K"}))
+            except CaseError as exc:
+                bad = (what, T_what, exc)
+                break
+        if bad:  # the fixed point left the oil's range: no equilibrium at this oil flow
+            what, T_what, exc = bad
             if not hist_T:  # the start itself is outside the oil's data: bad input
-                raise
+                raise exc
             # a result, not bad input (thermal runaway at this flow): the last network solved is kept, with its status
-            runaway = (f"no thermal equilibrium: at iteration {it} the lubricant temperature reaches {T_lub - 273.15:.1f} degC "
+            runaway = (f"no thermal equilibrium: at iteration {it} the {what} reaches {T_what - 273.15:.1f} degC "
                        f"(power {hist_P[-1]:.4g} W at {hist_T[-1] - 273.15:.1f} degC, oil flow "
                        f"{case.lubricant.oil_flow_rate * 6e4:.4g} L/min), beyond the oil's range ({exc.message}); "
                        "more oil flow (lubricant.oil_flow_rate) or a cooler inlet is needed")
             it -= 1
             break
-        src, heat, qs = heat_by_body(c, walls=T_nodes)
+        c = cases_at[0]  # the case at T_lub
+        src, heat, qs = heat_by_body(c, walls=T_nodes, race_temperatures=races)
         net, info = bearing_network(c, heat, qs, T_in)
         x0 = None if T_nodes is None else [T_nodes[n] for n in NODES]
         T_nodes, R = solve_network(net, x0)
         hist_T.append(T_lub)
         hist_P.append(sum(src.values()))
+        hist_Ti.append(T_lub + d_race)
+        hist_To.append(T_lub - d_race)
         T_new = contact_temperature(T_nodes)
+        d_new = race_inlet_offset(T_nodes) if per_race else 0.0
         if progress:
             progress(it, T_lub, hist_P[-1], T_new)
-        if abs(T_new - T_lub) < th.tolerance:
+        # each race's inlet moved by T_new - T_lub +- (d_new - d_race): both below the tolerance
+        if abs(T_new - T_lub) + abs(d_new - d_race) < th.tolerance:
             converged = True
             break
+        d_race = d_new
         # under-relaxed (the power falls as the oil thins), the step bounded so that a start far from the
         # equilibrium (a cold start at high speed: a large power at a thick oil) cannot leave the oil's range
         T_lub = T_lub + max(-MAX_FIXED_POINT_STEP, min(MAX_FIXED_POINT_STEP, 0.8 * (T_new - T_lub)))
@@ -515,10 +574,13 @@ def thermal_equilibrium(case, *, progress=None, T_start=None, x0_nodes=None):
         "housing_temperature": T_nodes["housing"], "shaft_temperature": T_nodes["shaft"],
         "oil_inlet_temperature": T_nodes["oil_inlet"], "oil_outlet_temperature": T_nodes["oil"],
         "ambient_temperature": T_nodes["ambient"], "lubricant_temperature": hist_T[-1],
+        "inner_race_inlet_temperature": hist_Ti[-1], "outer_race_inlet_temperature": hist_To[-1],
         "heat_generated": P, "heat_removed_by_oil": q_oil, "heat_removed_by_conduction": q_cond,
         "heat_balance_error": (P - q_oil - q_cond) / P if P else 0.0,
         "fixed_point_iterations": float(it),
         "iteration_lubricant_temperature": np.array(hist_T), "iteration_power_loss": np.array(hist_P),
+        "iteration_inner_race_inlet_temperature": np.array(hist_Ti),
+        "iteration_outer_race_inlet_temperature": np.array(hist_To),
     }
     data.update({f"thermal_power_loss_{s}": src[s] for s in _SRC})
     coords = {"node": list(NODES), "link": [f"{a}->{b}" for a, b, *_ in flows], "iteration": np.arange(1, len(hist_T) + 1)}
@@ -529,6 +591,7 @@ def thermal_equilibrium(case, *, progress=None, T_start=None, x0_nodes=None):
         heat_split=("race contact -> 1/2 ring + 1/2 balls; pocket -> 1/2 balls + 1/2 cage; guide land -> 1/2 cage + "
                     "1/2 guiding ring; ball drag -> oil"),
         lubricant_temperature_rule="(T_inner_ring + T_outer_ring + 2 T_balls) / 4",
+        race_temperature_rule=f"{race_rule}: {RACE_RULES[race_rule]}",
         power_source=case.thermal.power_source,
         power_source_note=POWER_SOURCE_NOTE[case.thermal.power_source].format(
             duration=float(case.thermal.dynamic_duration)),
@@ -557,6 +620,9 @@ def thermal_lines(ds) -> list[str]:
     lines.append(f"heat generated {float(ds.heat_generated):.3f} W = removed by the oil {float(ds.heat_removed_by_oil):.3f} W "
                  f"+ by conduction to the air (housing, shaft) {float(ds.heat_removed_by_conduction):.3f} W; "
                  f"balance error {float(ds.heat_balance_error):.2e}")
+    if "inner_race_inlet_temperature" in ds:
+        lines.append(f"race contacts' losses at inlet temperatures inner {C(ds.inner_race_inlet_temperature)}, outer "
+                     f"{C(ds.outer_race_inlet_temperature)} (race_temperature_rule {ds.attrs.get('race_temperature_rule', '')[:9].rstrip(':')})")
     at = "at the last iteration" if ds.attrs.get("status") == STATUS_NO_EQUILIBRIUM else "at equilibrium"
     lines.append(f"power loss by source {at} [W]: " + ", ".join(
         f"{s} {float(ds[f'thermal_power_loss_{s}']):.3g}" for s in _SRC if abs(float(ds[f'thermal_power_loss_{s}'])) > 1e-9))
