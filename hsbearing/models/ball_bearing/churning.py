@@ -185,6 +185,12 @@ def jet_oil_acceleration_power(mass_flow: float, v_out: float, v_in: float = 0.0
     return P, 0.5 * mass_flow * (v_out - v_in) ** 2
 
 
+def _free_disc_turbulent_moment(rho: float, nu: float, w: float, r1: float, r2: float) -> float:
+    """|M| [N m] of the two faces of an annulus r1..r2 turning at |omega| = w in a fluid at rest, von Karman's
+    turbulent 1/7-power law: DISC_TURBULENT_CM / 2 rho nu^1/5 w^9/5 (r2^4.6 - r1^4.6) ([3])."""
+    return 0.5 * DISC_TURBULENT_CM * rho * nu**0.2 * w**1.8 * (r2**4.6 - r1**4.6)
+
+
 def rotating_annulus_windage_moment(omega: float, r1: float, r2: float, rho: float, mu: float) -> float:
     """Moment [N m] resisting a thin annulus r1..r2, both faces wetted, turning at omega in a fluid at rest ([3]).
 
@@ -201,7 +207,7 @@ def rotating_annulus_windage_moment(omega: float, r1: float, r2: float, rho: flo
     nu = mu / rho
     w = abs(omega)
     m_lam = 0.5 * DISC_LAMINAR_CM * rho * math.sqrt(nu) * w**1.5 * (r2**4 - r1**4)
-    m_turb = 0.5 * DISC_TURBULENT_CM * rho * nu**0.2 * w**1.8 * (r2**4.6 - r1**4.6)
+    m_turb = _free_disc_turbulent_moment(rho, nu, w, r1, r2)
     return -math.copysign(max(m_lam, m_turb), omega)
 
 
@@ -303,7 +309,7 @@ def stationary_wall_moment(omega_f: float, r1: float, r2: float, rho: float, mu:
     nu = mu / rho
     w = abs(omega_f)
     m_lam = math.pi * BOEDEWADT_G0 * rho * math.sqrt(nu) * w**1.5 * (r2**4 - r1**4)  # [9]
-    m_turb = 0.5 * DISC_TURBULENT_CM * rho * nu**0.2 * w**1.8 * (r2**4.6 - r1**4.6)  # [3]
+    m_turb = _free_disc_turbulent_moment(rho, nu, w, r1, r2)  # [3]
     return -math.copysign(max(m_lam, m_turb), omega_f)
 
 
