@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import json
 import os
+import signal
 import subprocess
 import sys
 import textwrap
@@ -50,8 +51,11 @@ def _run(body: str, hit: int, out: Path, timeout: float = 60.0) -> dict:
     code = _PRELUDE + textwrap.dedent(body)
     env = dict(os.environ, PYTHONPATH=str(ROOT))
     try:
+        # SIGINT at its default in the child, so that Python installs its KeyboardInterrupt handler: a test run
+        # started in the background by a shell without job control (CI, make under nohup) inherits SIG_IGN
         proc = subprocess.run([sys.executable, "-c", code, str(hit), str(out)], capture_output=True, text=True,
-                              env=env, timeout=timeout)
+                              env=env, timeout=timeout,
+                              preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     except subprocess.TimeoutExpired:
         return {"result": "hung"}
     assert proc.returncode == 0, proc.stderr[-2000:]
