@@ -47,7 +47,7 @@ _PRELUDE = textwrap.dedent("""
 """)
 
 
-def _run(body: str, hit: int, out: Path, timeout: float = 60.0) -> dict:
+def _run(body: str, hit: int, out: Path, timeout: float = 240.0) -> dict:  # generous: a loaded CI machine
     code = _PRELUDE + textwrap.dedent(body)
     env = dict(os.environ, PYTHONPATH=str(ROOT))
     try:
