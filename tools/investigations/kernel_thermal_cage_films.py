@@ -43,6 +43,10 @@ def one(case, factors, duration):
     return s, power, total, wall
 
 
+def fmt(v) -> str:
+    return f"{v:.5g}" if isinstance(v, (float, np.floating)) else str(v)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("cases", nargs="*", default=list(CASES))
@@ -69,7 +73,6 @@ def main():
         print("|---|---|---|")
         for k in keys:
             v0, v1 = rows["isothermal"][0][k], rows["thermal factor"][0][k]
-            fmt = (lambda v: f"{v:.5g}") if isinstance(v, (float, np.floating)) else str
             print(f"| {k} | {fmt(v0)} | {fmt(v1)} |")
         for k in rows["isothermal"][1]:
             print(f"| power_loss_{k} [W] (2nd-half mean) | {rows['isothermal'][1][k]:.4g} | "
