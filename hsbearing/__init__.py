@@ -122,8 +122,10 @@ def simulate(case, duration=None, *, overrides=None, stop=None, section=None, rt
         CVODE tolerances; None = ``[simulation] rtol`` / ``atol``.
     thermal : bool, default False
         Solve the thermal network first (:func:`thermal`) and run at its lubricant temperature, each race's
-        contacts at their own inlet temperature (T_ring + T_ball)/2 (``--thermal``; attrs
-        ``thermal_inner_/outer_contact_inlet_temperature``; angular-contact cases with ``lubricant.oil_flow_rate``).
+        contacts at their own inlet temperature (T_ring + T_ball)/2, the guide-land and pocket films at the thermal
+        factors of ``friction --thermal`` (frozen at the quasi-static state) (``--thermal``; attrs
+        ``thermal_inner_/outer_contact_inlet_temperature``, ``thermal_guide_land_film_factor``,
+        ``thermal_pocket_film_factor``; angular-contact cases with ``lubricant.oil_flow_rate``).
     extend : bool, default False
         While the cage-motion label is undetermined, continue the run in steps up to ``max_duration``
         (``--extend``; angular-contact cases).
