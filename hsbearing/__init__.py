@@ -122,8 +122,10 @@ def simulate(case, duration=None, *, overrides=None, stop=None, section=None, rt
         CVODE tolerances; None = ``[simulation] rtol`` / ``atol``.
     thermal : bool, default False
         Solve the thermal network first (:func:`thermal`) and run at its lubricant temperature, each race's
-        contacts at their own inlet temperature (T_ring + T_ball)/2 (``--thermal``; attrs
-        ``thermal_inner_/outer_contact_inlet_temperature``; angular-contact cases with ``lubricant.oil_flow_rate``).
+        contacts at their own inlet temperature (T_ring + T_ball)/2, the guide-land and pocket films at the thermal
+        factors of ``friction --thermal`` (frozen at the quasi-static state) (``--thermal``; attrs
+        ``thermal_inner_/outer_contact_inlet_temperature``, ``thermal_guide_land_film_factor``,
+        ``thermal_pocket_film_factor``; angular-contact cases with ``lubricant.oil_flow_rate``).
     extend : bool, default False
         While the cage-motion label is undetermined, continue the run in steps up to ``max_duration``
         (``--extend``; angular-contact cases).
@@ -180,7 +182,8 @@ def simulate(case, duration=None, *, overrides=None, stop=None, section=None, rt
                                 source="simulate", key="thermal" if thermal else "extend")
     kw = {} if cvode_settings is None else {"cvode_settings": cvode_settings}
     if thermal:
-        c, kw["race_temperatures"] = _thermal_start(c)
+        c, kw["race_temperatures"], films = _thermal_start(c)
+        kw["cage_film_factors"] = (films["land"]["factor"], films["pocket"]["factor"])
     limit = _quantity(wall_limit, "time", "wall_limit")
     if limit is not None:
         if not limit > 0:
@@ -192,12 +195,16 @@ def simulate(case, duration=None, *, overrides=None, stop=None, section=None, rt
         kw["wall_limit"] = limit
     ds = systems.simulate(c, duration=duration, progress=progress, **kw)
     if thermal:  # which temperatures the race contacts ran at (an extension below keeps them: dynamics.continue_run)
+        from hsbearing.systems.angular_contact.dynamics import thermal_film_attrs
+
         Ti, To = kw["race_temperatures"]
         ds.attrs.update(contact_temperatures=(
             "hsbearing.simulate(thermal=True): inner race contacts at (T_inner_ring + T_balls)/2, outer at "
-            "(T_outer_ring + T_balls)/2 of the thermal network; cage films, drag and the initial state at its lubricant "
-            "temperature (lubricant.temperature of case_toml)"),
-            thermal_inner_contact_inlet_temperature=Ti, thermal_outer_contact_inlet_temperature=To)
+            "(T_outer_ring + T_balls)/2 of the thermal network; drag and the initial state at its lubricant "
+            "temperature (lubricant.temperature of case_toml); the guide-land and pocket films at their thermal "
+            "factors (thermal_cage_film_rule)"),
+            thermal_inner_contact_inlet_temperature=Ti, thermal_outer_contact_inlet_temperature=To,
+            **thermal_film_attrs(films, c))
     if extend:
         from hsbearing.systems.angular_contact.extend import DEFAULT_BUDGET_FACTOR, extend_until_determined
 
@@ -211,8 +218,10 @@ def simulate(case, duration=None, *, overrides=None, stop=None, section=None, rt
 
 
 def _thermal_start(case):
-    """The case at the lubricant temperature of its thermal equilibrium, and the inner and outer race contacts' inlet
-    temperatures (T_ir + T_b)/2, (T_or + T_b)/2 [K] (``hsbearing run --thermal``; rating.race_inlet_temperatures)."""
+    """The case at the lubricant temperature of its thermal equilibrium, the inner and outer race contacts' inlet
+    temperatures (T_ir + T_b)/2, (T_or + T_b)/2 [K] (``hsbearing run --thermal``; rating.race_inlet_temperatures), and
+    the guide-land and pocket films' thermal factors between the network's wall temperatures
+    (dynamics.thermal_cage_film_factors, as ``hsbearing friction --thermal``)."""
     from hsbearing.systems.angular_contact.thermal import check_inputs, thermal_equilibrium
 
     check_inputs(case)
@@ -225,7 +234,12 @@ def _thermal_start(case):
 
     races = race_inlet_temperatures(float(th.inner_ring_temperature), float(th.outer_ring_temperature),
                                     float(th.ball_temperature))
-    return case.with_overrides(**{"lubricant.temperature": f"{float(th.lubricant_temperature)!r} K"}), races
+    from hsbearing.systems.angular_contact.dynamics import thermal_cage_film_factors
+
+    ct = case.with_overrides(**{"lubricant.temperature": f"{float(th.lubricant_temperature)!r} K"})
+    walls = {"inner_ring": float(th.inner_ring_temperature), "outer_ring": float(th.outer_ring_temperature),
+             "balls": float(th.ball_temperature), "cage": float(th.cage_temperature)}
+    return ct, races, thermal_cage_film_factors(ct, walls, races)
 
 
 @_api

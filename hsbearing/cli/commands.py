@@ -141,24 +141,35 @@ def cmd_run(args) -> int:
         print(f"contact inlet temperatures: inner race {race_T[0] - 273.15:.3f} degC, outer race "
               f"{race_T[1] - 273.15:.3f} degC ((T_ring + T_ball)/2 of each race)")
         case = case.with_overrides(**{"lubricant.temperature": f"{T} K"})
-        # which temperatures the run used: each race's contacts at its own inlet temperature; the cage films (the
-        # kernel's one film viscosity), the drag and the initial state at the network's lubricant temperature
+        # the guide-land and pocket films between the network's wall temperatures, as friction --thermal: their
+        # thermal factors eta_eff / eta_film at the quasi-static state, constants of the run
+        from hsbearing.systems.angular_contact.dynamics import thermal_cage_film_factors, thermal_film_attrs
+
+        walls = {"inner_ring": float(th.inner_ring_temperature), "outer_ring": float(th.outer_ring_temperature),
+                 "balls": float(th.ball_temperature), "cage": float(th.cage_temperature)}
+        films = thermal_cage_film_factors(case, walls, race_T)
+        film_f = (films["land"]["factor"], films["pocket"]["factor"])
+        print(f"cage films: guide land x {film_f[0]:.4g}, pocket x {film_f[1]:.4g} of the isothermal viscosity "
+              "(their film temperature at the quasi-static state, friction.thermal_films)")
+        # which temperatures the run used: each race's contacts at its own inlet temperature; the drag and the
+        # initial state at the network's lubricant temperature; the cage films at their thermal factors
         thermal_attrs = {
             "contact_temperatures": ("hsbearing run --thermal, from the thermal network's equilibrium: inner race "
                                      "contacts at thermal_inner_contact_inlet_temperature = "
                                      f"(T_inner_ring + T_balls)/2 = {race_T[0]:.6g} K, outer race contacts at "
                                      f"thermal_outer_contact_inlet_temperature = (T_outer_ring + T_balls)/2 = {race_T[1]:.6g} K "
-                                     "(the inlet oil between the ball and that race's surface); guide-land and pocket "
-                                     "films, drag and the initial state at the network's lubricant temperature "
+                                     "(the inlet oil between the ball and that race's surface); drag and the initial "
+                                     "state at the network's lubricant temperature "
                                      f"(T_inner_ring + T_outer_ring + 2 T_balls)/4 = {T:.6g} K (lubricant.temperature of "
-                                     "case_toml); the kernel's cage films are isothermal at it (their film temperature "
-                                     "is in hsbearing friction only); a --continue or --extend of this archive keeps "
-                                     "the two inlet temperatures (these attrs)"),
+                                     "case_toml), the guide-land and pocket film viscosities times their thermal factors "
+                                     "(thermal_cage_film_rule); a --continue or --extend of this archive keeps "
+                                     "the two inlet temperatures and the two film factors (these attrs)"),
             "thermal_lubricant_temperature": T,
             "thermal_inner_contact_inlet_temperature": race_T[0],
             "thermal_outer_contact_inlet_temperature": race_T[1],
             **{f"thermal_{k}": float(th[k]) for k in ("inner_ring_temperature", "outer_ring_temperature", "ball_temperature",
                                                       "cage_temperature", "oil_outlet_temperature")},
+            **thermal_film_attrs(films, case),
         }
     else:
         thermal_attrs = {}
@@ -173,7 +184,8 @@ def cmd_run(args) -> int:
         if thermal_attrs:  # each race's contacts at its own inlet temperature (dynamics.build_model)
             from hsbearing import systems
 
-            ds = systems.simulate(case, duration=duration, progress=not args.quiet, race_temperatures=race_T)
+            ds = systems.simulate(case, duration=duration, progress=not args.quiet, race_temperatures=race_T,
+                                  cage_film_factors=film_f)
         else:
             ds = simulate(case, duration=duration, progress=not args.quiet)
         ds.attrs.update(thermal_attrs)

@@ -111,7 +111,8 @@ def build_parser() -> argparse.ArgumentParser:
                     help="do not draw the PNG figure (--no-plot is the older spelling)")
     sp.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     sp.add_argument("--thermal", action="store_true", help="solve the thermal network first (hsbearing thermal) and run "
-                    "at its lubricant temperature (traction and viscosity); needs lubricant.oil_flow_rate")
+                    "at its temperatures: each race's contacts at (T_ring + T_ball)/2, the cage films at their film temperature "
+                    "(frozen at the quasi-static state), drag at the lubricant temperature; needs lubricant.oil_flow_rate")
     _add_opt_in_extension_options(sp, "run")
     sp.add_argument("--continue", dest="continue_from", metavar="ARCHIVE.nc",
                     help="extend the run in ARCHIVE.nc from its last state by --duration (default: to the duration "

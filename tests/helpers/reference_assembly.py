@@ -329,7 +329,7 @@ def pocket_contact(prm: Prm, j, ball, cage):
     c = Rp - Rb
     ex, s0, et = loc
     e = math.hypot(ex, et)
-    eta = prm.eta_film * prm.damping
+    eta = prm.eta_film * prm.pocket_film_factor * prm.damping
     F = np.zeros(3)
     M = np.zeros(3)
     Qf = 0.0
@@ -397,10 +397,10 @@ def guide_lands(prm: Prm, bodies: Bodies):
         f = np.zeros(2)
         mx = 0.0
         if prm.damping > 0.0:
-            Fr, Ft = guide_land_forces(eps, ed / cl, cage["phd"] + wl, whirl, prm.eta_film, R, L, cl)
+            Fr, Ft = guide_land_forces(eps, ed / cl, cage["phd"] + wl, whirl, prm.eta_film * prm.land_film_factor, R, L, cl)
             f += Fr * u + Ft * np.array([-u[1], u[0]])
         if prm.friction > 0.0:
-            mx = float(guide_land_torque(eps, cage["phd"] - wl, prm.eta_film, R, L, cl))
+            mx = float(guide_land_torque(eps, cage["phd"] - wl, prm.eta_film * prm.land_film_factor, R, L, cl))
         if e > cl:
             pen = e - cl
             Fe = prm.K_land / nl * pen**1.5

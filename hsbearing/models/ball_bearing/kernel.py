@@ -340,7 +340,7 @@ def ball_loop_cached(y, P, qu, qw, ydot, contrib, aux, want_aux, pmode, pcache, 
     fric = 1.0 if p.switches.friction else 0.0  # multiplies the friction coefficients
     damp = 1.0 if p.switches.damping else 0.0  # multiplies the damping coefficients and film viscosity
     hdm = 0.5 * p.ball.dm
-    pocket_prm = PocketParams(eta=p.lubricant.eta_film * damp, Rb=D2, Rp=D2 + p.pocket.c_p, R_bore=p.pocket.R_bore_c,
+    pocket_prm = PocketParams(eta=p.lubricant.eta_film * p.lubricant.pocket_film_factor * damp, Rb=D2, Rp=D2 + p.pocket.c_p, R_bore=p.pocket.R_bore_c,
                               R_out=p.pocket.R_out_c, hdm=hdm, n_st=p.pocket.n_pocket, h_c=p.pocket.h_min,
                               K=p.pocket.K_c, mu=p.pocket.mu_c * fric, v0=p.pocket.v0_c)
     for j in range(Z):
@@ -571,6 +571,7 @@ def guide_land_loads(y, P, Rc, wcx, wcy, wcz):
         yr, zr, vyr, vzr, wl = 0.0, 0.0, 0.0, 0.0, p.race.omega_o
     cl = p.land.c_land
     R = p.land.R_land
+    eta_land = p.lubricant.eta_film * p.lubricant.land_film_factor  # exactly eta_film at factor 1 (isothermal)
     Kl = p.land.K_land / nl  # the rub stiffness is shared by the lands (unchanged for an untilted cage)
     ex, ey, ez = Rc[0], Rc[3], Rc[6]
     ew = ex * wcx + ey * wcy + ez * wcz  # cage angular velocity along its axis
@@ -587,13 +588,13 @@ def guide_land_loads(y, P, Rc, wcx, wcy, wcz):
         eps = smooth_eccentricity(e / cl, p.land.eps_max)
         fy = fz = mx = 0.0
         if p.switches.damping:
-            Fr, Ft = guide_land_forces(eps, ed / cl, phd + wl, whirl, p.lubricant.eta_film, R, p.land.L_land, cl)
+            Fr, Ft = guide_land_forces(eps, ed / cl, phd + wl, whirl, eta_land, R, p.land.L_land, cl)
             fy = Fr * uy - Ft * uz
             fz = Fr * uz + Ft * uy
         else:
             Fr = Ft = 0.0
         if p.switches.friction:
-            mx = guide_land_torque(eps, phd - wl, p.lubricant.eta_film, R, p.land.L_land, cl)
+            mx = guide_land_torque(eps, phd - wl, eta_land, R, p.land.L_land, cl)
         # film dissipation: the Petroff moment acts along the cage axis e, so its power uses e.omega_c on
         # the cage and e_x omega_land on the land (exact for a tilted cage, as the cage equations use it)
         Pland += guide_land_power(Fr, Ft, e, ed, whirl, 0.0, 0.0, wl) - mx * (ew - wl * ex)

@@ -63,7 +63,9 @@ PARAMETERS = (
     # ---- lubricant
     ("lubricant", "eta_in", _F, "Pa s", "inlet viscosity of the inner race contacts (EHL rolling force, traction; outer: eta_in_o)"),
     ("lubricant", "alpha", _F, "1/Pa", "pressure-viscosity coefficient of the inner race contacts (outer: alpha_o)"),
-    ("lubricant", "eta_film", _F, "Pa s", "viscosity of the pocket and guide-land films"),
+    ("lubricant", "eta_film", _F, "Pa s", "isothermal viscosity of the pocket and guide-land films (at lubricant.temperature)"),
+    ("lubricant", "land_film_factor", _F, "1", "thermal factor eta_eff / eta_film of the guide-land film (1: isothermal; run --thermal)"),
+    ("lubricant", "pocket_film_factor", _F, "1", "thermal factor eta_eff / eta_film of the pocket films (1: isothermal; run --thermal)"),
     ("lubricant", "beta_T", _F, "1/K", "temperature-viscosity coefficient -d ln(eta)/dT at the inner contacts' inlet (inlet shear heating; outer: beta_T_o)"),
     ("lubricant", "K_oil", _F, "W/(m K)", "oil thermal conductivity (inlet shear heating)"),
     # ---- traction law of the race contacts (models.traction)

@@ -35,7 +35,7 @@ from hsbearing.systems.angular_contact.oil_properties import inlet_beta as _inle
 from hsbearing.systems.angular_contact.oil_properties import oil_conductivity as _oil_conductivity
 
 __all__ = ["DynamicModel", "build_model", "simulate", "MODEL_DEFAULTS", "SOLVER_SETTINGS", "LINEAR_SOLVERS",
-           "arrowhead_structure", "mechanical_energy"]
+           "arrowhead_structure", "mechanical_energy", "thermal_cage_film_factors", "thermal_film_attrs"]
 
 from hsbearing.systems.angular_contact.balances import mechanical_energy  # noqa: E402  (defined there; no import circle)
 
@@ -195,6 +195,37 @@ def traction_values(case, alpha) -> dict:
     return dict(tau0=tau0, Lambda=Lam, G=G, c_A=A, c_B=B, c_C=C, c_D=D)
 
 
+def thermal_cage_film_factors(case, walls: dict, race_temperatures=None) -> dict:
+    """Thermal factors eta_eff / eta_film of the guide-land and pocket films for ``run --thermal``: those of
+    ``hsbearing friction --thermal`` for the same case (:func:`hsbearing.systems.angular_contact.cage_films.film_factors`
+    at the quasi-static state of the isothermal model, each film between its walls' node temperatures ``walls``,
+    keys ``inner_ring``, ``outer_ring``, ``balls``, ``cage``; the Couette film law
+    :func:`hsbearing.models.ball_bearing.films.thermal_couette_film`).  1 with ``friction.thermal_films = "off"`` or
+    without the film.  Returns film_factors' dict ({"land": {...}, "pocket": {...}}): the film temperature is frozen
+    at the quasi-static state for the run (docs/power_loss.md, "Thermal cage films")."""
+    from hsbearing.systems.angular_contact.cage_films import film_factors
+
+    m = build_model(case, race_temperatures=race_temperatures)
+    return film_factors(case, m, walls)
+
+
+def thermal_film_attrs(ff: dict, case) -> dict:
+    """Run attrs of the cage films' thermal factors ``ff`` (:func:`thermal_cage_film_factors`): the two factors, the
+    film temperatures and the rule; :func:`continue_run` rebuilds the model with the factors."""
+    on = case.friction.thermal_films == "on"
+    fl, fp = float(ff["land"]["factor"]), float(ff["pocket"]["factor"])
+    rule = ("the kernel's guide-land film viscosity times thermal_guide_land_film_factor, the pocket films' times "
+            "thermal_pocket_film_factor: eta_eff / eta_film of the Couette film between its walls' node temperatures "
+            "(guide land: cage and guiding ring; pocket: balls and cage) at the quasi-static state, as hsbearing "
+            "friction --thermal (models/ball_bearing/films.py thermal_couette_film); the film temperature is frozen at "
+            "that state for the whole run, not updated with the whirling cage's instantaneous sliding"
+            if on else "friction.thermal_films = off: the guide-land and pocket films isothermal (factors 1)")
+    nan = float("nan")
+    return {"thermal_cage_film_rule": rule, "thermal_guide_land_film_factor": fl, "thermal_pocket_film_factor": fp,
+            "thermal_guide_land_film_temperature": float(ff["land"].get("T_mean", nan)),
+            "thermal_pocket_film_temperature": float(ff["pocket"].get("T_mean", nan))}
+
+
 def race_oil_values(case, T=None, suffix: str = "") -> dict:
     """Kernel parameters of one race's contact inlet oil at temperature ``T`` [K] (None: lubricant.temperature):
     eta_in, alpha, beta_T, T_K, tau0, Lambda, G, their names ending in ``suffix`` ("" the inner race's fields,
@@ -210,7 +241,8 @@ def race_oil_values(case, T=None, suffix: str = "") -> dict:
 
 
 def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rolling: bool = True,
-                drag: bool = True, initial: str = "quasistatic", race_temperatures=None, **options) -> DynamicModel:
+                drag: bool = True, initial: str = "quasistatic", race_temperatures=None, cage_film_factors=None,
+                **options) -> DynamicModel:
     """Build the compiled dynamic model of ``case``.
 
     Parameters
@@ -227,7 +259,11 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
         each race's inlet viscosity, its slope beta_T, alpha, the traction law's temperature and the physical model's
         tau0, Lambda, G at its own temperature (:func:`race_oil_values`); None: both at lubricant.temperature
         (``hsbearing friction/run --thermal`` give (T_ir + T_b)/2 and (T_or + T_b)/2).  The quasi-static initial
-        state, the drag and the cage films stay at lubricant.temperature.
+        state and the drag stay at lubricant.temperature.
+    cage_film_factors : (f_land, f_pocket), the thermal factors eta_eff / eta_film multiplying the guide-land and the
+        pocket film viscosity eta_film (constants of the run: the film temperature frozen at the quasi-static state,
+        :func:`thermal_cage_film_factors`; ``hsbearing run --thermal``); None: (1, 1), the isothermal films at
+        lubricant.temperature.
     **options : overrides of :data:`MODEL_DEFAULTS`
     """
     from hsbearing.case import CaseError
@@ -262,6 +298,9 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
     cc = hertz.point_contact(Rb, Rconf, 1.0, mat.ball.elastic_modulus, mat.ball.poisson_ratio,
                              mat.cage.elastic_modulus, mat.cage.poisson_ratio)
     eta, alpha, law = _oil(case)
+    f_land, f_pocket = (1.0, 1.0) if cage_film_factors is None else (float(f) for f in cage_film_factors)
+    if not (math.isfinite(f_land) and f_land > 0 and math.isfinite(f_pocket) and f_pocket > 0):
+        raise ValueError(f"cage_film_factors must be finite and positive, got {cage_film_factors!r}")
     op = case.operating
     zeta = opt["contact_damping_ratio"]
     qu, qw = strip_load_weights(opt["quadrature_points"])
@@ -288,7 +327,7 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
         k_i=float(ci.ellipticity), k_o=float(co.ellipticity), Ep=Ep,
         omega_i=op.inner_speed, omega_o=op.outer_speed,
         # lubricant and traction law
-        eta_in=eta, alpha=alpha, eta_film=eta, beta_T=_inlet_beta(case), K_oil=_oil_conductivity(case),
+        eta_in=eta, alpha=alpha, eta_film=eta, land_film_factor=f_land, pocket_film_factor=f_pocket, beta_T=_inlet_beta(case), K_oil=_oil_conductivity(case),
         law_id=law, T_K=case.lubricant.temperature, U_eps=opt["rolling_eps"], s_eps=opt["slip_eps"],
         **traction_values(case, alpha),
         # pocket
@@ -324,7 +363,8 @@ def build_model(case, *, friction: bool = True, damping: bool = True, ehl_rollin
             raise CaseError(case.source, "cage" if name.endswith("_c") else "bearing",
                             f"cannot derive {name} (give the masses/inertias or the dimensions)")
     hscale = _typical_scales(layout, case)
-    info.update(guide_lands=lands, options=opt, race_temperatures=race_temperatures, friction=friction, damping=damping,
+    info.update(guide_lands=lands, options=opt, race_temperatures=race_temperatures, cage_film_factors=(f_land, f_pocket),
+                friction=friction, damping=damping,
                 ehl_rolling=ehl_rolling, drag=drag,
                 oil_viscosity=eta, cavity_oil_fraction=X, cavity_oil_fraction_source=X_source, drag_density=rho_e,
                 drag_viscosity=mu_e, drag_orbital_speed=v_orbit, drag_reynolds_number=Re_D, drag_coefficient=C_D,
@@ -610,7 +650,11 @@ def continue_run(previous, duration=None, progress: bool = False, *, source: str
     # a run --thermal archive: each race's contacts at the inlet temperatures it ran with (attrs; absent: lubricant.temperature)
     keys = ("thermal_inner_contact_inlet_temperature", "thermal_outer_contact_inlet_temperature")
     races = tuple(float(previous.attrs[k]) for k in keys) if all(k in previous.attrs for k in keys) else None
-    m = build_model(case, initial="nominal", race_temperatures=races)  # the start state comes from the archive
+    # and its guide-land and pocket films at the thermal factors it ran with (attrs; absent: isothermal, 1)
+    fkeys = ("thermal_guide_land_film_factor", "thermal_pocket_film_factor")
+    films = tuple(float(previous.attrs[k]) for k in fkeys) if all(k in previous.attrs for k in fkeys) else None
+    m = build_model(case, initial="nominal", race_temperatures=races,
+                    cage_film_factors=films)  # the start state comes from the archive
     names = list(previous["state"].values) if "state" in previous.coords else None
     if names is not None and [str(n) for n in names] != list(m.state_names):
         raise CaseError(source, "final_state", "the stored state layout differs from this hsbearing's model")

@@ -220,3 +220,25 @@ def test_run_dataset_and_summary_carry_drive_torque_and_power_by_source():
             assert np.allclose(ds[f"power_loss_{s}_per_ball"].sum("ball"), ds[f"power_loss_{s}"], rtol=1e-5)
     text = "\n".join(bl.power_summary_lines(ds))
     assert "drive_torque" in text and all(f"{s}:" in text for s in bl.SOURCES)
+
+
+def test_instantaneous_power_balance_with_thermal_cage_film_factors():
+    """``run --thermal``'s kernel (guide-land and pocket film viscosities times their thermal factors,
+    ``build_model(cage_film_factors=...)``): the instantaneous power and momentum balances close as without,
+    at 12 states (two different factors, so a film read at the other's viscosity would show)."""
+    case = h.load_case("zhang2016", **{"operating.inner_speed": "30000 rpm"})
+    m = dy.build_model(case, cage_film_factors=(0.63, 0.41))
+    for y in _random_states(m, 12, seed=36):
+        b = bl.balance_terms(m, y)
+        scale = max(abs(b["drive_power"]), abs(b["outer_drive_power"]), abs(b["dE_dt"]), b["power_loss"])
+        for s in bl.SOURCES:
+            assert b[f"power_loss_{s}"] >= -1e-9 * scale, (s, b[f"power_loss_{s}"])
+        assert abs(b["power_residual"]) < 1e-7 * scale, (b["power_residual"], scale)
+        yt = y.copy()
+        for k in ("tilt_y_c", "tilt_z_c", "tiltdot_y_c", "tiltdot_z_c"):
+            yt[m.layout.cage(k)] = 0.0
+        for k in ("tilt_y_i", "tilt_z_i", "tiltdot_y_i", "tiltdot_z_i"):
+            yt[m.layout.ring(k)] = 0.0
+        bt = bl.balance_terms(m, yt)
+        tscale = max(abs(v) for v in bt["torques"].values()) + abs(bt["dL_dt"])
+        assert abs(bt["torque_residual"]) < 1e-9 * tscale, (bt["torque_residual"], tscale)
