@@ -222,7 +222,7 @@ def _thermal_start(case):
     temperatures (T_ir + T_b)/2, (T_or + T_b)/2 [K] (``hsbearing run --thermal``; rating.race_inlet_temperatures), and
     the guide-land and pocket films' thermal factors between the network's wall temperatures
     (dynamics.thermal_cage_film_factors, as ``hsbearing friction --thermal``)."""
-    from hsbearing.systems.angular_contact.thermal import check_inputs, thermal_equilibrium
+    from hsbearing.systems.angular_contact.thermal import check_inputs, thermal_equilibrium, wall_temperatures
 
     check_inputs(case)
     th = thermal_equilibrium(case)
@@ -237,9 +237,7 @@ def _thermal_start(case):
     from hsbearing.systems.angular_contact.dynamics import thermal_cage_film_factors
 
     ct = case.with_overrides(**{"lubricant.temperature": f"{float(th.lubricant_temperature)!r} K"})
-    walls = {"inner_ring": float(th.inner_ring_temperature), "outer_ring": float(th.outer_ring_temperature),
-             "balls": float(th.ball_temperature), "cage": float(th.cage_temperature)}
-    return ct, races, thermal_cage_film_factors(ct, walls, races)
+    return ct, races, thermal_cage_film_factors(ct, wall_temperatures(th), races)
 
 
 @_api

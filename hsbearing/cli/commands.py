@@ -144,10 +144,9 @@ def cmd_run(args) -> int:
         # the guide-land and pocket films between the network's wall temperatures, as friction --thermal: their
         # thermal factors eta_eff / eta_film at the quasi-static state, constants of the run
         from hsbearing.systems.angular_contact.dynamics import thermal_cage_film_factors, thermal_film_attrs
+        from hsbearing.systems.angular_contact.thermal import wall_temperatures
 
-        walls = {"inner_ring": float(th.inner_ring_temperature), "outer_ring": float(th.outer_ring_temperature),
-                 "balls": float(th.ball_temperature), "cage": float(th.cage_temperature)}
-        films = thermal_cage_film_factors(case, walls, race_T)
+        films = thermal_cage_film_factors(case, wall_temperatures(th), race_T)
         film_f = (films["land"]["factor"], films["pocket"]["factor"])
         print(f"cage films: guide land x {film_f[0]:.4g}, pocket x {film_f[1]:.4g} of the isothermal viscosity "
               "(their film temperature at the quasi-static state, friction.thermal_films)")

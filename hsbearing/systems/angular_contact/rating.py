@@ -653,7 +653,7 @@ def _thermal_row(case, w):
     node temperatures (cage / guiding ring; ball / cage).  The network's fixed point evaluated its heat by the same
     rule (``thermal_equilibrium``, race_rule ``per_race``), so these losses are the heat it balanced, to the fixed
     point's tolerance.  A CaseError naming lubricant.oil_flow_rate if the network has no steady state at w."""
-    from hsbearing.systems.angular_contact.thermal import thermal_equilibrium
+    from hsbearing.systems.angular_contact.thermal import thermal_equilibrium, wall_temperatures
 
     cw = case.with_overrides(**{"operating.inner_speed": f"{float(w)} rad/s"})
     th = thermal_equilibrium(cw)
@@ -661,8 +661,7 @@ def _thermal_row(case, w):
         raise CaseError(case.source, "lubricant.oil_flow_rate", th.attrs.get("error") or
                         f"the thermal fixed point did not converge at {rpm(w):.6g} r/min in "
                         f"{int(th.fixed_point_iterations)} iterations (thermal.max_iterations, thermal.tolerance)")
-    T = {"inner_ring": float(th.inner_ring_temperature), "outer_ring": float(th.outer_ring_temperature),
-         "balls": float(th.ball_temperature), "cage": float(th.cage_temperature)}
+    T = wall_temperatures(th)
     T_lub = float(th.lubricant_temperature)
     T_i, T_o = race_inlet_temperatures(T["inner_ring"], T["outer_ring"], T["balls"])
     r = quasi_static_power_loss(cw.with_overrides(**{"lubricant.temperature": f"{T_lub} K"}), None, with_state=True,

@@ -395,6 +395,13 @@ def contact_temperature(T: dict) -> float:
     return 0.25 * (T["inner_ring"] + T["outer_ring"] + 2.0 * T["balls"])
 
 
+def wall_temperatures(th) -> dict:
+    """The film walls' node temperatures [K] of a :func:`thermal_equilibrium` Dataset ``th``: ``inner_ring``,
+    ``outer_ring``, ``balls``, ``cage`` (the ``walls`` of ``rating.film_factors`` / ``quasi_static_power_loss``)."""
+    return {"inner_ring": float(th.inner_ring_temperature), "outer_ring": float(th.outer_ring_temperature),
+            "balls": float(th.ball_temperature), "cage": float(th.cage_temperature)}
+
+
 def race_inlet_offset(T: dict) -> float:
     """Half the difference of the two race contacts' inlet temperatures [K]: the inner inlet (T_ir + T_b)/2 lies
     this much above :func:`contact_temperature` and the outer inlet (T_or + T_b)/2 as much below it,
@@ -622,7 +629,7 @@ def thermal_lines(ds) -> list[str]:
                  f"balance error {float(ds.heat_balance_error):.2e}")
     if "inner_race_inlet_temperature" in ds:
         lines.append(f"race contacts' losses at inlet temperatures inner {C(ds.inner_race_inlet_temperature)}, outer "
-                     f"{C(ds.outer_race_inlet_temperature)} (race_temperature_rule {ds.attrs.get('race_temperature_rule', '')[:9].rstrip(':')})")
+                     f"{C(ds.outer_race_inlet_temperature)} (race_temperature_rule {ds.attrs.get('race_temperature_rule', '').split(':')[0]})")
     at = "at the last iteration" if ds.attrs.get("status") == STATUS_NO_EQUILIBRIUM else "at equilibrium"
     lines.append(f"power loss by source {at} [W]: " + ", ".join(
         f"{s} {float(ds[f'thermal_power_loss_{s}']):.3g}" for s in _SRC if abs(float(ds[f'thermal_power_loss_{s}'])) > 1e-9))

@@ -84,6 +84,31 @@ def _random_states(m, n, seed):
     return out
 
 
+def _assert_balances_close(m, y, regime):
+    """The instantaneous power balance and (on the state with the tilts removed) the angular-momentum balance about
+    X at state ``y`` of model ``m`` (module doc)."""
+    b = bl.balance_terms(m, y)
+    # scale: the largest power flowing in the balance (drive, a source, or the energy rate)
+    scale = max(abs(b["drive_power"]), abs(b["outer_drive_power"]), abs(b["dE_dt"]), b["power_loss"])
+    assert b["power_loss"] > 0.0
+    for s in bl.SOURCES:
+        assert b[f"power_loss_{s}"] >= -1e-9 * scale, (s, b[f"power_loss_{s}"])  # each source dissipates
+    assert abs(b["power_residual"]) < 1e-7 * scale, (regime, b["power_residual"], scale)
+    # angular momentum about X: the cage and ring rotations are Euler's small-tilt equations (seed
+    # Eqs. 14-16, 20-21; I_p phi'' = e.M is not M_x once tilted), so the X balance is exact for
+    # untilted cage and ring (measured 1e-14 N m) and holds to second order in the tilts otherwise
+    # (docs/power_loss.md): checked on the same state with the tilts removed
+    yt = y.copy()
+    for k in ("tilt_y_c", "tilt_z_c", "tiltdot_y_c", "tiltdot_z_c"):
+        yt[m.layout.cage(k)] = 0.0
+    for k in ("tilt_y_i", "tilt_z_i", "tiltdot_y_i", "tiltdot_z_i"):
+        yt[m.layout.ring(k)] = 0.0
+    bt = bl.balance_terms(m, yt)
+    tscale = max(abs(v) for v in bt["torques"].values()) + abs(bt["dL_dt"])
+    assert abs(bt["torque_residual"]) < 1e-9 * tscale, (regime, bt["torque_residual"], tscale)
+    assert abs(bt["power_residual"]) < 1e-7 * max(bt["power_loss"], abs(bt["dE_dt"]))
+
+
 REGIMES = {
     "default": {},  # Zhang et al. 2016: 14000 r/min, 1 kN axial, gravity on
     "reversed": {"operating.inner_speed": "-14000 rpm"},  # the other rotation sense
@@ -106,26 +131,7 @@ def test_instantaneous_power_and_momentum_balance(regime):
     case = h.load_case("zhang2016", **REGIMES[regime])
     m = dy.build_model(case)
     for y in _random_states(m, 12, seed=len(regime)):
-        b = bl.balance_terms(m, y)
-        # scale: the largest power flowing in the balance (drive, a source, or the energy rate)
-        scale = max(abs(b["drive_power"]), abs(b["outer_drive_power"]), abs(b["dE_dt"]), b["power_loss"])
-        assert b["power_loss"] > 0.0
-        for s in bl.SOURCES:
-            assert b[f"power_loss_{s}"] >= -1e-9 * scale, (s, b[f"power_loss_{s}"])  # each source dissipates
-        assert abs(b["power_residual"]) < 1e-7 * scale, (regime, b["power_residual"], scale)
-        # angular momentum about X: the cage and ring rotations are Euler's small-tilt equations (seed
-        # Eqs. 14-16, 20-21; I_p phi'' = e.M is not M_x once tilted), so the X balance is exact for
-        # untilted cage and ring (measured 1e-14 N m) and holds to second order in the tilts otherwise
-        # (docs/power_loss.md): checked on the same state with the tilts removed
-        yt = y.copy()
-        for k in ("tilt_y_c", "tilt_z_c", "tiltdot_y_c", "tiltdot_z_c"):
-            yt[m.layout.cage(k)] = 0.0
-        for k in ("tilt_y_i", "tilt_z_i", "tiltdot_y_i", "tiltdot_z_i"):
-            yt[m.layout.ring(k)] = 0.0
-        bt = bl.balance_terms(m, yt)
-        tscale = max(abs(v) for v in bt["torques"].values()) + abs(bt["dL_dt"])
-        assert abs(bt["torque_residual"]) < 1e-9 * tscale, (regime, bt["torque_residual"], tscale)
-        assert abs(bt["power_residual"]) < 1e-7 * max(bt["power_loss"], abs(bt["dE_dt"]))
+        _assert_balances_close(m, y, regime)
 
 
 def _run(m, y0, t, rtol):
@@ -229,16 +235,4 @@ def test_instantaneous_power_balance_with_thermal_cage_film_factors():
     case = h.load_case("zhang2016", **{"operating.inner_speed": "30000 rpm"})
     m = dy.build_model(case, cage_film_factors=(0.63, 0.41))
     for y in _random_states(m, 12, seed=36):
-        b = bl.balance_terms(m, y)
-        scale = max(abs(b["drive_power"]), abs(b["outer_drive_power"]), abs(b["dE_dt"]), b["power_loss"])
-        for s in bl.SOURCES:
-            assert b[f"power_loss_{s}"] >= -1e-9 * scale, (s, b[f"power_loss_{s}"])
-        assert abs(b["power_residual"]) < 1e-7 * scale, (b["power_residual"], scale)
-        yt = y.copy()
-        for k in ("tilt_y_c", "tilt_z_c", "tiltdot_y_c", "tiltdot_z_c"):
-            yt[m.layout.cage(k)] = 0.0
-        for k in ("tilt_y_i", "tilt_z_i", "tiltdot_y_i", "tiltdot_z_i"):
-            yt[m.layout.ring(k)] = 0.0
-        bt = bl.balance_terms(m, yt)
-        tscale = max(abs(v) for v in bt["torques"].values()) + abs(bt["dL_dt"])
-        assert abs(bt["torque_residual"]) < 1e-9 * tscale, (bt["torque_residual"], tscale)
+        _assert_balances_close(m, y, "thermal cage films")

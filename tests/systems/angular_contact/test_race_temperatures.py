@@ -151,7 +151,7 @@ def test_run_thermal_and_its_continuation_run_each_race_at_its_temperature(monke
     assert seen and seen[-1] == pytest.approx(want, rel=1e-12)
 
 
-def test_api_simulate_thermal_hands_both_races_to_the_model(monkeypatch):
+def test_api_simulate_thermal_hands_both_races_and_the_cage_film_factors_to_the_model(monkeypatch):
     import xarray as xr
 
     import hsbearing
@@ -172,3 +172,10 @@ def test_api_simulate_thermal_hands_both_races_to_the_model(monkeypatch):
     assert seen["race_temperatures"] == pytest.approx(want, rel=1e-12)
     assert ds.attrs["thermal_inner_contact_inlet_temperature"] == pytest.approx(want[0], rel=1e-12)
     assert ds.attrs["thermal_outer_contact_inlet_temperature"] == pytest.approx(want[1], rel=1e-12)
+    from hsbearing import _thermal_start
+
+    _, _, films = _thermal_start(load_case("zhang2016"))  # the factors friction --thermal applies (kernel films)
+    factors = (films["land"]["factor"], films["pocket"]["factor"])
+    assert seen["cage_film_factors"] == factors
+    assert (ds.attrs["thermal_guide_land_film_factor"], ds.attrs["thermal_pocket_film_factor"]) == factors
+    assert "frozen at that state" in ds.attrs["thermal_cage_film_rule"]

@@ -111,21 +111,14 @@ def test_bad_factors_are_refused():
             build_model(case, cage_film_factors=bad)
 
 
-def _thermal_inputs(case):
-    """What run --thermal hands the model: the case at the network's lubricant temperature, the two race inlet
-    temperatures and the walls (hsbearing._thermal_start)."""
-    from hsbearing import _thermal_start
-
-    return _thermal_start(case)
-
-
 def test_run_thermal_films_are_friction_thermals_at_the_quasi_static_state():
     """The model of ``run --thermal`` dissipates at its first sample (the quasi-static state) in the land and pocket
     films what ``friction --thermal`` reports for them at that speed (same factors, same walls)."""
+    from hsbearing import _thermal_start  # what run --thermal hands the model: case at T_lub, race inlets, walls
     from hsbearing.systems.angular_contact import rating
 
     case = load_case("zhang2016")
-    ct, races, films = _thermal_inputs(case)
+    ct, races, films = _thermal_start(case)
     f = (films["land"]["factor"], films["pocket"]["factor"])
     assert 0.3 < f[0] < 1.0 and 0.3 < f[1] < 1.0  # the films are hotter than the oil: thinner
     m = build_model(ct, race_temperatures=races, cage_film_factors=f)
@@ -141,27 +134,6 @@ def test_run_thermal_films_are_friction_thermals_at_the_quasi_static_state():
     assert thermal_cage_film_factors(ct, walls, races)["land"]["factor"] == f[0]  # the walls friction --thermal used
     off = thermal_cage_film_factors(ct.with_overrides(**{"friction.thermal_films": "off"}), walls, races)
     assert off["land"]["factor"] == 1.0 and off["pocket"]["factor"] == 1.0
-
-
-def test_api_simulate_thermal_hands_the_film_factors_to_the_model(monkeypatch):
-    import xarray as xr
-
-    import hsbearing
-    from hsbearing import systems
-
-    seen = {}
-
-    def fake(case, **kw):
-        seen.update(kw)
-        return xr.Dataset(attrs={"status": "ok"})
-
-    monkeypatch.setattr(systems, "simulate", fake)
-    ds = hsbearing.simulate("zhang2016", duration="0.1 ms", thermal=True)
-    _, _, films = _thermal_inputs(load_case("zhang2016"))
-    want = (films["land"]["factor"], films["pocket"]["factor"])
-    assert seen["cage_film_factors"] == want
-    assert (ds.attrs["thermal_guide_land_film_factor"], ds.attrs["thermal_pocket_film_factor"]) == want
-    assert "frozen at that state" in ds.attrs["thermal_cage_film_rule"]
 
 
 @pytest.mark.slow
